@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# Prepares a Debian 12 (bookworm) or Ubuntu 24.04 machine for Stellwerk and builds it into build/:
+# installs the packages with apt-get when some are missing, then configures and builds with CMake.
+#
+#   scripts/setup.sh [--werror | --no-werror]
+#
+# --werror (or STELLWERK_WERROR=ON) builds Stellwerk's own code with warnings as errors, as CI does;
+# --no-werror (or STELLWERK_WERROR=OFF) switches that off again. Without either, the choice of the last
+# configure run in build/ is kept, so switching between run-tests.sh and run-app.sh does not rebuild.
+set -euo pipefail
+
+readonly packages=(
+    build-essential cmake pkg-config
+    qt6-base-dev qt6-serialbus-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+    libqt6svg6 qt6-translations-l10n
+    libgl1-mesa-dev zlib1g-dev
+    libgtest-dev libgmock-dev libbenchmark-dev
+    xvfb xauth
+)
+
+say() { printf '==> %s\n' "$*"; }
+fail() {
+    printf 'setup.sh: %s\n' "$*" >&2
+    exit 1
+}
+
+werror="${STELLWERK_WERROR:-}"
+for argument in "$@"; do
+    case "$argument" in
+    --werror) werror=ON ;;
+    --no-werror) werror=OFF ;;
+    -h | --help)
+        sed -n '2,9s/^# \{0,1\}//p' "$0"
+        exit 0
+        ;;
+    *) fail "unknown option '$argument' (try --help)" ;;
+    esac
+done
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+# Runs a command as root: directly when we are root, else through sudo.
+as_root() {
+    if [[ $(id -u) -eq 0 ]]; then
+        "$@"
+    elif command -v sudo >/dev/null; then
+        sudo "$@"
+    else
+        fail "need root rights to install packages, but this is not root and sudo is missing"
+    fi
+}
+
+# Lists the packages that dpkg does not show as fully installed (removed ones keep a status entry too).
+missing_packages() {
+    local package status
+    for package in "${packages[@]}"; do
+        status=$(dpkg -s "$package" 2>/dev/null || true)
+        [[ $status == *"Status: install ok installed"* ]] || printf '%s\n' "$package"
+    done
+}
+
+install_packages() {
+    command -v apt-get >/dev/null || fail "apt-get not found: this script supports Debian and Ubuntu only"
+    local missing
+    mapfile -t missing < <(missing_packages)
+    if [[ ${#missing[@]} -eq 0 ]]; then
+        say "All ${#packages[@]} packages are installed already"
+        return
+    fi
+    say "Installing ${#missing[@]} missing packages: ${missing[*]}"
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get update -q
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+configure() {
+    local options=(-S . -B build)
+    if [[ -n "$werror" ]]; then
+        options+=("-DSTELLWERK_WERROR=$werror")
+    fi
+    say "Configuring with CMake into build/${werror:+ (warnings as errors: $werror)}"
+    cmake "${options[@]}"
+}
+
+build() {
+    say "Building with $(nproc) parallel jobs"
+    cmake --build build -j"$(nproc)"
+}
+
+install_packages
+configure
+build
+say "Build finished: build/app/gui/stellwerk"
