@@ -1,0 +1,90 @@
+#include "DecodeCommand.h"
+
+#include "cs2/FrameReport.h"
+#include "cs2/FrameText.h"
+
+#include <istream>
+#include <ostream>
+
+namespace stellwerk::cli {
+namespace {
+
+std::string jsonEscape(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '"' || c == '\\')
+            out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20)
+            continue;
+        out += c;
+    }
+    return out;
+}
+
+// Decodes and prints one input line; returns false when the frame was unreadable or invalid.
+class FramePrinter {
+public:
+    FramePrinter(bool json, std::ostream& out, std::ostream& err) : json_(json), out_(out), err_(err) {}
+
+    bool print(const std::string& input, std::size_t lineNumber) {
+        const auto parsed = cs2::parseFrame(input);
+        if (!parsed) {
+            reportUnreadable(input, lineNumber, parsed.error());
+            return false;
+        }
+        const cs2::FrameReport report(parsed->frame);
+        out_ << (json_ ? report.json() : report.text()) << '\n';
+        return report.ok();
+    }
+
+private:
+    void reportUnreadable(const std::string& input, std::size_t lineNumber, const std::string& error) {
+        if (json_)
+            out_ << "{\"input\":\"" << jsonEscape(input) << "\",\"error\":\"" << jsonEscape(error) << "\"}\n";
+        else
+            err_ << "stellwerk-cli decode: line " << lineNumber << ": " << error << ": " << input << '\n';
+    }
+
+    bool json_;
+    std::ostream& out_;
+    std::ostream& err_;
+};
+
+bool isSkippable(const std::string& line) {
+    const auto first = line.find_first_not_of(" \t\r");
+    return first == std::string::npos || line[first] == '#';
+}
+
+} // namespace
+
+int runDecode(const std::vector<std::string>& arguments, std::istream& in, std::ostream& out,
+              std::ostream& err) {
+    bool json = false;
+    std::vector<std::string> frames;
+    for (const auto& argument : arguments) {
+        if (argument == "--json") {
+            json = true;
+        } else if (argument.size() > 2 && argument.rfind("--", 0) == 0) {
+            err << "stellwerk-cli decode: unknown option " << argument << '\n';
+            return 2;
+        } else {
+            frames.push_back(argument);
+        }
+    }
+
+    FramePrinter printer(json, out, err);
+    bool allGood = true;
+    if (!frames.empty()) {
+        for (std::size_t i = 0; i < frames.size(); ++i)
+            allGood = printer.print(frames[i], i + 1) && allGood;
+    } else {
+        std::string line;
+        for (std::size_t number = 1; std::getline(in, line); ++number)
+            if (!isSkippable(line))
+                allGood = printer.print(line, number) && allGood;
+    }
+    out.flush();
+    return allGood ? 0 : 1;
+}
+
+} // namespace stellwerk::cli

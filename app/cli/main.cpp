@@ -1,0 +1,50 @@
+// stellwerk-cli: the protocol tools of Stellwerk for scripts and for debugging a bus.
+
+#include "DecodeCommand.h"
+#include "EncodeCommand.h"
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+void printUsage(std::ostream& out) {
+    out << "stellwerk-cli " STELLWERK_VERSION " - Märklin CS2 protocol tools\n"
+           "\n"
+           "usage:\n"
+           "  stellwerk-cli decode [--json] [FRAME ...]   decode frames (arguments, or one per line on "
+           "stdin)\n"
+           "  stellwerk-cli encode <name> key=value ...   build a frame and print it in all notations\n"
+           "  stellwerk-cli encode --list                 list the message names\n"
+           "\n"
+           "FRAME notations:\n"
+           "  document   00004711 5 00 00 00 00 00\n"
+           "  candump    00004711#0000000000   or   (1700000000.000000) can0 00004711#0000000000\n"
+           "  bracketed  can0  00004711   [5]  00 00 00 00 00\n"
+           "  network    00004711050000000000000000   (13 bytes of the UDP/TCP gateway, 26 hex digits)\n"
+           "\n"
+           "Exit status: 0 all frames fine, 1 a frame was invalid, 2 usage error.\n";
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const std::vector<std::string> arguments(argv + 1, argv + argc);
+    if (arguments.empty() || arguments[0] == "--help" || arguments[0] == "-h" || arguments[0] == "help") {
+        printUsage(arguments.empty() ? std::cerr : std::cout);
+        return arguments.empty() ? 2 : 0;
+    }
+    if (arguments[0] == "--version") {
+        std::cout << "stellwerk-cli " STELLWERK_VERSION "\n";
+        return 0;
+    }
+    const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
+    if (arguments[0] == "decode")
+        return stellwerk::cli::runDecode(rest, std::cin, std::cout, std::cerr);
+    if (arguments[0] == "encode")
+        return stellwerk::cli::runEncode(rest, std::cout, std::cerr);
+    std::cerr << "stellwerk-cli: unknown command '" << arguments[0] << "'\n\n";
+    printUsage(std::cerr);
+    return 2;
+}

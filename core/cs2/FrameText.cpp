@@ -1,0 +1,220 @@
+#include "cs2/FrameText.h"
+
+#include <charconv>
+#include <cstdio>
+#include <optional>
+#include <vector>
+
+namespace stellwerk::cs2 {
+namespace {
+
+using Tokens = std::vector<std::string_view>;
+using Result = Expected<ParsedFrame, std::string>;
+
+Tokens split(std::string_view line) {
+    Tokens tokens;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r' || line[i] == '\n'))
+            ++i;
+        const std::size_t start = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r' && line[i] != '\n')
+            ++i;
+        if (i > start)
+            tokens.push_back(line.substr(start, i - start));
+    }
+    return tokens;
+}
+
+bool isHex(std::string_view text) {
+    if (text.empty())
+        return false;
+    for (char c : text)
+        if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F')))
+            return false;
+    return true;
+}
+
+std::optional<std::uint64_t> hexValue(std::string_view text) {
+    if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X'))
+        text.remove_prefix(2);
+    if (!isHex(text) || text.size() > 16)
+        return std::nullopt;
+    std::uint64_t value = 0;
+    std::from_chars(text.data(), text.data() + text.size(), value, 16);
+    return value;
+}
+
+std::optional<std::uint8_t> byteValue(std::string_view text) {
+    if (text.size() != 2 || !isHex(text))
+        return std::nullopt;
+    return std::uint8_t(*hexValue(text));
+}
+
+Expected<std::uint32_t, std::string> parseId(std::string_view text) {
+    const auto value = hexValue(text);
+    if (!value)
+        return "'" + std::string(text) + "' is not a hexadecimal CAN identifier";
+    if (*value > CanFrame::IdMask)
+        return "identifier " + std::string(text) + " does not fit in 29 bits";
+    return std::uint32_t(*value);
+}
+
+// Fills frame.data from byte tokens, checking them against the DLC.
+std::optional<std::string> fillData(CanFrame& frame, const Tokens& tokens, std::size_t first) {
+    const std::size_t count = frame.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        if (first + i >= tokens.size())
+            return "DLC " + std::to_string(frame.dlc) + " announces " + std::to_string(count) +
+                   " data bytes, only " + std::to_string(i) + " given";
+        auto token = tokens[first + i];
+        if (const auto paren = token.find('('); paren != std::string_view::npos && paren > 0)
+            token = token.substr(0, paren); // can-monitor shows padding as "7b(00)"
+        const auto byte = byteValue(token);
+        if (!byte && token.size() == 2)
+            return "data byte '" + std::string(tokens[first + i]) + "' is not two hex digits";
+        if (!byte)
+            return "DLC " + std::to_string(frame.dlc) + " announces " + std::to_string(count) +
+                   " data bytes, only " + std::to_string(i) + " given before '" +
+                   std::string(tokens[first + i]) + "'";
+        frame.data[i] = *byte;
+    }
+    if (first + count < tokens.size() && byteValue(tokens[first + count]))
+        return "more data bytes than DLC " + std::to_string(frame.dlc) + " announces";
+    return std::nullopt;
+}
+
+Result parseCandump(const Tokens& tokens, std::size_t at) {
+    const auto token = tokens[at];
+    const auto hash = token.find('#');
+    const auto idText = token.substr(0, hash);
+    auto dataText = token.substr(hash + 1);
+    if (!dataText.empty() && dataText[0] == '#')
+        return std::string("CAN FD frames (##) do not occur on a CS2 bus");
+    if (!dataText.empty() && (dataText[0] == 'R' || dataText[0] == 'r'))
+        return std::string("remote frames (#R) are not used by the CS2 protocol");
+    const auto id = parseId(idText);
+    if (!id)
+        return id.error();
+    std::string digits;
+    for (char c : dataText)
+        if (c != '.')
+            digits.push_back(c);
+    if (digits.size() % 2 != 0 || (!digits.empty() && !isHex(digits)))
+        return "candump data '" + std::string(dataText) + "' is not a sequence of hex bytes";
+    if (digits.size() > 16)
+        return "candump data has " + std::to_string(digits.size() / 2) + " bytes; a CAN frame has at most 8";
+    CanFrame frame{*id, std::uint8_t(digits.size() / 2), {}};
+    for (std::size_t i = 0; i < frame.dlc; ++i)
+        frame.data[i] = *byteValue(std::string_view(digits).substr(2 * i, 2));
+    return ParsedFrame{frame, FrameNotation::Candump};
+}
+
+Result parseBracketed(const Tokens& tokens, std::size_t dlcAt) {
+    if (dlcAt == 0)
+        return std::string("a [DLC] needs the identifier before it");
+    const auto dlcText = tokens[dlcAt].substr(1, tokens[dlcAt].size() - 2);
+    unsigned dlc = 0;
+    const auto [end, ec] = std::from_chars(dlcText.data(), dlcText.data() + dlcText.size(), dlc);
+    if (ec != std::errc() || end != dlcText.data() + dlcText.size() || dlc > 15)
+        return "'" + std::string(tokens[dlcAt]) + "' is not a DLC of 0..15";
+    const auto id = parseId(tokens[dlcAt - 1]);
+    if (!id)
+        return id.error();
+    CanFrame frame{*id, std::uint8_t(dlc), {}};
+    if (const auto error = fillData(frame, tokens, dlcAt + 1))
+        return *error;
+    return ParsedFrame{frame, FrameNotation::Bracketed};
+}
+
+Result parseNetwork(std::string_view hex) {
+    std::array<std::uint8_t, CanFrame::NetworkSize> bytes{};
+    for (std::size_t i = 0; i < bytes.size(); ++i)
+        bytes[i] = *byteValue(hex.substr(2 * i, 2));
+    return ParsedFrame{CanFrame::fromNetwork(bytes), FrameNotation::Network};
+}
+
+Result parseDocument(const Tokens& tokens) {
+    const auto id = parseId(tokens[0]);
+    if (!id)
+        return id.error();
+    if (tokens.size() < 2)
+        return "'" + std::string(tokens[0]) + "' needs a DLC after it (document notation: ID DLC BYTES...)";
+    unsigned dlc = 0;
+    const auto [end, ec] = std::from_chars(tokens[1].data(), tokens[1].data() + tokens[1].size(), dlc);
+    if (ec != std::errc() || end != tokens[1].data() + tokens[1].size() || dlc > 15)
+        return "'" + std::string(tokens[1]) + "' is not a DLC of 0..15";
+    CanFrame frame{*id, std::uint8_t(dlc), {}};
+    if (const auto error = fillData(frame, tokens, 2))
+        return *error;
+    return ParsedFrame{frame, FrameNotation::Document};
+}
+
+bool isBracketedDlc(std::string_view token) {
+    return token.size() >= 3 && token.front() == '[' && token.back() == ']';
+}
+
+std::string hexBytes(const CanFrame& frame, const char* separator) {
+    std::string out;
+    char buffer[4];
+    for (std::size_t i = 0; i < frame.size(); ++i) {
+        std::snprintf(buffer, sizeof buffer, "%02X", frame.data[i]);
+        if (i > 0)
+            out += separator;
+        out += buffer;
+    }
+    return out;
+}
+
+std::string hexId(const CanFrame& frame) {
+    char buffer[12];
+    std::snprintf(buffer, sizeof buffer, "%08X", frame.id);
+    return buffer;
+}
+
+} // namespace
+
+Expected<ParsedFrame, std::string> parseFrame(std::string_view line) {
+    const Tokens tokens = split(line);
+    if (tokens.empty())
+        return std::string("empty line");
+    for (std::size_t i = 0; i < tokens.size() && i < 3; ++i)
+        if (tokens[i].find('#') != std::string_view::npos)
+            return parseCandump(tokens, i);
+    for (std::size_t i = 0; i < tokens.size(); ++i)
+        if (isBracketedDlc(tokens[i]))
+            return parseBracketed(tokens, i);
+    if (tokens[0].size() == 2 * CanFrame::NetworkSize && isHex(tokens[0]))
+        return parseNetwork(tokens[0]);
+    if (tokens.size() >= CanFrame::NetworkSize && tokens[0].size() == 2) {
+        std::string joined;
+        for (std::size_t i = 0; i < CanFrame::NetworkSize; ++i)
+            joined += tokens[i];
+        if (isHex(joined) && joined.size() == 2 * CanFrame::NetworkSize)
+            return parseNetwork(joined);
+    }
+    return parseDocument(tokens);
+}
+
+std::string formatDocument(const CanFrame& frame) {
+    std::string out = hexId(frame) + " " + std::to_string(frame.dlc);
+    if (frame.size() > 0)
+        out += " " + hexBytes(frame, " ");
+    return out;
+}
+
+std::string formatCandump(const CanFrame& frame) {
+    return hexId(frame) + "#" + hexBytes(frame, "");
+}
+
+std::string formatNetwork(const CanFrame& frame) {
+    std::string out;
+    char buffer[4];
+    for (auto byte : frame.toNetwork()) {
+        std::snprintf(buffer, sizeof buffer, "%02X", byte);
+        out += buffer;
+    }
+    return out;
+}
+
+} // namespace stellwerk::cs2

@@ -1,0 +1,32 @@
+#pragma once
+
+#include "cs2/CanFrame.h"
+#include "cs2/Expected.h"
+
+#include <string>
+#include <string_view>
+
+namespace stellwerk::cs2 {
+
+// The ways people write a frame down.
+enum class FrameNotation {
+    Document,  // "00004711 5 00 00 00 00 00" as in Märklin's protocol document
+    Candump,   // "00004711#0000000000", optionally "(1700000000.000000) can0 " before it
+    Bracketed, // "can0  00004711   [5]  00 00 00 00 00" (candump screen, can2udp/can-monitor logs)
+    Network,   // the 13-byte UDP/TCP form as 26 hex digits
+};
+
+struct ParsedFrame {
+    CanFrame frame;
+    FrameNotation notation;
+};
+
+// Reads one frame from a line in any of the notations. Text after the data bytes is taken as a
+// comment (the document's examples carry one). The error says what is wrong with the line.
+Expected<ParsedFrame, std::string> parseFrame(std::string_view line);
+
+std::string formatDocument(const CanFrame& frame); // "00004711 5 00 00 00 00 00"
+std::string formatCandump(const CanFrame& frame);  // "00004711#0000000000"
+std::string formatNetwork(const CanFrame& frame);  // "00004711050000000000000000"
+
+} // namespace stellwerk::cs2

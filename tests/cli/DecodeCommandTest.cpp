@@ -1,0 +1,82 @@
+#include "DecodeCommand.h"
+
+#include <gtest/gtest.h>
+#include <sstream>
+
+using stellwerk::cli::runDecode;
+
+namespace {
+
+struct Run {
+    int status;
+    std::string out;
+    std::string err;
+};
+
+Run decode(std::vector<std::string> arguments, const std::string& input = {}) {
+    std::istringstream in(input);
+    std::ostringstream out, err;
+    const int status = runDecode(arguments, in, out, err);
+    return {status, out.str(), err.str()};
+}
+
+} // namespace
+
+TEST(CliDecode, ArgumentsInEveryNotationGiveOneLineEach) {
+    const auto run = decode({"00004711 5 00 00 00 00 00", "00004711#0000000000", "00004711050000000000000000",
+                             "(1.0) can0 00004711#0000000000"});
+    EXPECT_EQ(run.status, 0);
+    const std::string line = "00004711 5 00 00 00 00 00  system.stop uid=0x00000000 subcommand=0x00\n";
+    EXPECT_EQ(run.out, line + line + line + line);
+    EXPECT_EQ(run.err, "");
+}
+
+TEST(CliDecode, ReadsStdinSkippingBlankAndCommentLines) {
+    const auto run = decode({}, "# a captured session\n\n00084711 6 00 00 C0 03 01 20\n   \n00304711#\n");
+    EXPECT_EQ(run.status, 0);
+    EXPECT_EQ(run.out,
+              "00084711 6 00 00 C0 03 01 20  loco.speed locId=0xC003 protocol=dcc address=3 speed=288\n"
+              "00304711 0  ping\n");
+}
+
+TEST(CliDecode, JsonLinesCarryTheAgreedKeys) {
+    const auto run = decode({"--json", "00084711 6 00 00 C0 03 01 20"});
+    EXPECT_EQ(run.status, 0);
+    EXPECT_EQ(run.out,
+              "{\"id\":\"00084711\",\"prio\":0,\"command\":4,\"response\":false,\"hash\":\"4711\",\"dlc\":6,"
+              "\"data\":\"0000C0030120\",\"name\":\"loco.speed\",\"fields\":{\"locId\":\"0xC003\","
+              "\"protocol\":\"dcc\",\"address\":3,\"speed\":288}}\n");
+}
+
+TEST(CliDecode, BadFramesAreReportedAndTheRestStillDecode) {
+    const auto run = decode(
+        {}, "00004711 5 00 00 00 00 00\nnot a frame\n00084711 5 00 00 C0 03 01\n00004711 5 00 00 00 00 01\n");
+    EXPECT_EQ(run.status, 1);
+    EXPECT_EQ(run.out,
+              "00004711 5 00 00 00 00 00  system.stop uid=0x00000000 subcommand=0x00\n"
+              "00084711 5 00 00 C0 03 01  loco.speed  ERROR unexpected length 5: loco.speed has 4 (query) "
+              "or 6 data bytes\n"
+              "00004711 5 00 00 00 00 01  system.go uid=0x00000000 subcommand=0x01\n");
+    EXPECT_EQ(run.err,
+              "stellwerk-cli decode: line 2: 'not' is not a hexadecimal CAN identifier: not a frame\n");
+}
+
+TEST(CliDecode, JsonModeReportsUnreadableLinesAsJson) {
+    const auto run = decode({"--json", "00004711 7 00 00 00 00 06 0A"});
+    EXPECT_EQ(run.status, 1);
+    EXPECT_EQ(run.out,
+              "{\"input\":\"00004711 7 00 00 00 00 06 0A\",\"error\":\"DLC 7 announces 7 data bytes, only 6 "
+              "given\"}\n");
+}
+
+TEST(CliDecode, DlcAboveEightIsAnErrorLine) {
+    const auto run = decode({"00004711 9 00 00 00 00 00 00 00 00"});
+    EXPECT_EQ(run.status, 1);
+    EXPECT_NE(run.out.find("ERROR DLC 9 is above 8"), std::string::npos) << run.out;
+}
+
+TEST(CliDecode, UnknownOptionIsAUsageError) {
+    const auto run = decode({"--yaml"});
+    EXPECT_EQ(run.status, 2);
+    EXPECT_EQ(run.err, "stellwerk-cli decode: unknown option --yaml\n");
+}
