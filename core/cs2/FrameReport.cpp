@@ -61,35 +61,35 @@ std::string jsonValue(const Field& field) {
 std::string_view systemName(std::uint8_t sub) {
     switch (sub) {
     case 0x00:
-        return "system.stop";
+        return SystemStop::name;
     case 0x01:
-        return "system.go";
+        return SystemGo::name;
     case 0x02:
-        return "system.halt";
+        return SystemHalt::name;
     case 0x03:
-        return "system.loco-emergency-stop";
+        return LocoEmergencyStop::name;
     case 0x04:
-        return "system.loco-cycle-end";
+        return LocoCycleEnd::name;
     case 0x05:
-        return "system.loco-protocol";
+        return LocoProtocol::name;
     case 0x06:
-        return "system.accessory-switch-time";
+        return AccessorySwitchTime::name;
     case 0x07:
-        return "system.mfx-fast-read";
+        return MfxFastRead::name;
     case 0x08:
-        return "system.track-protocols";
+        return TrackProtocols::name;
     case 0x09:
-        return "system.mfx-registration-counter";
+        return MfxRegistrationCounter::name;
     case 0x0A:
-        return "system.overload";
+        return Overload::name;
     case 0x0B:
-        return "system.status";
+        return SystemStatus::name;
     case 0x0C:
-        return "system.device-id";
+        return DeviceId::name;
     case 0x30:
-        return "system.mfx-seek";
+        return MfxSeek::name;
     case 0x80:
-        return "system.reset";
+        return SystemReset::name;
     default:
         return "unknown";
     }

@@ -120,7 +120,7 @@ BodyResult decodeSeek(const Reader& r) {
     return MessageBody(m);
 }
 
-template <class T, std::size_t Size, class Fill>
+template <std::size_t Size, class Fill>
 BodyResult exact(const Reader& r, std::string_view lengthError, Fill fill) {
     if (r.size() < Size)
         return r.tooShort(lengthError);
@@ -152,19 +152,17 @@ BodyResult decodeSystem(const Reader& r) {
     case SwitchTime:
         return decodeSwitchTime(r);
     case FastRead:
-        return exact<MfxFastRead, 7>(r, "system.mfx-fast-read has 7 data bytes", [&] {
+        return exact<7>(r, "system.mfx-fast-read has 7 data bytes", [&] {
             return MfxFastRead{r.u32(0), r.u16(5)};
         });
     case TrackProtocol:
         return decodeTrackProtocols(r);
     case RegistrationCounter:
-        return exact<MfxRegistrationCounter, 7>(r, "system.mfx-registration-counter has 7 data bytes", [&] {
+        return exact<7>(r, "system.mfx-registration-counter has 7 data bytes", [&] {
             return MfxRegistrationCounter{r.u32(0), r.u16(5)};
         });
     case OverloadSub:
-        return exact<Overload, 6>(r, "system.overload has 6 data bytes", [&] {
-            return Overload{r.u32(0), r.u8(5)};
-        });
+        return exact<6>(r, "system.overload has 6 data bytes", [&] { return Overload{r.u32(0), r.u8(5)}; });
     case Status:
         return decodeStatus(r);
     case DeviceIdSub:
@@ -176,9 +174,7 @@ BodyResult decodeSystem(const Reader& r) {
     case Seek:
         return decodeSeek(r);
     case Reset:
-        return exact<SystemReset, 6>(r, "system.reset has 6 data bytes", [&] {
-            return SystemReset{r.u32(0), r.u8(5)};
-        });
+        return exact<6>(r, "system.reset has 6 data bytes", [&] { return SystemReset{r.u32(0), r.u8(5)}; });
     default:
         return MessageBody(Unknown{0x00, r.raw()});
     }
