@@ -1,0 +1,47 @@
+#include "cs2config/Diagnostics.h"
+
+namespace stellwerk::cs2config {
+
+Diagnostics::Diagnostics(std::string fileName, std::size_t limit)
+    : fileName_(std::move(fileName)), limit_(limit) {}
+
+void Diagnostics::warning(int line, std::string message, std::string action) {
+    add({Diagnostic::Severity::Warning, line, std::move(message), std::move(action)});
+}
+
+void Diagnostics::error(int line, std::string message, std::string action) {
+    add({Diagnostic::Severity::Error, line, std::move(message), std::move(action)});
+}
+
+void Diagnostics::add(Diagnostic diagnostic) {
+    if (diagnostic.severity == Diagnostic::Severity::Error)
+        ++errors_;
+    if (items_.size() >= limit_) {
+        ++suppressed_;
+        return;
+    }
+    items_.push_back(std::move(diagnostic));
+}
+
+std::string Diagnostics::format(const Diagnostic& diagnostic) const {
+    std::string text = fileName_.empty() ? std::string("<input>") : fileName_;
+    if (diagnostic.line > 0)
+        text += ':' + std::to_string(diagnostic.line);
+    text += diagnostic.severity == Diagnostic::Severity::Error ? ": error: " : ": warning: ";
+    text += diagnostic.message;
+    if (!diagnostic.action.empty())
+        text += "; " + diagnostic.action;
+    return text;
+}
+
+std::string Diagnostics::formatAll() const {
+    std::string text;
+    for (const Diagnostic& diagnostic : items_)
+        text += format(diagnostic) + '\n';
+    if (suppressed_ > 0)
+        text += (fileName_.empty() ? std::string("<input>") : fileName_) + ": " +
+                std::to_string(suppressed_) + " more problems not listed\n";
+    return text;
+}
+
+} // namespace stellwerk::cs2config

@@ -1,0 +1,82 @@
+#include "cs2config/Document.h"
+
+#include "cs2config/DocumentParser.h"
+
+namespace stellwerk::cs2config {
+
+namespace {
+
+void appendLine(const Node& node, std::string& out) {
+    if (node.kind() != Node::Kind::Root) {
+        out += node.raw();
+        if (node.ending() == Node::Ending::Lf)
+            out += '\n';
+        else if (node.ending() == Node::Ending::CrLf)
+            out += "\r\n";
+    }
+    for (const Node& child : node.children())
+        appendLine(child, out);
+}
+
+// A line that had no line end because it was the last one gets one when lines follow it.
+void endLastLine(Node& node, const LineStyle& style) {
+    Node* last = &node;
+    while (!last->children().empty())
+        last = &last->children().back();
+    if (last->kind() != Node::Kind::Root && last->ending() == Node::Ending::None)
+        last->setEnding(style.newline == "\r\n" ? Node::Ending::CrLf : Node::Ending::Lf);
+}
+
+} // namespace
+
+Document Document::parse(std::string_view bytes, Diagnostics& diagnostics) {
+    return DocumentParser(bytes, diagnostics).parse();
+}
+
+Document Document::create(std::string_view section, LineStyle style) {
+    Document document;
+    Diagnostics ignored;
+    document = parse("[" + std::string(section) + "]" + style.newline, ignored);
+    document.style_ = std::move(style);
+    return document;
+}
+
+std::string Document::serialize() const {
+    std::string out;
+    appendLine(root_, out);
+    return out;
+}
+
+Node Document::newRecord(std::string_view keyword) const {
+    return Node::entry(0, keyword, std::nullopt, style_);
+}
+
+void Document::replaceRecords(std::string_view keyword, std::vector<Node> records) {
+    std::vector<Node>& top = root_.children();
+    std::vector<Node> kept;
+    kept.reserve(top.size() + records.size());
+    bool placed = false;
+    for (Node& node : top) {
+        if (!(node.isEntry() && node.key() == keyword)) {
+            kept.push_back(std::move(node));
+            continue;
+        }
+        if (!placed) {
+            for (Node& record : records)
+                kept.push_back(std::move(record));
+            placed = true;
+        }
+    }
+    if (!placed) {
+        if (!kept.empty() && !records.empty())
+            endLastLine(kept.back(), style_);
+        for (Node& record : records)
+            kept.push_back(std::move(record));
+    }
+    top = std::move(kept);
+    // Whatever now comes last keeps the file's own ending; anything before it needs a line end.
+    for (std::size_t i = 0; i + 1 < top.size(); ++i)
+        endLastLine(top[i], style_);
+}
+
+} // namespace stellwerk::cs2config

@@ -1,0 +1,36 @@
+#pragma once
+
+#include "cs2config/Diagnostics.h"
+#include "cs2config/Document.h"
+
+#include <string_view>
+
+namespace stellwerk::cs2config {
+
+// Builds a Document from bytes in one pass: splits lines, reads each (UTF-8, Latin-1 fallback),
+// nests entries by their dots and reports every line it could not read.
+class DocumentParser {
+public:
+    DocumentParser(std::string_view bytes, Diagnostics& diagnostics);
+    Document parse();
+
+private:
+    struct RawLine {
+        std::string_view bytes;
+        Node::Ending ending;
+    };
+
+    std::vector<RawLine> splitLines() const;
+    std::size_t headerIndex(const std::vector<RawLine>& lines) const;
+    Node readLine(const RawLine& line, int lineNumber, bool beforeHeader);
+    void attach(Node node);
+    void noteStyle(const Node& node, Node::Ending ending);
+
+    std::string_view bytes_;
+    Diagnostics& diagnostics_;
+    Document document_;
+    std::vector<Node*> open_; // the chain of nodes the next line may nest under
+    bool styleKnown_ = false;
+};
+
+} // namespace stellwerk::cs2config

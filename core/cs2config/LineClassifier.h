@@ -1,0 +1,31 @@
+#pragma once
+
+#include "cs2config/Node.h"
+
+#include <string>
+#include <string_view>
+
+namespace stellwerk::cs2config {
+
+// Reads one line of a .cs2 file: header, entry ("key", ".key=value", "..key") or something else.
+class LineClassifier {
+public:
+    enum class Result { Header, Entry, Blank, Unreadable, TooDeep };
+
+    explicit LineClassifier(Node& node) : node_(node) {}
+
+    static bool isHeader(std::string_view line);
+    static bool isKeyCharacter(char c);
+
+    void decodeLatin1();
+    Result classify(int maxLevel);
+    // A hint about what an unreadable line probably was, e.g. " (a damaged section header?)".
+    std::string hint() const;
+
+private:
+    Result classifyEntry(std::size_t start, int maxLevel);
+
+    Node& node_;
+};
+
+} // namespace stellwerk::cs2config

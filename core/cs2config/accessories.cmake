@@ -1,0 +1,1 @@
+# accessories sources (filled in by the accessories work)

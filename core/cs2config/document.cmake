@@ -1,0 +1,12 @@
+# The .cs2 text format: lines kept as read, nested by their dots.
+target_sources(stellwerk-core PRIVATE
+    cs2config/Diagnostics.cpp
+    cs2config/Document.cpp
+    cs2config/DocumentParser.cpp
+    cs2config/JsonWriter.cpp
+    cs2config/LineClassifier.cpp
+    cs2config/Node.cpp
+    cs2config/RecordEditor.cpp
+    cs2config/Text.cpp
+    cs2config/Values.cpp
+)

@@ -1,0 +1,1 @@
+# layout sources (filled in by the layout work)

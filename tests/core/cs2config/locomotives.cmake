@@ -1,0 +1,1 @@
+# locomotives sources (filled in by the locomotives work)

@@ -1,0 +1,1 @@
+# streams sources (filled in by the streams work)
