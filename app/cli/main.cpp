@@ -2,6 +2,7 @@
 
 #include "DecodeCommand.h"
 #include "EncodeCommand.h"
+#include "StreamCommand.h"
 
 #include <iostream>
 #include <string>
@@ -17,6 +18,10 @@ void printUsage(std::ostream& out) {
            "stdin)\n"
            "  stellwerk-cli encode <name> key=value ...   build a frame and print it in all notations\n"
            "  stellwerk-cli encode --list                 list the message names\n"
+           "  stellwerk-cli stream decode [FILE] [-d DIR] store the config-data streams of a capture as "
+           "files\n"
+           "  stellwerk-cli stream encode FILE --key KEY [--follow-up TEXT] [--hash 0x4711] [--broadcast]\n"
+           "                [--notation document|candump]  print the frames a CS2 sends for FILE\n"
            "\n"
            "FRAME notations:\n"
            "  document   00004711 5 00 00 00 00 00\n"
@@ -24,7 +29,7 @@ void printUsage(std::ostream& out) {
            "  bracketed  can0  00004711   [5]  00 00 00 00 00\n"
            "  network    00004711050000000000000000   (13 bytes of the UDP/TCP gateway, 26 hex digits)\n"
            "\n"
-           "Exit status: 0 all frames fine, 1 a frame was invalid, 2 usage error.\n";
+           "Exit status: 0 all frames fine, 1 a frame (or stream) was invalid, 2 usage error.\n";
 }
 
 } // namespace
@@ -44,6 +49,8 @@ int main(int argc, char** argv) {
         return stellwerk::cli::runDecode(rest, std::cin, std::cout, std::cerr);
     if (arguments[0] == "encode")
         return stellwerk::cli::runEncode(rest, std::cout, std::cerr);
+    if (arguments[0] == "stream")
+        return stellwerk::cli::runStream(rest, std::cin, std::cout, std::cerr);
     std::cerr << "stellwerk-cli: unknown command '" << arguments[0] << "'\n\n";
     printUsage(std::cerr);
     return 2;
