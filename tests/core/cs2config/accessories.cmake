@@ -1,1 +1,6 @@
-# accessories sources (filled in by the accessories work)
+# accessories tests (tests/core/cs2config): magnetartikel.cs2, maginfo, magnetartikel.sr2, fahrstrassen.cs2.
+target_sources(stellwerk-core-tests PRIVATE
+    cs2config/AccessoryFileTest.cpp
+    cs2config/AccessoryStatusFileTest.cpp
+    cs2config/RouteFileTest.cpp
+)

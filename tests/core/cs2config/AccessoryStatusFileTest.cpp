@@ -1,0 +1,184 @@
+// magnetartikel.sr2 (config-data key "magstat"), the accessory status file. No corpus file holds one;
+// the fixtures follow the format public programs read and serve (see AccessoryStatusFile.h).
+
+#include "cs2config/AccessoryStatusFile.h"
+
+#include "ConfigTestSupport.h"
+
+#include <random>
+
+namespace stellwerk::cs2config::test {
+namespace {
+
+// What RailControl's CS2 HTTP server answers for /config/magnetartikel.sr2: no accessory has a state.
+constexpr std::string_view emptyStatus = "[magnetartikel]\nversion\n .minor=1\n";
+
+// The records JCS reads: `.id` and `.stellung`, a missing `.stellung` meaning 0.
+constexpr std::string_view threeStates = "[magnetartikel]\n"
+                                         "version\n"
+                                         " .minor=1\n"
+                                         "artikel\n"
+                                         " .id=1\n"
+                                         " .stellung=1\n"
+                                         "artikel\n"
+                                         " .id=2\n"
+                                         "artikel\n"
+                                         " .id=5\n"
+                                         " .stellung=2\n";
+
+struct Read {
+    Diagnostics diagnostics;
+    AccessoryStatusFile file;
+};
+
+Read readText(std::string_view text) {
+    Parsed parsed = parseText(text, "magnetartikel.sr2");
+    AccessoryStatusFile file = AccessoryStatusFile::read(parsed.document, parsed.diagnostics);
+    return {std::move(parsed.diagnostics), std::move(file)};
+}
+
+TEST(AccessoryStatusFile, EmptyStatusFileAsServedByRailControl) {
+    Read read = readText(emptyStatus);
+    EXPECT_TRUE(read.diagnostics.empty()) << read.diagnostics.formatAll();
+    EXPECT_TRUE(read.file.states.empty());
+    EXPECT_EQ(read.file.versionMinor, 1);
+    EXPECT_EQ(read.file.write().serialize(), emptyStatus);
+}
+
+TEST(AccessoryStatusFile, StatesAreRead) {
+    Read read = readText(threeStates);
+    EXPECT_TRUE(read.diagnostics.empty()) << read.diagnostics.formatAll();
+    ASSERT_EQ(read.file.states.size(), 3u);
+    EXPECT_EQ(read.file.states[0].id, 1);
+    EXPECT_EQ(read.file.states[0].position, 1);
+    EXPECT_EQ(read.file.states[1].id, 2);
+    EXPECT_EQ(read.file.states[1].position, 0);
+    EXPECT_EQ(read.file.states[2].position, 2);
+    EXPECT_EQ(read.file.states[2].lineNumber(), 9);
+    ASSERT_NE(read.file.find(5), nullptr);
+    EXPECT_EQ(read.file.find(5)->position, 2);
+    EXPECT_EQ(read.file.find(3), nullptr);
+    EXPECT_EQ(read.file.write().serialize(), threeStates);
+}
+
+TEST(AccessoryStatusFile, ChangingOneStateChangesOnlyItsLine) {
+    Read read = readText(threeStates);
+    read.file.states[0].position = 0;
+    read.file.states[1].position = 1;
+    EXPECT_EQ(read.file.write().serialize(),
+              "[magnetartikel]\nversion\n .minor=1\nartikel\n .id=1\n .stellung=0\n"
+              "artikel\n .id=2\n .stellung=1\nartikel\n .id=5\n .stellung=2\n");
+}
+
+TEST(AccessoryStatusFile, AddedAndRemovedStatesReadBackTheSame) {
+    Read read = readText(threeStates);
+    read.file.states.erase(read.file.states.begin());
+    AccessoryState added;
+    added.id = 9;
+    added.position = 3;
+    read.file.states.push_back(added);
+    const std::string written = read.file.write().serialize();
+    EXPECT_EQ(written, "[magnetartikel]\nversion\n .minor=1\nartikel\n .id=2\nartikel\n .id=5\n .stellung=2\n"
+                       "artikel\n .id=9\n .stellung=3\n");
+    Read again = readText(written);
+    EXPECT_TRUE(again.diagnostics.empty()) << again.diagnostics.formatAll();
+    ASSERT_EQ(again.file.states.size(), 3u);
+    EXPECT_EQ(again.file.states[2].id, 9);
+    EXPECT_EQ(again.file.states[2].position, 3);
+}
+
+TEST(AccessoryStatusFile, NewStatusFileLooksLikeTheStations) {
+    AccessoryStatusFile file;
+    file.versionMinor = 1;
+    EXPECT_EQ(file.write().serialize(), emptyStatus);
+    file.states.push_back({7, 1, {}});
+    EXPECT_EQ(file.write().serialize(),
+              "[magnetartikel]\nversion\n .minor=1\nartikel\n .id=7\n .stellung=1\n");
+}
+
+TEST(AccessoryStatusFile, ProblemsAreReported) {
+    Read read = readText("[magnetartikel]\nartikel\n .id=1\n .stellung=rot\n .zeit=5\n"
+                         "artikel\n .id=1\n .zeit=6\nartikel\n .stellung=1\nfahrstrasse\n .id=1\n");
+    ASSERT_EQ(read.diagnostics.count(), 5u) << read.diagnostics.formatAll();
+    EXPECT_EQ(read.diagnostics.items()[0].line, 5);
+    EXPECT_EQ(read.diagnostics.items()[0].message, "unknown key '.zeit' in artikel records");
+    EXPECT_EQ(read.diagnostics.items()[1].line, 4);
+    EXPECT_EQ(read.diagnostics.items()[1].message,
+              "value 'rot' of .stellung in artikel record is not a number");
+    EXPECT_EQ(read.diagnostics.items()[2].line, 9);
+    EXPECT_EQ(read.diagnostics.items()[2].message, "artikel record without .id");
+    EXPECT_EQ(read.diagnostics.items()[3].line, 11);
+    EXPECT_EQ(read.diagnostics.items()[3].message, "unknown record 'fahrstrasse'");
+    EXPECT_EQ(read.diagnostics.items()[4].line, 6);
+    EXPECT_EQ(read.diagnostics.items()[4].message, "state of accessory 1 given again (first at line 2)");
+    EXPECT_EQ(read.file.states.size(), 3u);
+}
+
+TEST(AccessoryStatusFile, OtherSectionIsReported) {
+    Read read = readText("[gleisbild]\nversion\n .minor=1\n");
+    ASSERT_EQ(read.diagnostics.count(), 1u);
+    EXPECT_EQ(read.diagnostics.items()[0].message, "section [gleisbild] instead of [magnetartikel]");
+}
+
+TEST(AccessoryStatusFile, JsonListsTheStates) {
+    EXPECT_EQ(toJson(readText(threeStates).file), R"({
+  "file": "magnetartikel.sr2",
+  "version": {
+    "major": null,
+    "minor": 1
+  },
+  "states": [
+    {
+      "line": 4,
+      "id": 1,
+      "position": 1
+    },
+    {
+      "line": 7,
+      "id": 2,
+      "position": 0
+    },
+    {
+      "line": 9,
+      "id": 5,
+      "position": 2
+    }
+  ]
+}
+)");
+}
+
+TEST(AccessoryStatusFile, DamagedFilesAreReadAndWrittenBack) {
+    std::string original(threeStates);
+    for (int id = 10; id < 60; ++id)
+        original += "artikel\n .id=" + std::to_string(id) + "\n .stellung=" + std::to_string(id % 4) + "\n";
+    std::mt19937 random(7);
+    const auto pick = [&random](int low, int high) {
+        return std::uniform_int_distribution<int>(low, high)(random);
+    };
+    static constexpr std::string_view structural = ".=\n \r0123456789-x[]";
+    for (int round = 0; round < 2000; ++round) {
+        std::string bytes = original;
+        for (int edits = pick(1, 8); edits > 0; --edits) {
+            const auto at = static_cast<std::size_t>(pick(0, static_cast<int>(bytes.size()) - 1));
+            const char c = pick(0, 3) == 0
+                               ? static_cast<char>(pick(0, 255))
+                               : structural[static_cast<std::size_t>(pick(0, structural.size() - 1))];
+            if (pick(0, 1) == 0)
+                bytes[at] = c;
+            else
+                bytes.insert(at, 1, c);
+        }
+        Parsed parsed = parseText(bytes);
+        ASSERT_EQ(parsed.document.serialize(), bytes) << "round " << round;
+        const AccessoryStatusFile file = AccessoryStatusFile::read(parsed.document, parsed.diagnostics);
+        const std::string written = file.write().serialize();
+        Diagnostics again;
+        EXPECT_EQ(AccessoryStatusFile::read(Document::parse(written, again), again).states.size(),
+                  file.states.size())
+            << "round " << round;
+    }
+}
+
+} // namespace
+} // namespace stellwerk::cs2config::test
