@@ -55,23 +55,26 @@ void Document::replaceRecords(std::string_view keyword, std::vector<Node> record
     std::vector<Node>& top = root_.children();
     std::vector<Node> kept;
     kept.reserve(top.size() + records.size());
-    bool placed = false;
+    std::size_t next = 0;
+    std::size_t afterLastSlot = 0;
     for (Node& node : top) {
         if (!(node.isEntry() && node.key() == keyword)) {
             kept.push_back(std::move(node));
             continue;
         }
-        if (!placed) {
-            for (Node& record : records)
-                kept.push_back(std::move(record));
-            placed = true;
-        }
+        // The n-th new record takes the n-th old one's place, so records split by others stay put.
+        if (next < records.size())
+            kept.push_back(std::move(records[next++]));
+        afterLastSlot = kept.size();
     }
-    if (!placed) {
-        if (!kept.empty() && !records.empty())
-            endLastLine(kept.back(), style_);
-        for (Node& record : records)
-            kept.push_back(std::move(record));
+    if (afterLastSlot == 0)
+        afterLastSlot = kept.size();
+    if (next < records.size()) {
+        if (afterLastSlot > 0)
+            endLastLine(kept[afterLastSlot - 1], style_);
+        kept.insert(kept.begin() + static_cast<std::ptrdiff_t>(afterLastSlot),
+                    std::make_move_iterator(records.begin() + static_cast<std::ptrdiff_t>(next)),
+                    std::make_move_iterator(records.end()));
     }
     top = std::move(kept);
     // Whatever now comes last keeps the file's own ending; anything before it needs a line end.

@@ -26,7 +26,8 @@ public:
     bool hasHeader() const { return hasHeader_; }
     // The header's name ("lokomotive"), empty when the file has no header.
     std::string_view section() const { return section_; }
-    // True when the file is a .cs2 file at all: a header or at least one record or key line.
+    // True when the file is a .cs2 file at all: a header or at least one "key=value" or ".key" line
+    // (a bare word is not enough: any text file has those).
     bool isConfiguration() const { return hasHeader() || entryCount_ > 0; }
     const LineStyle& style() const { return style_; }
 
@@ -42,8 +43,9 @@ public:
     const Node* record(std::string_view keyword) const { return root_.find(keyword); }
     Node* record(std::string_view keyword) { return root_.find(keyword); }
 
-    // Replaces every record with this keyword by the given ones, placed where the first of the
-    // old ones stood (at the end when there was none). Other records and lines keep their place.
+    // Replaces the records with this keyword by the given ones: the n-th new record takes the place
+    // of the n-th old one, further ones follow the last old one (or go at the end when there was
+    // none). Other records and lines keep their place.
     void replaceRecords(std::string_view keyword, std::vector<Node> records);
     // A new record line "keyword" in this document's style.
     Node newRecord(std::string_view keyword) const;

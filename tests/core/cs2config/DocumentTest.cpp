@@ -293,6 +293,21 @@ TEST(Cs2Document, ReplaceRecordsKeepsOtherRecordsInPlace) {
               "[magnetartikel]\nversion\n .minor=1\nartikel\n .id=2\nartikel\n .id=3\nfoo\n .x=1\ngleis\n");
 }
 
+TEST(Cs2Document, ReplaceRecordsKeepsInterleavedRecordsWhereTheyWere) {
+    Parsed parsed = parseText("[x]\nartikel\n .id=1\nfoo\nartikel\n .id=2\nbar\n");
+    Document& document = parsed.document;
+    std::vector<Node> same;
+    for (const Node* record : document.records("artikel"))
+        same.push_back(*record);
+    document.replaceRecords("artikel", same);
+    EXPECT_EQ(document.serialize(), "[x]\nartikel\n .id=1\nfoo\nartikel\n .id=2\nbar\n");
+    same.push_back(document.newRecord("artikel"));
+    document.replaceRecords("artikel", same);
+    EXPECT_EQ(document.serialize(), "[x]\nartikel\n .id=1\nfoo\nartikel\n .id=2\nartikel\nbar\n");
+    document.replaceRecords("artikel", {same[1]});
+    EXPECT_EQ(document.serialize(), "[x]\nartikel\n .id=2\nfoo\nbar\n");
+}
+
 TEST(Cs2Document, CreateWritesAHeader) {
     Document document = Document::create("fahrstrassen");
     EXPECT_EQ(document.section(), "fahrstrassen");
