@@ -1,1 +1,16 @@
-# locomotives sources (filled in by the locomotives work)
+# locomotives sources of stellwerk-core (core/cs2config)
+# lokomotive.cs2, the loco status file lokomotive.sr2 and the MS2 loco streams (lokinfo, loknamen,
+# lokliste, ldbver).
+target_sources(stellwerk-core PRIVATE
+    cs2config/Locomotive.cpp
+    cs2config/LocomotiveFieldWriter.cpp
+    cs2config/LocomotiveFile.cpp
+    cs2config/LocomotiveJson.cpp
+    cs2config/LocomotiveRecord.cpp
+    cs2config/LocomotiveSections.cpp
+    cs2config/LocomotiveStateFile.cpp
+    cs2config/LocomotiveValues.cpp
+    cs2config/Ms2LocoDatabaseVersion.cpp
+    cs2config/Ms2LocoInfo.cpp
+    cs2config/Ms2LocoNames.cpp
+)
