@@ -18,13 +18,18 @@ void appendLine(const Node& node, std::string& out) {
         appendLine(child, out);
 }
 
-// A line that had no line end because it was the last one gets one when lines follow it.
-void endLastLine(Node& node, const LineStyle& style) {
+Node& lastLineOf(Node& node) {
     Node* last = &node;
     while (!last->children().empty())
         last = &last->children().back();
-    if (last->kind() != Node::Kind::Root && last->ending() == Node::Ending::None)
-        last->setEnding(style.newline == "\r\n" ? Node::Ending::CrLf : Node::Ending::Lf);
+    return *last;
+}
+
+// A line that had no line end because it was the last one gets one when lines follow it.
+void endLastLine(Node& node, const LineStyle& style) {
+    Node& last = lastLineOf(node);
+    if (last.kind() != Node::Kind::Root && last.ending() == Node::Ending::None)
+        last.setEnding(style.newline == "\r\n" ? Node::Ending::CrLf : Node::Ending::Lf);
 }
 
 } // namespace
@@ -53,6 +58,7 @@ Node Document::newRecord(std::string_view keyword) const {
 
 void Document::replaceRecords(std::string_view keyword, std::vector<Node> records) {
     std::vector<Node>& top = root_.children();
+    const bool noFinalNewline = !top.empty() && lastLineOf(root_).ending() == Node::Ending::None;
     std::vector<Node> kept;
     kept.reserve(top.size() + records.size());
     std::size_t next = 0;
@@ -80,6 +86,11 @@ void Document::replaceRecords(std::string_view keyword, std::vector<Node> record
     // Whatever now comes last keeps the file's own ending; anything before it needs a line end.
     for (std::size_t i = 0; i + 1 < top.size(); ++i)
         endLastLine(top[i], style_);
+    // A file without a final newline keeps that property whatever now comes last.
+    if (noFinalNewline && !top.empty()) {
+        endLastLine(top.back(), style_);
+        lastLineOf(root_).setEnding(Node::Ending::None);
+    }
 }
 
 } // namespace stellwerk::cs2config

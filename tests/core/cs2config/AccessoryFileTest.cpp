@@ -293,7 +293,7 @@ TEST(AccessoryFile, AccessoryAddedToAFileWithoutFinalNewline) {
     added.type = "rechtsweiche";
     read.file.accessories.push_back(added);
     EXPECT_EQ(read.file.write().serialize(),
-              "[magnetartikel]\nartikel\n .id=1\n .typ=linksweiche\nartikel\n .id=2\n .typ=rechtsweiche\n");
+              "[magnetartikel]\nartikel\n .id=1\n .typ=linksweiche\nartikel\n .id=2\n .typ=rechtsweiche");
 }
 
 TEST(AccessoryFile, UnknownTypesAndKeysAreReportedOnce) {

@@ -290,7 +290,7 @@ TEST(Cs2Document, ReplaceRecordsKeepsOtherRecordsInPlace) {
     more.push_back(gleis);
     document.replaceRecords("gleis", std::move(more));
     EXPECT_EQ(document.serialize(),
-              "[magnetartikel]\nversion\n .minor=1\nartikel\n .id=2\nartikel\n .id=3\nfoo\n .x=1\ngleis\n");
+              "[magnetartikel]\nversion\n .minor=1\nartikel\n .id=2\nartikel\n .id=3\nfoo\n .x=1\ngleis");
 }
 
 TEST(Cs2Document, ReplaceRecordsKeepsInterleavedRecordsWhereTheyWere) {
