@@ -1,1 +1,12 @@
-# layout sources (filled in by the layout work)
+# layout sources of stellwerk-core (core/cs2config): the track plan (gleisbild.cs2, its pages, gleisbild.sr2)
+target_sources(stellwerk-core PRIVATE
+    cs2config/TrackElement.cpp
+    cs2config/TrackElementType.cpp
+    cs2config/TrackFields.cpp
+    cs2config/TrackFile.cpp
+    cs2config/TrackLayout.cpp
+    cs2config/TrackPage.cpp
+    cs2config/TrackPlan.cpp
+    cs2config/TrackPosition.cpp
+    cs2config/TrackStatus.cpp
+)

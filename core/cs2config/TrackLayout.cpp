@@ -1,0 +1,145 @@
+#include "cs2config/TrackLayout.h"
+
+#include "cs2config/Text.h"
+
+#include <fstream>
+#include <system_error>
+
+namespace stellwerk::cs2config {
+
+namespace {
+
+constexpr std::string_view pageDirectory = "gleisbilder";
+constexpr std::string_view pageExtension = ".cs2";
+
+bool usableFileName(std::string_view name) {
+    if (name.empty() || name == "." || name == "..")
+        return false;
+    for (char c : name)
+        if (c == '/' || c == '\\' || static_cast<unsigned char>(c) < 0x20 || c == 0x7F)
+            return false;
+    return true;
+}
+
+// The bytes of a file, or why there are none.
+struct FileContent {
+    std::optional<std::string> bytes;
+    std::string problem;
+};
+
+FileContent readFile(const std::filesystem::path& path) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error))
+        return {std::nullopt, "is missing"};
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    if (error)
+        return {std::nullopt, "cannot be read (" + error.message() + ")"};
+    if (size > TrackLayout::maxFileSize)
+        return {std::nullopt, "is larger than " + std::to_string(TrackLayout::maxFileSize) + " bytes"};
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())) && !in.eof())
+        return {std::nullopt, "cannot be read"};
+    bytes.resize(static_cast<std::size_t>(in.gcount()));
+    return {std::move(bytes), {}};
+}
+
+std::string displayName(std::string_view pageName) {
+    return std::string(pageDirectory) + "/" + std::string(pageName) + std::string(pageExtension);
+}
+
+TrackLayoutPage loadPage(const std::filesystem::path& directory, const TrackPageEntry& entry,
+                         Diagnostics& indexDiagnostics) {
+    TrackLayoutPage page;
+    page.id = entry.id;
+    page.name = entry.name;
+    page.diagnostics.setFileName(displayName(entry.name));
+    const std::optional<std::filesystem::path> file = trackPageFile(directory, entry.name);
+    if (!file) {
+        if (!entry.name.empty()) // a page without a name is reported by the index reader
+            indexDiagnostics.warning(entry.line(),
+                                     "page name " + quoteForMessage(entry.name) + " cannot be a file name",
+                                     "its page file is not looked up; the page is left empty");
+        return page;
+    }
+    page.file = *file;
+    const FileContent content = readFile(*file);
+    if (!content.bytes) {
+        indexDiagnostics.warning(entry.line(),
+                                 "page file " + quoteForMessage(displayName(entry.name), 80) + " of page " +
+                                     std::to_string(entry.id) + " " + content.problem,
+                                 "the page is left empty");
+        return page;
+    }
+    const Document document = Document::parse(*content.bytes, page.diagnostics);
+    page.page = TrackPage::read(document, page.diagnostics);
+    page.loaded = true;
+    return page;
+}
+
+void writeDiagnosticsJson(JsonWriter& json, const Diagnostics& diagnostics) {
+    json.beginArray("diagnostics");
+    for (const Diagnostic& diagnostic : diagnostics.items())
+        json.value(std::string_view(), diagnostics.format(diagnostic));
+    json.endArray();
+}
+
+} // namespace
+
+std::optional<std::filesystem::path> trackPageFile(const std::filesystem::path& directory,
+                                                   std::string_view pageName) {
+    if (!usableFileName(pageName))
+        return std::nullopt;
+    std::u8string fileName(pageName.begin(), pageName.end());
+    fileName.append(pageExtension.begin(), pageExtension.end());
+    return directory / std::filesystem::path(pageDirectory) / std::filesystem::path(fileName);
+}
+
+std::string trackPageStreamKey(std::int64_t pageId) {
+    return "gbs-" + std::to_string(pageId);
+}
+
+TrackLayout TrackLayout::load(const std::filesystem::path& indexFile) {
+    TrackLayout layout;
+    layout.directory = indexFile.parent_path();
+    layout.diagnostics.setFileName(indexFile.filename().string());
+    const FileContent content = readFile(indexFile);
+    if (!content.bytes) {
+        layout.diagnostics.error(0, "track plan index " + indexFile.string() + " " + content.problem,
+                                 "no pages are loaded");
+        return layout;
+    }
+    const Document document = Document::parse(*content.bytes, layout.diagnostics);
+    layout.plan = TrackPlan::read(document, layout.diagnostics);
+    layout.pages.reserve(layout.plan.pages.size());
+    for (const TrackPageEntry& entry : layout.plan.pages)
+        layout.pages.push_back(loadPage(layout.directory, entry, layout.diagnostics));
+    return layout;
+}
+
+std::string toJson(const TrackLayout& layout) {
+    JsonWriter json;
+    json.beginObject();
+    json.value("directory", layout.directory.string());
+    writeJson(json, layout.plan, "index");
+    writeDiagnosticsJson(json, layout.diagnostics);
+    json.beginArray("pages");
+    for (const TrackLayoutPage& page : layout.pages) {
+        json.beginObject();
+        json.value("id", page.id);
+        json.value("name", page.name);
+        json.value("file", page.file.string());
+        json.value("loaded", page.loaded);
+        if (page.loaded)
+            writeJson(json, page.page, "page");
+        else
+            json.null("page");
+        writeDiagnosticsJson(json, page.diagnostics);
+        json.endObject();
+    }
+    json.endArray();
+    json.endObject();
+    return json.text();
+}
+
+} // namespace stellwerk::cs2config
