@@ -1,5 +1,6 @@
 // stellwerk-cli: the protocol tools of Stellwerk for scripts and for debugging a bus.
 
+#include "Cs2Command.h"
 #include "DecodeCommand.h"
 #include "EncodeCommand.h"
 #include "StreamCommand.h"
@@ -22,6 +23,11 @@ void printUsage(std::ostream& out) {
            "files\n"
            "  stellwerk-cli stream encode FILE --key KEY [--follow-up TEXT] [--hash 0x4711] [--broadcast]\n"
            "                [--notation document|candump]  print the frames a CS2 sends for FILE\n"
+           "  stellwerk-cli cs2 check FILE...             read .cs2 files, list every problem with its line\n"
+           "  stellwerk-cli cs2 json FILE                 the file's locomotives, accessories, routes or "
+           "track plan "
+           "as JSON\n"
+           "  stellwerk-cli cs2 format FILE [-o OUT]      write the file back through its typed model\n"
            "\n"
            "FRAME notations:\n"
            "  document   00004711 5 00 00 00 00 00\n"
@@ -49,6 +55,8 @@ int main(int argc, char** argv) {
         return stellwerk::cli::runDecode(rest, std::cin, std::cout, std::cerr);
     if (arguments[0] == "encode")
         return stellwerk::cli::runEncode(rest, std::cout, std::cerr);
+    if (arguments[0] == "cs2")
+        return stellwerk::cli::runCs2(rest, std::cout, std::cerr);
     if (arguments[0] == "stream")
         return stellwerk::cli::runStream(rest, std::cin, std::cout, std::cerr);
     std::cerr << "stellwerk-cli: unknown command '" << arguments[0] << "'\n\n";

@@ -35,6 +35,7 @@ public:
     std::size_t count() const { return items_.size() + suppressed_; }
     bool empty() const { return count() == 0; }
     bool hasErrors() const { return errors_ > 0; }
+    std::size_t errorCount() const { return errors_; }
 
     // "lokomotive.cs2:7: warning: unreadable line ' komotive]'; kept unchanged and ignored"
     std::string format(const Diagnostic& diagnostic) const;

@@ -11,6 +11,8 @@ DocumentParser::DocumentParser(std::string_view bytes, Diagnostics& diagnostics)
 Document DocumentParser::parse() {
     const std::vector<RawLine> lines = splitLines();
     const std::size_t header = headerIndex(lines);
+    if (header == lines.size() && bytes_.find('\0') != std::string_view::npos)
+        return keepBinary(lines);
     if (header != lines.size() && header > 0)
         diagnostics_.warning(1, std::to_string(header) + " line(s) before the [section] header",
                              "kept unchanged and not read");
@@ -23,6 +25,16 @@ Document DocumentParser::parse() {
         else
             diagnostics_.warning(0, "no [section] header", "read the records without one");
     }
+    return std::move(document_);
+}
+
+// Bytes with NUL and no header are binary data, not a damaged .cs2 file: one report, not one per line.
+Document DocumentParser::keepBinary(const std::vector<RawLine>& lines) {
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        document_.root_.children().push_back(
+            Node::fromLine(std::string(lines[i].bytes), lines[i].ending, static_cast<int>(i) + 1));
+    diagnostics_.error(0, "binary data (NUL bytes, no [section] header): not a .cs2 text file",
+                       "nothing read");
     return std::move(document_);
 }
 
@@ -98,7 +110,8 @@ void DocumentParser::attach(Node node) {
         open_.back()->children().push_back(std::move(node));
         return;
     }
-    ++document_.entryCount_;
+    if (node.level() > 0 || node.hasValue())
+        ++document_.entryCount_;
     while (open_.back()->level() >= node.level())
         open_.pop_back();
     Node* parent = open_.back();

@@ -21,6 +21,7 @@ private:
     };
 
     std::vector<RawLine> splitLines() const;
+    Document keepBinary(const std::vector<RawLine>& lines);
     std::size_t headerIndex(const std::vector<RawLine>& lines) const;
     Node readLine(const RawLine& line, int lineNumber, bool beforeHeader);
     void attach(Node node);

@@ -26,15 +26,23 @@ void passEnding(Node& before, Node& inserted) {
 
 } // namespace
 
+// The record's own ".key" line (not a line nested one level too deep in a damaged file).
+Node* RecordEditor::ownLine(std::string_view key) {
+    for (Node& child : record_.children())
+        if (child.isEntry() && child.level() == childLevel() && child.key() == key)
+            return &child;
+    return nullptr;
+}
+
 void RecordEditor::setText(std::string_view key, std::string_view value) {
-    if (Node* line = record_.find(key))
+    if (Node* line = ownLine(key))
         line->setValue(value);
     else
         insertEntry(key, value);
 }
 
 void RecordEditor::setOptionalText(std::string_view key, std::string_view value) {
-    if (record_.find(key) || !value.empty())
+    if (ownLine(key) || !value.empty())
         setText(key, value);
 }
 
@@ -42,7 +50,7 @@ void RecordEditor::setInteger(std::string_view key, std::int64_t value, Base bas
                               std::optional<std::int64_t> absentMeans) {
     const std::string text =
         base == Base::Hex ? formatHex(static_cast<std::uint64_t>(value)) : formatDecimal(value);
-    Node* line = record_.find(key);
+    Node* line = ownLine(key);
     if (!line) {
         if (!absentMeans || *absentMeans != value)
             insertEntry(key, text);
@@ -56,7 +64,10 @@ void RecordEditor::setInteger(std::string_view key, std::int64_t value, Base bas
 void RecordEditor::remove(std::string_view key) {
     auto& children = record_.children();
     children.erase(std::remove_if(children.begin(), children.end(),
-                                  [key](const Node& child) { return child.isEntry() && child.key() == key; }),
+                                  [this, key](const Node& child) {
+                                      return child.isEntry() && child.level() == childLevel() &&
+                                             child.key() == key;
+                                  }),
                    children.end());
 }
 
@@ -72,7 +83,7 @@ Node& RecordEditor::insertEntry(std::string_view key, std::string_view value) {
     auto& children = record_.children();
     auto position = children.begin();
     for (auto it = children.begin(); it != children.end(); ++it)
-        if (it->isEntry() && it->hasValue() && it->children().empty())
+        if (it->isEntry() && it->level() == childLevel() && it->hasValue() && it->children().empty())
             position = it + 1;
     Node entry = Node::entry(childLevel(), key, value, style_);
     if (position != children.begin())

@@ -33,6 +33,7 @@ public:
 
 private:
     Node& insertEntry(std::string_view key, std::string_view value);
+    Node* ownLine(std::string_view key);
     int childLevel() const { return record_.level() + 1; }
 
     Node& record_;

@@ -7,6 +7,7 @@
 #include "cs2/Crc16.h"
 #include "cs2config/ConfigStreamPayload.h"
 #include "cs2config/ConfigStreamSender.h"
+#include "cs2config/TrackPage.h"
 
 #include <gtest/gtest.h>
 
@@ -320,4 +321,17 @@ TEST(ConfigStreamReceiver, ProgressIsReportedFrameByFrame) {
     EXPECT_FALSE(receiver.collecting());
     EXPECT_FALSE(receiver.progress().active);
     EXPECT_EQ(receiver.progress().received, 95u);
+}
+
+// ---- Across the layers: the streamed page is a track plan page ----------------------------------
+
+TEST(ConfigStreamReceiver, CorpusLogPageReadsAsATrackPageWithThreeStraights) {
+    const auto file = singleFile(receiveAll(corpusStream()));
+    Diagnostics diagnostics("gbs stream");
+    const TrackPage page = TrackPage::read(Document::parse(file.contents, diagnostics), diagnostics);
+    EXPECT_TRUE(diagnostics.empty()) << diagnostics.formatAll();
+    ASSERT_EQ(page.elements.size(), 3u);
+    for (const TrackElement& element : page.elements)
+        EXPECT_EQ(element.type, "gerade");
+    EXPECT_EQ(page.write().serialize(), file.contents);
 }

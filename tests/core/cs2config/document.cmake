@@ -1,4 +1,5 @@
-# The .cs2 text format.
+# The .cs2 text format, and files recognised by kind.
 target_sources(stellwerk-core-tests PRIVATE
+    cs2config/ConfigFileTest.cpp
     cs2config/DocumentTest.cpp
 )
