@@ -1,5 +1,7 @@
 #include "cs2config/Diagnostics.h"
 
+#include <algorithm>
+
 namespace stellwerk::cs2config {
 
 Diagnostics::Diagnostics(std::string fileName, std::size_t limit)
@@ -35,9 +37,15 @@ std::string Diagnostics::format(const Diagnostic& diagnostic) const {
 }
 
 std::string Diagnostics::formatAll() const {
-    std::string text;
+    // In line order, as a person reads the file; problems of the same line keep the order found.
+    std::vector<const Diagnostic*> ordered;
     for (const Diagnostic& diagnostic : items_)
-        text += format(diagnostic) + '\n';
+        ordered.push_back(&diagnostic);
+    std::stable_sort(ordered.begin(), ordered.end(),
+                     [](const Diagnostic* a, const Diagnostic* b) { return a->line < b->line; });
+    std::string text;
+    for (const Diagnostic* diagnostic : ordered)
+        text += format(*diagnostic) + '\n';
     if (suppressed_ > 0)
         text += (fileName_.empty() ? std::string("<input>") : fileName_) + ": " +
                 std::to_string(suppressed_) + " more problems not listed\n";

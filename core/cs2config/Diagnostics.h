@@ -39,7 +39,7 @@ public:
 
     // "lokomotive.cs2:7: warning: unreadable line ' komotive]'; kept unchanged and ignored"
     std::string format(const Diagnostic& diagnostic) const;
-    // Every item on its own line, plus a line for the suppressed ones.
+    // Every item on its own line in line order, plus a line for the suppressed ones.
     std::string formatAll() const;
 
 private:
