@@ -78,13 +78,6 @@ Accessory readAccessory(const Node& record, OnceReporter& reporter) {
     return accessory;
 }
 
-void checkSection(const Document& document, Diagnostics& diagnostics) {
-    if (!document.hasHeader() || document.section() == AccessoryFile::section)
-        return;
-    diagnostics.warning(0, "section [" + std::string(document.section()) + "] instead of [magnetartikel]",
-                        "read as accessories");
-}
-
 Node writeRecord(const Accessory& accessory, const Document& document) {
     Node record = accessories::recordFrom(accessory.source, document, AccessoryFile::recordKeyword);
     RecordWriter writer(record, accessory.source, document.style());
@@ -130,34 +123,21 @@ int Accessory::addressCount() const {
 AccessoryFile AccessoryFile::read(const Document& document, Diagnostics& diagnostics) {
     AccessoryFile file;
     file.document = document;
-    checkSection(document, diagnostics);
+    accessories::checkSection(document, section, "accessories", diagnostics);
     OnceReporter reporter(diagnostics);
-    const accessories::FileVersion version = accessories::readVersion(document, reporter);
+    const accessories::FileVersion version =
+        accessories::readRecords(document, recordKeyword, reporter, [&](const Node& record) {
+            file.accessories.push_back(readAccessory(record, reporter));
+        });
     file.versionMajor = version.major;
     file.versionMinor = version.minor;
-    for (const Node& node : document.topLevel()) {
-        if (!node.isEntry())
-            continue;
-        if (node.level() > 0)
-            reporter.strayLine(node);
-        else if (node.key() == recordKeyword)
-            file.accessories.push_back(readAccessory(node, reporter));
-        else if (node.key() != "version")
-            reporter.unknownRecord(node);
-    }
     checkAccessoryAddresses(file.accessories, diagnostics);
     return file;
 }
 
 Document AccessoryFile::write() const {
-    Document out = document;
-    accessories::writeVersion(out, {versionMajor, versionMinor});
-    std::vector<Node> records;
-    records.reserve(accessories.size());
-    for (const Accessory& accessory : accessories)
-        records.push_back(writeRecord(accessory, out));
-    out.replaceRecords(recordKeyword, std::move(records));
-    return out;
+    return accessories::writeRecords(document, {versionMajor, versionMinor}, recordKeyword, accessories,
+                                     writeRecord);
 }
 
 Document writeAccessoryInfo(const std::vector<Accessory>& accessories, LineStyle style) {
@@ -183,10 +163,7 @@ std::string toJson(const AccessoryFile& file) {
     JsonWriter json;
     json.beginObject();
     json.value("file", "magnetartikel.cs2");
-    json.beginObject("version");
-    writeOptional(json, "major", file.versionMajor);
-    writeOptional(json, "minor", file.versionMinor);
-    json.endObject();
+    accessories::writeVersionJson(json, {file.versionMajor, file.versionMinor});
     json.beginArray("accessories");
     for (const Accessory& accessory : file.accessories)
         writeAccessoryJson(json, accessory);

@@ -83,8 +83,8 @@ void OnceReporter::strayLine(const Node& line) {
          "kept unchanged and not read; reported once for the whole file");
 }
 
-void OnceReporter::once(std::string topic, int line, std::string message, std::string action) {
-    if (seen_.insert(std::move(topic)).second)
+void OnceReporter::once(std::string_view topic, int line, std::string message, std::string action) {
+    if (seen_.first(topic))
         diagnostics_.warning(line, std::move(message), std::move(action));
 }
 
@@ -203,18 +203,11 @@ void placeBlocks(Node& record, std::string_view key, std::vector<Node> blocks, s
 void endLines(Node& record, Node::Ending lastEnding, const LineStyle& style) {
     std::vector<Node*> lines;
     collectLines(record, lines);
-    const Node::Ending newline = style.newline == "\r\n" ? Node::Ending::CrLf : Node::Ending::Lf;
+    const Node::Ending newline = Node::newlineOf(style);
     for (std::size_t i = 0; i + 1 < lines.size(); ++i)
         if (lines[i]->ending() == Node::Ending::None)
             lines[i]->setEnding(newline);
     lines.back()->setEnding(lastEnding);
-}
-
-Node::Ending lastEnding(const Node& record) {
-    const Node* last = &record;
-    while (!last->children().empty())
-        last = &last->children().back();
-    return last->ending();
 }
 
 FileVersion readVersion(const Document& document, OnceReporter& reporter) {
@@ -246,6 +239,22 @@ void writeVersion(Document& document, const FileVersion& version) {
     std::vector<Node> records;
     records.push_back(std::move(edited));
     document.replaceRecords("version", std::move(records));
+}
+
+void writeVersionJson(JsonWriter& json, const FileVersion& version) {
+    json.beginObject("version");
+    writeOptional(json, "major", version.major);
+    writeOptional(json, "minor", version.minor);
+    json.endObject();
+}
+
+void checkSection(const Document& document, std::string_view expected, std::string_view readAs,
+                  Diagnostics& diagnostics) {
+    if (!document.hasHeader() || document.section() == expected)
+        return;
+    diagnostics.warning(
+        0, "section [" + std::string(document.section()) + "] instead of [" + std::string(expected) + "]",
+        "read as " + std::string(readAs));
 }
 
 } // namespace stellwerk::cs2config::accessories

@@ -5,11 +5,11 @@
 #include "cs2config/JsonWriter.h"
 #include "cs2config/Node.h"
 #include "cs2config/RecordEditor.h"
+#include "cs2config/ReportOnce.h"
 
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
-#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,11 +44,11 @@ public:
     // A ".key" line before any record.
     void strayLine(const Node& line);
     // Reports `message` unless a report with the same `topic` was made before.
-    void once(std::string topic, int line, std::string message, std::string action);
+    void once(std::string_view topic, int line, std::string message, std::string action);
 
 private:
     Diagnostics& diagnostics_;
-    std::set<std::string> seen_;
+    ReportOnce seen_;
 };
 
 // Reads one record's typed values and reports what does not fit: values that are not numbers (the
@@ -113,8 +113,6 @@ void placeBlocks(Node& record, std::string_view key, std::vector<Node> blocks, s
 // Every line of the record but the last ends with a line end; the last one gets `lastEnding` (a record at
 // the end of a file without a final newline keeps having none).
 void endLines(Node& record, Node::Ending lastEnding, const LineStyle& style);
-// The line end of the record's last line.
-Node::Ending lastEnding(const Node& record);
 
 // The file's "version" record (.major/.minor); a second one is reported.
 struct FileVersion {
@@ -124,5 +122,55 @@ struct FileVersion {
 FileVersion readVersion(const Document& document, OnceReporter& reporter);
 // Updates the version record (adds one when the model has a version and the file had none).
 void writeVersion(Document& document, const FileVersion& version);
+// "version": {"major", "minor"}, a missing one as null.
+void writeVersionJson(JsonWriter& json, const FileVersion& version);
+
+// Warns when the file has a header other than `[expected]`: "section [x] instead of [expected]", "read as
+// <readAs>".
+void checkSection(const Document& document, std::string_view expected, std::string_view readAs,
+                  Diagnostics& diagnostics);
+
+// Reads the version record and hands every `keyword` record to `read`, in file order; other records and
+// lines outside any record are reported once.
+template <class Read>
+FileVersion readRecords(const Document& document, std::string_view keyword, OnceReporter& reporter,
+                        Read read) {
+    const FileVersion version = readVersion(document, reporter);
+    for (const Node& node : document.topLevel()) {
+        if (!node.isEntry())
+            continue;
+        if (node.level() > 0)
+            reporter.strayLine(node);
+        else if (node.key() == keyword)
+            read(node);
+        else if (node.key() != "version")
+            reporter.unknownRecord(node);
+    }
+    return version;
+}
+
+// The document with its version record updated and its `keyword` records replaced by `write(item, document)`
+// of each item, in order.
+template <class Item, class Write>
+Document writeRecords(const Document& document, const FileVersion& version, std::string_view keyword,
+                      const std::vector<Item>& items, Write write) {
+    Document out = document;
+    writeVersion(out, version);
+    std::vector<Node> records;
+    records.reserve(items.size());
+    for (const Item& item : items)
+        records.push_back(write(item, out));
+    out.replaceRecords(keyword, std::move(records));
+    return out;
+}
+
+// The first item with this `.id`, or null.
+template <class Item>
+const Item* findById(const std::vector<Item>& items, std::int64_t id) {
+    for (const Item& item : items)
+        if (item.id == id)
+            return &item;
+    return nullptr;
+}
 
 } // namespace stellwerk::cs2config::accessories

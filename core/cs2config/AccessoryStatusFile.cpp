@@ -49,53 +49,32 @@ Node writeState(const AccessoryState& state, const Document& document) {
 AccessoryStatusFile AccessoryStatusFile::read(const Document& document, Diagnostics& diagnostics) {
     AccessoryStatusFile file;
     file.document = document;
-    if (document.hasHeader() && document.section() != section)
-        diagnostics.warning(0, "section [" + std::string(document.section()) + "] instead of [magnetartikel]",
-                            "read as accessory states");
+    accessories::checkSection(document, section, "accessory states", diagnostics);
     OnceReporter reporter(diagnostics);
-    const accessories::FileVersion version = accessories::readVersion(document, reporter);
+    const accessories::FileVersion version =
+        accessories::readRecords(document, recordKeyword, reporter, [&](const Node& record) {
+            file.states.push_back(readState(record, reporter));
+        });
     file.versionMajor = version.major;
     file.versionMinor = version.minor;
-    for (const Node& node : document.topLevel()) {
-        if (!node.isEntry())
-            continue;
-        if (node.level() > 0)
-            reporter.strayLine(node);
-        else if (node.key() == recordKeyword)
-            file.states.push_back(readState(node, reporter));
-        else if (node.key() != "version")
-            reporter.unknownRecord(node);
-    }
     checkDuplicates(file.states, diagnostics);
     return file;
 }
 
 Document AccessoryStatusFile::write() const {
-    Document out = document;
-    accessories::writeVersion(out, {versionMajor, versionMinor});
-    std::vector<Node> records;
-    records.reserve(states.size());
-    for (const AccessoryState& state : states)
-        records.push_back(writeState(state, out));
-    out.replaceRecords(recordKeyword, std::move(records));
-    return out;
+    return accessories::writeRecords(document, {versionMajor, versionMinor}, recordKeyword, states,
+                                     writeState);
 }
 
 const AccessoryState* AccessoryStatusFile::find(std::int64_t id) const {
-    for (const AccessoryState& state : states)
-        if (state.id == id)
-            return &state;
-    return nullptr;
+    return accessories::findById(states, id);
 }
 
 std::string toJson(const AccessoryStatusFile& file) {
     JsonWriter json;
     json.beginObject();
     json.value("file", "magnetartikel.sr2");
-    json.beginObject("version");
-    writeOptional(json, "major", file.versionMajor);
-    writeOptional(json, "minor", file.versionMinor);
-    json.endObject();
+    accessories::writeVersionJson(json, {file.versionMajor, file.versionMinor});
     json.beginArray("states");
     for (const AccessoryState& state : file.states) {
         json.beginObject();

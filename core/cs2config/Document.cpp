@@ -6,30 +6,11 @@ namespace stellwerk::cs2config {
 
 namespace {
 
-void appendLine(const Node& node, std::string& out) {
-    if (node.kind() != Node::Kind::Root) {
-        out += node.raw();
-        if (node.ending() == Node::Ending::Lf)
-            out += '\n';
-        else if (node.ending() == Node::Ending::CrLf)
-            out += "\r\n";
-    }
-    for (const Node& child : node.children())
-        appendLine(child, out);
-}
-
-Node& lastLineOf(Node& node) {
-    Node* last = &node;
-    while (!last->children().empty())
-        last = &last->children().back();
-    return *last;
-}
-
 // A line that had no line end because it was the last one gets one when lines follow it.
 void endLastLine(Node& node, const LineStyle& style) {
-    Node& last = lastLineOf(node);
+    Node& last = node.lastLine();
     if (last.kind() != Node::Kind::Root && last.ending() == Node::Ending::None)
-        last.setEnding(style.newline == "\r\n" ? Node::Ending::CrLf : Node::Ending::Lf);
+        last.setEnding(Node::newlineOf(style));
 }
 
 } // namespace
@@ -47,9 +28,7 @@ Document Document::create(std::string_view section, LineStyle style) {
 }
 
 std::string Document::serialize() const {
-    std::string out;
-    appendLine(root_, out);
-    return out;
+    return root_.serialize();
 }
 
 Node Document::newRecord(std::string_view keyword) const {
@@ -58,7 +37,7 @@ Node Document::newRecord(std::string_view keyword) const {
 
 void Document::replaceRecords(std::string_view keyword, std::vector<Node> records) {
     std::vector<Node>& top = root_.children();
-    const bool noFinalNewline = !top.empty() && lastLineOf(root_).ending() == Node::Ending::None;
+    const bool noFinalNewline = !top.empty() && root_.lastLine().ending() == Node::Ending::None;
     std::vector<Node> kept;
     kept.reserve(top.size() + records.size());
     std::size_t next = 0;
@@ -89,7 +68,7 @@ void Document::replaceRecords(std::string_view keyword, std::vector<Node> record
     // A file without a final newline keeps that property whatever now comes last.
     if (noFinalNewline && !top.empty()) {
         endLastLine(top.back(), style_);
-        lastLineOf(root_).setEnding(Node::Ending::None);
+        root_.lastLine().setEnding(Node::Ending::None);
     }
 }
 

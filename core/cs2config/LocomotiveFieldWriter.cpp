@@ -26,7 +26,7 @@ void collectLines(Node& node, std::vector<Node*>& lines) {
 // Only the last line may lack a line end (the file's last line); any other line without one gets the
 // style's line end, and the last line then takes over the missing one.
 void endAllButLast(const std::vector<Node*>& lines, const LineStyle& style) {
-    const Node::Ending ending = style.newline == "\r\n" ? Node::Ending::CrLf : Node::Ending::Lf;
+    const Node::Ending ending = Node::newlineOf(style);
     bool unended = false;
     for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
         if (lines[i]->ending() != Node::Ending::None)

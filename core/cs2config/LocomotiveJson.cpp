@@ -1,6 +1,7 @@
 #include "cs2config/LocomotiveJson.h"
 
 #include "cs2config/LocomotiveFile.h"
+#include "cs2config/LocomotiveSections.h"
 #include "cs2config/Values.h"
 
 namespace stellwerk::cs2config {
@@ -123,13 +124,7 @@ void writeLocomotiveJson(JsonWriter& json, std::string_view key, const Locomotiv
 std::string toJson(const LocomotiveFile& file) {
     JsonWriter json;
     json.beginObject().value("kind", "lokomotive.cs2").value("cs3Native", file.cs3Native);
-    if (file.version)
-        json.beginObject("version")
-            .value("major", file.version->major)
-            .value("minor", file.version->minor)
-            .endObject();
-    else
-        json.null("version");
+    loco::writeVersionJson(json, file.version);
     if (file.session)
         json.value("session", *file.session);
     else

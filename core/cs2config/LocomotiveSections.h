@@ -2,6 +2,7 @@
 
 #include "cs2config/Diagnostics.h"
 #include "cs2config/Document.h"
+#include "cs2config/JsonWriter.h"
 #include "cs2config/LocomotiveValues.h"
 
 #include <initializer_list>
@@ -38,6 +39,15 @@ template <class Fill>
 void writeSingleRecord(Document& out, std::string_view keyword, bool present, Fill fill);
 
 void writeVersion(Document& out, const std::optional<RecordVersion>& version);
+
+// "version": {"major", "minor"}, or null when the file has none; for each file's own Version type.
+template <class Version>
+void writeVersionJson(JsonWriter& json, const std::optional<Version>& version) {
+    if (version)
+        json.beginObject("version").value("major", version->major).value("minor", version->minor).endObject();
+    else
+        json.null("version");
+}
 
 // The first record with this keyword, made at the end of the document when there is none.
 Node& recordToWrite(Document& out, std::string_view keyword, bool& fresh);

@@ -176,13 +176,7 @@ const LocomotiveState* LocomotiveStateFile::find(std::string_view name) const {
 std::string toJson(const LocomotiveStateFile& file) {
     JsonWriter json;
     json.beginObject().value("kind", "lokomotive.sr2");
-    if (file.version)
-        json.beginObject("version")
-            .value("major", file.version->major)
-            .value("minor", file.version->minor)
-            .endObject();
-    else
-        json.null("version");
+    loco::writeVersionJson(json, file.version);
     json.beginArray("locomotives");
     for (const LocomotiveState& state : file.locomotives) {
         json.beginObject()

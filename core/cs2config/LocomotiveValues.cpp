@@ -95,9 +95,9 @@ std::string nameOf(std::string_view name, int line) {
 }
 
 void Findings::note(Kind kind, std::string subject, std::string message, std::string action, int line) {
-    const auto [found, added] = index_.try_emplace(message, findings_.size());
-    if (!added) {
-        ++findings_[found->second].count;
+    const auto [number, first] = messages_.see(message);
+    if (!first) {
+        ++findings_[number].count;
         return;
     }
     findings_.push_back({kind, std::move(subject), std::move(message), std::move(action), line, 1});

@@ -3,6 +3,7 @@
 #include "cs2config/Diagnostics.h"
 #include "cs2config/Locomotive.h"
 #include "cs2config/Node.h"
+#include "cs2config/ReportOnce.h"
 #include "cs2config/Values.h"
 
 #include <array>
@@ -11,7 +12,6 @@
 #include <span>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -81,7 +81,7 @@ private:
     };
 
     std::vector<Finding> findings_;
-    std::unordered_map<std::string, std::size_t> index_;
+    ReportOnce messages_; // numbered like findings_
 };
 
 // The lines of one record (or block) for a fixed list of keys, found in one pass over its children.

@@ -18,7 +18,7 @@ Node Node::entry(int level, std::string_view key, std::optional<std::string_view
         node.valueStart_ = static_cast<std::uint32_t>(node.raw_.size());
         node.raw_ += *value;
     }
-    node.ending_ = style.newline == "\r\n" ? Ending::CrLf : Ending::Lf;
+    node.ending_ = newlineOf(style);
     return node;
 }
 
@@ -83,6 +83,35 @@ std::vector<Node*> Node::all(std::string_view key) {
         if (child.isEntry() && child.key() == key)
             found.push_back(&child);
     return found;
+}
+
+const Node& Node::lastLine() const {
+    const Node* last = this;
+    while (!last->children_.empty())
+        last = &last->children_.back();
+    return *last;
+}
+
+Node& Node::lastLine() {
+    return const_cast<Node&>(static_cast<const Node*>(this)->lastLine());
+}
+
+void Node::appendTo(std::string& out) const {
+    if (kind_ != Kind::Root) {
+        out += raw_;
+        if (ending_ == Ending::Lf)
+            out += '\n';
+        else if (ending_ == Ending::CrLf)
+            out += "\r\n";
+    }
+    for (const Node& child : children_)
+        child.appendTo(out);
+}
+
+std::string Node::serialize() const {
+    std::string out;
+    appendTo(out);
+    return out;
 }
 
 } // namespace stellwerk::cs2config

@@ -29,6 +29,10 @@ public:
                       const LineStyle& style);
     // A line read from a file; classify() sets the kind and the key/value positions.
     static Node fromLine(std::string raw, Ending ending, int lineNumber);
+    // The line end the style writes.
+    static Ending newlineOf(const LineStyle& style) {
+        return style.newline == "\r\n" ? Ending::CrLf : Ending::Lf;
+    }
 
     Kind kind() const { return kind_; }
     bool isEntry() const { return kind_ == Kind::Entry; }
@@ -58,6 +62,14 @@ public:
     // Every child entry with this key, in file order.
     std::vector<const Node*> all(std::string_view key) const;
     std::vector<Node*> all(std::string_view key);
+
+    // The line written last of this node and the lines under it: the one whose line end is the end.
+    const Node& lastLine() const;
+    Node& lastLine();
+    // Appends this line (unless it is the root) and the lines under it as they are written to a file.
+    void appendTo(std::string& out) const;
+    // The lines of this node as they are written to a file.
+    std::string serialize() const;
 
 private:
     friend class LineClassifier;

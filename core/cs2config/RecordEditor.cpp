@@ -8,16 +8,9 @@ namespace stellwerk::cs2config {
 
 namespace {
 
-Node& lastLine(Node& node) {
-    Node* last = &node;
-    while (!last->children().empty())
-        last = &last->children().back();
-    return *last;
-}
-
 // The file's last line may lack a line end; a line inserted right after it inherits that instead.
 void passEnding(Node& before, Node& inserted) {
-    Node& last = lastLine(before);
+    Node& last = before.lastLine();
     if (last.ending() != Node::Ending::None)
         return;
     last.setEnding(inserted.ending());

@@ -149,7 +149,7 @@ Node writeCondition(const RouteCondition& condition, const LineStyle& style) {
 Node writeRoute(const Route& route, const Document& document) {
     const LineStyle& style = document.style();
     Node record = accessories::recordFrom(route.source, document, RouteFile::recordKeyword);
-    const Node::Ending ending = accessories::lastEnding(record);
+    const Node::Ending ending = record.lastLine().ending();
     RecordWriter writer(record, route.source, style);
     writer.required("id", route.id);
     writer.optionalText("name", route.name);
@@ -211,53 +211,32 @@ void writeRouteJson(JsonWriter& json, const Route& route) {
 RouteFile RouteFile::read(const Document& document, Diagnostics& diagnostics) {
     RouteFile file;
     file.document = document;
-    if (document.hasHeader() && document.section() != section)
-        diagnostics.warning(0, "section [" + std::string(document.section()) + "] instead of [fahrstrassen]",
-                            "read as routes");
+    accessories::checkSection(document, section, "routes", diagnostics);
     OnceReporter reporter(diagnostics);
-    const accessories::FileVersion version = accessories::readVersion(document, reporter);
+    const accessories::FileVersion version =
+        accessories::readRecords(document, recordKeyword, reporter, [&](const Node& record) {
+            file.routes.push_back(readRoute(record, reporter));
+        });
     file.versionMajor = version.major;
     file.versionMinor = version.minor;
-    for (const Node& node : document.topLevel()) {
-        if (!node.isEntry())
-            continue;
-        if (node.level() > 0)
-            reporter.strayLine(node);
-        else if (node.key() == recordKeyword)
-            file.routes.push_back(readRoute(node, reporter));
-        else if (node.key() != "version")
-            reporter.unknownRecord(node);
-    }
     checkRoutes(file.routes, diagnostics);
     return file;
 }
 
 Document RouteFile::write() const {
-    Document out = document;
-    accessories::writeVersion(out, {versionMajor, versionMinor});
-    std::vector<Node> records;
-    records.reserve(routes.size());
-    for (const Route& route : routes)
-        records.push_back(writeRoute(route, out));
-    out.replaceRecords(recordKeyword, std::move(records));
-    return out;
+    return accessories::writeRecords(document, {versionMajor, versionMinor}, recordKeyword, routes,
+                                     writeRoute);
 }
 
 const Route* RouteFile::find(std::int64_t id) const {
-    for (const Route& route : routes)
-        if (route.id == id)
-            return &route;
-    return nullptr;
+    return accessories::findById(routes, id);
 }
 
 std::string toJson(const RouteFile& file) {
     JsonWriter json;
     json.beginObject();
     json.value("file", "fahrstrassen.cs2");
-    json.beginObject("version");
-    writeOptional(json, "major", file.versionMajor);
-    writeOptional(json, "minor", file.versionMinor);
-    json.endObject();
+    accessories::writeVersionJson(json, {file.versionMajor, file.versionMinor});
     json.beginArray("routes");
     for (const Route& route : file.routes)
         writeRouteJson(json, route);

@@ -55,7 +55,7 @@ TrackElement readElement(const Node& record, Diagnostics* diagnostics) {
     return element;
 }
 
-void reportType(const TrackElement& element, OnceReporter& unknownTypes, Diagnostics& diagnostics) {
+void reportType(const TrackElement& element, ReportOnce& unknownTypes, Diagnostics& diagnostics) {
     if (element.type.empty()) {
         if (element.text.empty())
             diagnostics.warning(element.line(), "element without .typ and without .text",
@@ -91,8 +91,8 @@ bool TrackElement::switchable() const {
 }
 
 std::vector<TrackElement> TrackElementReader::read(const std::vector<const Node*>& records) {
-    OnceReporter unknownKeys;
-    OnceReporter unknownTypes;
+    ReportOnce unknownKeys;
+    ReportOnce unknownTypes;
     std::vector<TrackElement> elements;
     elements.reserve(records.size());
     for (const Node* record : records) {

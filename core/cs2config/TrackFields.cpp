@@ -14,13 +14,6 @@ bool contains(std::span<const std::string_view> list, std::string_view word) {
     return std::find(list.begin(), list.end(), word) != list.end();
 }
 
-Node& lastLine(Node& node) {
-    Node* last = &node;
-    while (!last->children().empty())
-        last = &last->children().back();
-    return *last;
-}
-
 } // namespace
 
 const Node* findField(const Node& record, std::string_view key) {
@@ -150,7 +143,7 @@ void TrackFieldWriter::add(std::string_view key, std::string_view value, bool fi
         return;
     }
     // The file's last line may lack a line end; a line added after it takes that over.
-    Node& last = lastLine(record_);
+    Node& last = record_.lastLine();
     if (last.ending() == Node::Ending::None) {
         last.setEnding(entry.ending());
         entry.setEnding(Node::Ending::None);
@@ -158,15 +151,8 @@ void TrackFieldWriter::add(std::string_view key, std::string_view value, bool fi
     children.push_back(std::move(entry));
 }
 
-bool OnceReporter::first(std::string_view subject) {
-    if (seen_.find(subject) != seen_.end())
-        return false;
-    seen_.emplace(subject);
-    return true;
-}
-
 void checkRecordKeys(const Node& record, std::span<const std::string_view> known, std::string_view what,
-                     OnceReporter& unknownKeys, Diagnostics& diagnostics) {
+                     ReportOnce& unknownKeys, Diagnostics& diagnostics) {
     std::vector<const Node*> seen;
     for (const Node& child : record.children()) {
         if (!child.isEntry() || child.level() != record.level() + 1)

@@ -2,11 +2,10 @@
 
 #include "cs2config/Diagnostics.h"
 #include "cs2config/Node.h"
+#include "cs2config/ReportOnce.h"
 
 #include <cstdint>
-#include <functional>
 #include <optional>
-#include <set>
 #include <span>
 #include <string>
 #include <string_view>
@@ -75,20 +74,9 @@ private:
     const LineStyle& style_;
 };
 
-// Lets a reader report a finding once per subject (an unknown key, type or record) instead of once
-// per line.
-class OnceReporter {
-public:
-    // True the first time this subject is seen.
-    bool first(std::string_view subject);
-
-private:
-    std::set<std::string, std::less<>> seen_;
-};
-
 // Reports keys of a record that are not in `known` (once per key and file), and known keys given
 // twice in one record.
 void checkRecordKeys(const Node& record, std::span<const std::string_view> known, std::string_view what,
-                     OnceReporter& unknownKeys, Diagnostics& diagnostics);
+                     ReportOnce& unknownKeys, Diagnostics& diagnostics);
 
 } // namespace stellwerk::cs2config

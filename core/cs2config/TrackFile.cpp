@@ -18,23 +18,11 @@ bool contains(std::span<const std::string_view> list, std::string_view word) {
     return std::find(list.begin(), list.end(), word) != list.end();
 }
 
-void appendLines(const Node& node, std::string& out) {
-    if (node.kind() != Node::Kind::Root) {
-        out += node.raw();
-        if (node.ending() == Node::Ending::Lf)
-            out += '\n';
-        else if (node.ending() == Node::Ending::CrLf)
-            out += "\r\n";
-    }
-    for (const Node& child : node.children())
-        appendLines(child, out);
-}
-
 } // namespace
 
 void checkRecords(const Document& document, std::span<const std::string_view> known,
                   std::span<const std::string_view> single, Diagnostics& diagnostics) {
-    OnceReporter unknown;
+    ReportOnce unknown;
     std::vector<std::string_view> seen;
     for (const Node& node : document.topLevel()) {
         if (!node.isEntry())
@@ -138,15 +126,9 @@ void replaceRecordsIfChanged(Document& document, std::string_view keyword, std::
     const bool same =
         current.size() == records.size() &&
         std::equal(current.begin(), current.end(), records.begin(),
-                   [](const Node* a, const Node& b) { return serializeNode(*a) == serializeNode(b); });
+                   [](const Node* a, const Node& b) { return a->serialize() == b.serialize(); });
     if (!same)
         document.replaceRecords(keyword, std::move(records));
-}
-
-std::string serializeNode(const Node& node) {
-    std::string out;
-    appendLines(node, out);
-    return out;
 }
 
 } // namespace stellwerk::cs2config

@@ -55,7 +55,15 @@ void replaceFirstRecord(Document& document, std::string_view keyword, Node recor
 // Replaces the records with this keyword unless they are already exactly these, so that writing an
 // unchanged model never moves records that were interleaved with others.
 void replaceRecordsIfChanged(Document& document, std::string_view keyword, std::vector<Node> records);
-// The lines of a node as they are written to the file.
-std::string serializeNode(const Node& node);
+// The same with the record `write(item)` makes of each item, in order.
+template <class Item, class Write>
+void writeRecordsIfChanged(Document& document, std::string_view keyword, const std::vector<Item>& items,
+                           Write write) {
+    std::vector<Node> records;
+    records.reserve(items.size());
+    for (const Item& item : items)
+        records.push_back(write(item));
+    replaceRecordsIfChanged(document, keyword, std::move(records));
+}
 
 } // namespace stellwerk::cs2config

@@ -31,11 +31,8 @@ Document TrackPage::write() const {
         return out;
     writeTrackVersion(out, version);
     const TrackElementWriter writer(out);
-    std::vector<Node> records;
-    records.reserve(elements.size());
-    for (const TrackElement& element : elements)
-        records.push_back(writer.write(element));
-    replaceRecordsIfChanged(out, TrackElement::keyword, std::move(records));
+    writeRecordsIfChanged(out, TrackElement::keyword, elements,
+                          [&](const TrackElement& element) { return writer.write(element); });
     return out;
 }
 

@@ -90,13 +90,13 @@ private:
     }
 
     Diagnostics& diagnostics_;
-    OnceReporter unknownKeys_;
+    ReportOnce unknownKeys_;
     std::map<std::int64_t, int> ids_;
     std::map<std::string, int, std::less<>> names_;
 };
 
 void checkSingleRecordKeys(const Document& document, Diagnostics& diagnostics) {
-    OnceReporter unknownKeys;
+    ReportOnce unknownKeys;
     if (const Node* size = document.record(recordSize))
         checkRecordKeys(*size, sizeKeys, "groesse", unknownKeys, diagnostics);
     if (const Node* lastUsed = document.record(recordLastUsed))
@@ -192,16 +192,11 @@ Document TrackPlan::write() const {
     writeTrackVersion(out, version);
     writeSize(out, size);
     writeLastUsed(out, lastUsedPage);
-    std::vector<Node> records;
-    records.reserve(pages.size());
-    for (const TrackPageEntry& page : pages)
-        records.push_back(writePage(page, out));
-    replaceRecordsIfChanged(out, TrackPageEntry::keyword, std::move(records));
+    writeRecordsIfChanged(out, TrackPageEntry::keyword, pages,
+                          [&](const TrackPageEntry& page) { return writePage(page, out); });
     const TrackElementWriter writer(out);
-    records.clear();
-    for (const TrackElement& element : elements)
-        records.push_back(writer.write(element));
-    replaceRecordsIfChanged(out, TrackElement::keyword, std::move(records));
+    writeRecordsIfChanged(out, TrackElement::keyword, elements,
+                          [&](const TrackElement& element) { return writer.write(element); });
     return out;
 }
 

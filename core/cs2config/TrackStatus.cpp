@@ -25,7 +25,7 @@ TrackElementStatus readEntry(const Node& record, Diagnostics* diagnostics) {
 
 std::vector<TrackElementStatus> readEntries(const std::vector<const Node*>& records,
                                             Diagnostics& diagnostics) {
-    OnceReporter unknownKeys;
+    ReportOnce unknownKeys;
     std::map<std::int64_t, int> lines;
     std::vector<TrackElementStatus> entries;
     entries.reserve(records.size());
@@ -71,11 +71,8 @@ TrackStatusFile TrackStatusFile::read(const Document& document, Diagnostics& dia
 Document TrackStatusFile::write() const {
     Document out = document;
     writeTrackVersion(out, version);
-    std::vector<Node> records;
-    records.reserve(elements.size());
-    for (const TrackElementStatus& entry : elements)
-        records.push_back(writeEntry(entry, out));
-    replaceRecordsIfChanged(out, TrackElementStatus::keyword, std::move(records));
+    writeRecordsIfChanged(out, TrackElementStatus::keyword, elements,
+                          [&](const TrackElementStatus& entry) { return writeEntry(entry, out); });
     return out;
 }
 

@@ -8,6 +8,7 @@ target_sources(stellwerk-core PRIVATE
     cs2config/LineClassifier.cpp
     cs2config/Node.cpp
     cs2config/RecordEditor.cpp
+    cs2config/ReportOnce.cpp
     cs2config/Text.cpp
     cs2config/Values.cpp
 )

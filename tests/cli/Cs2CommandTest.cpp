@@ -2,6 +2,8 @@
 
 #include "Cs2Command.h"
 
+#include "CliTestSupport.h"
+
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -9,33 +11,17 @@
 #include <unistd.h>
 
 using stellwerk::cli::runCs2;
+using stellwerk::cli::test::corpus;
+using stellwerk::cli::test::Outcome;
+using stellwerk::cli::test::readFile;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Outcome {
-    int status;
-    std::string out;
-    std::string err;
-};
 
 Outcome cs2(std::vector<std::string> arguments) {
     std::ostringstream out, err;
     const int status = runCs2(arguments, out, err);
     return {status, out.str(), err.str()};
-}
-
-std::string corpus(const std::string& relative) {
-    const std::string path = std::string(STELLWERK_SHARED_DIR) + "/corpus/" + relative;
-    EXPECT_TRUE(fs::exists(path)) << "corpus file missing: " << path;
-    return path;
-}
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    return bytes.str();
 }
 
 // A scratch file that is removed again.

@@ -3,6 +3,8 @@
 
 #include "StreamCommand.h"
 
+#include "CliTestSupport.h"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -13,32 +15,18 @@
 #include <sys/wait.h>
 
 using stellwerk::cli::runStream;
+using stellwerk::cli::test::corpus;
+using stellwerk::cli::test::Outcome;
+using stellwerk::cli::test::readFile;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Outcome {
-    int status;
-    std::string out;
-    std::string err;
-};
 
 Outcome stream(std::vector<std::string> arguments, const std::string& input = {}) {
     std::istringstream in(input);
     std::ostringstream out, err;
     const int status = runStream(arguments, in, out, err);
     return {status, out.str(), err.str()};
-}
-
-std::string corpus(const std::string& relative) {
-    const std::string path = std::string(STELLWERK_SHARED_DIR) + "/corpus/" + relative;
-    EXPECT_TRUE(fs::exists(path)) << "corpus file missing: " << path;
-    return path;
-}
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 const std::string CorpusLog = "GBert__railroad/can2udp/src/example_zlib.txt";

@@ -42,28 +42,14 @@ constexpr std::string_view documentMaginfo = "[magnetartikel]\n"
                                              "  .schaltzeit=200\n"
                                              "  .dectyp=mm2\n";
 
-struct Read {
-    Diagnostics diagnostics;
-    AccessoryFile file;
-};
+using Read = ReadModel<AccessoryFile>;
 
 Read readText(std::string_view text) {
-    Parsed parsed = parseText(text, "magnetartikel.cs2");
-    AccessoryFile file = AccessoryFile::read(parsed.document, parsed.diagnostics);
-    return {std::move(parsed.diagnostics), std::move(file)};
+    return readAs<AccessoryFile>(text, "magnetartikel.cs2");
 }
 
 Read readCorpusFile(std::string_view path) {
     return readText(readCorpus(path));
-}
-
-// The file with line `lineNumber` (1-based) replaced by `text`.
-std::string withLine(std::string_view bytes, int lineNumber, std::string_view text) {
-    std::size_t start = 0;
-    for (int line = 1; line < lineNumber && start != std::string_view::npos; ++line)
-        start = bytes.find('\n', start) + 1;
-    const std::size_t end = std::min(bytes.find('\n', start), bytes.size());
-    return std::string(bytes.substr(0, start)) + std::string(text) + std::string(bytes.substr(end));
 }
 
 std::map<std::string, int> countBy(const AccessoryFile& file, std::string Accessory::*field) {
@@ -567,45 +553,6 @@ TEST(AccessoryType, EveryCorpusTypeIsKnown) {
     for (std::string_view path : {corpus::magnetartikelTrainControl, corpus::magnetartikelGbert})
         for (const Accessory& accessory : readCorpusFile(path).file.accessories)
             EXPECT_NE(accessory.typeInfo(), nullptr) << path << ": " << accessory.type;
-}
-
-// Random damage to a file, biased towards the characters that carry the format's structure.
-std::string damaged(std::string bytes, std::mt19937& random) {
-    static constexpr std::string_view structural = ".=\n \r0123456789-x[]az";
-    const auto pick = [&random](int low, int high) {
-        return std::uniform_int_distribution<int>(low, high)(random);
-    };
-    const auto character = [&] {
-        return pick(0, 3) == 0 ? static_cast<char>(pick(0, 255))
-                               : structural[static_cast<std::size_t>(pick(0, structural.size() - 1))];
-    };
-    for (int edits = pick(1, 8); edits > 0; --edits) {
-        const auto at = static_cast<std::size_t>(pick(0, static_cast<int>(bytes.size())));
-        const int kind = pick(0, 2);
-        if (kind == 0 && at < bytes.size())
-            bytes[at] = character();
-        else if (kind == 1)
-            bytes.insert(at, 1, character());
-        else if (at < bytes.size())
-            bytes.erase(at, static_cast<std::size_t>(pick(1, 40)));
-    }
-    return bytes;
-}
-
-// True when every record with this keyword stands in one unbroken run (what replaceRecords keeps).
-bool recordsGrouped(const Document& document, std::string_view keyword) {
-    bool seen = false;
-    bool ended = false;
-    for (const Node& node : document.topLevel()) {
-        if (!node.isEntry())
-            continue;
-        const bool match = node.level() == 0 && node.key() == keyword;
-        if (match && ended)
-            return false;
-        seen = seen || match;
-        ended = ended || (seen && !match);
-    }
-    return true;
 }
 
 TEST(AccessoryFile, DamagedFilesAreReadAndWrittenBack) {

@@ -26,15 +26,10 @@ constexpr std::string_view threeStates = "[magnetartikel]\n"
                                          " .id=5\n"
                                          " .stellung=2\n";
 
-struct Read {
-    Diagnostics diagnostics;
-    AccessoryStatusFile file;
-};
+using Read = ReadModel<AccessoryStatusFile>;
 
 Read readText(std::string_view text) {
-    Parsed parsed = parseText(text, "magnetartikel.sr2");
-    AccessoryStatusFile file = AccessoryStatusFile::read(parsed.document, parsed.diagnostics);
-    return {std::move(parsed.diagnostics), std::move(file)};
+    return readAs<AccessoryStatusFile>(text, "magnetartikel.sr2");
 }
 
 TEST(AccessoryStatusFile, EmptyStatusFileAsServedByRailControl) {
@@ -153,22 +148,8 @@ TEST(AccessoryStatusFile, DamagedFilesAreReadAndWrittenBack) {
     for (int id = 10; id < 60; ++id)
         original += "artikel\n .id=" + std::to_string(id) + "\n .stellung=" + std::to_string(id % 4) + "\n";
     std::mt19937 random(7);
-    const auto pick = [&random](int low, int high) {
-        return std::uniform_int_distribution<int>(low, high)(random);
-    };
-    static constexpr std::string_view structural = ".=\n \r0123456789-x[]";
     for (int round = 0; round < 2000; ++round) {
-        std::string bytes = original;
-        for (int edits = pick(1, 8); edits > 0; --edits) {
-            const auto at = static_cast<std::size_t>(pick(0, static_cast<int>(bytes.size()) - 1));
-            const char c = pick(0, 3) == 0
-                               ? static_cast<char>(pick(0, 255))
-                               : structural[static_cast<std::size_t>(pick(0, structural.size() - 1))];
-            if (pick(0, 1) == 0)
-                bytes[at] = c;
-            else
-                bytes.insert(at, 1, c);
-        }
+        const std::string bytes = damaged(original, random);
         Parsed parsed = parseText(bytes);
         ASSERT_EQ(parsed.document.serialize(), bytes) << "round " << round;
         const AccessoryStatusFile file = AccessoryStatusFile::read(parsed.document, parsed.diagnostics);

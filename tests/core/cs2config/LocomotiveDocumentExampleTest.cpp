@@ -43,15 +43,10 @@ constexpr std::string_view basicFormat = "[lokomotive]\n"
                                          "..wert=0\n"
                                          ".inTraktion=0xffffffff\n";
 
-struct ReadText {
-    Diagnostics diagnostics;
-    LocomotiveFile file;
-};
+using ReadText = ReadModel<LocomotiveFile>;
 
 ReadText readText(std::string_view text) {
-    ReadText read{Diagnostics("lokomotive.cs2"), {}};
-    read.file = LocomotiveFile::read(Document::parse(text, read.diagnostics), read.diagnostics);
-    return read;
+    return readAs<LocomotiveFile>(text, "lokomotive.cs2");
 }
 
 // A record of the basic format with the given lines in place of its functions.

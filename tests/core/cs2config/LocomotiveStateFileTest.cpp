@@ -28,15 +28,10 @@ constexpr std::string_view statusFile = "[lokomotive]\n"
                                         " .funktionen\n"
                                         " ..nr=0\n";
 
-struct ReadStatus {
-    Diagnostics diagnostics;
-    LocomotiveStateFile file;
-};
+using ReadStatus = ReadModel<LocomotiveStateFile>;
 
 ReadStatus readStatus(std::string_view text) {
-    ReadStatus read{Diagnostics("lokomotive.sr2"), {}};
-    read.file = LocomotiveStateFile::read(Document::parse(text, read.diagnostics), read.diagnostics);
-    return read;
+    return readAs<LocomotiveStateFile>(text, "lokomotive.sr2");
 }
 
 TEST(LocomotiveStateFile, ReadsSpeedDirectionAndFunctionStates) {

@@ -30,24 +30,10 @@ constexpr std::string_view documentFahrstrassen = "[fahrstrassen]\n"
                                                   "  ..magnetartikel=23\n"
                                                   "  ..stellung=1\n";
 
-struct Read {
-    Diagnostics diagnostics;
-    RouteFile file;
-};
+using Read = ReadModel<RouteFile>;
 
 Read readText(std::string_view text) {
-    Parsed parsed = parseText(text, "fahrstrassen.cs2");
-    RouteFile file = RouteFile::read(parsed.document, parsed.diagnostics);
-    return {std::move(parsed.diagnostics), std::move(file)};
-}
-
-// The file with line `lineNumber` (1-based) replaced by `text`.
-std::string withLine(std::string_view bytes, int lineNumber, std::string_view text) {
-    std::size_t start = 0;
-    for (int line = 1; line < lineNumber && start != std::string_view::npos; ++line)
-        start = bytes.find('\n', start) + 1;
-    const std::size_t end = std::min(bytes.find('\n', start), bytes.size());
-    return std::string(bytes.substr(0, start)) + std::string(text) + std::string(bytes.substr(end));
+    return readAs<RouteFile>(text, "fahrstrassen.cs2");
 }
 
 Route& routeWithId(RouteFile& file, std::int64_t id) {
@@ -385,44 +371,11 @@ TEST(RouteDelay, SecondsWithDecimalsAreMilliseconds) {
     EXPECT_EQ(formatRouteDelay(-3), "0");
 }
 
-// True when every record with this keyword stands in one unbroken run (what replaceRecords keeps).
-bool recordsGrouped(const Document& document, std::string_view keyword) {
-    bool seen = false;
-    bool ended = false;
-    for (const Node& node : document.topLevel()) {
-        if (!node.isEntry())
-            continue;
-        const bool match = node.level() == 0 && node.key() == keyword;
-        if (match && ended)
-            return false;
-        seen = seen || match;
-        ended = ended || (seen && !match);
-    }
-    return true;
-}
-
 TEST(RouteFile, DamagedFilesAreReadAndWrittenBack) {
     const std::string original = readCorpus(corpus::fahrstrassen);
     std::mt19937 random(4711);
-    const auto pick = [&random](int low, int high) {
-        return std::uniform_int_distribution<int>(low, high)(random);
-    };
-    static constexpr std::string_view structural = ".=\n \r0123456789-x[]az";
     for (int round = 0; round < 2000; ++round) {
-        std::string bytes = original;
-        for (int edits = pick(1, 8); edits > 0; --edits) {
-            const auto at = static_cast<std::size_t>(pick(0, static_cast<int>(bytes.size()) - 1));
-            const char c = pick(0, 3) == 0
-                               ? static_cast<char>(pick(0, 255))
-                               : structural[static_cast<std::size_t>(pick(0, structural.size() - 1))];
-            const int kind = pick(0, 2);
-            if (kind == 0)
-                bytes[at] = c;
-            else if (kind == 1)
-                bytes.insert(at, 1, c);
-            else
-                bytes.erase(at, static_cast<std::size_t>(pick(1, 40)));
-        }
+        const std::string bytes = damaged(original, random);
         Parsed parsed = parseText(bytes);
         ASSERT_EQ(parsed.document.serialize(), bytes) << "round " << round;
         const RouteFile file = RouteFile::read(parsed.document, parsed.diagnostics);
