@@ -1,0 +1,59 @@
+#pragma once
+
+#include "cs2/CanFrame.h"
+
+#include <QElapsedTimer>
+#include <chrono>
+#include <cstddef>
+#include <deque>
+#include <functional>
+#include <span>
+
+class QObject;
+class QTimer;
+
+namespace stellwerk::can {
+
+// Frames on their way to the wire: they wait (up to a limit) while the wire is away, and are spaced out
+// when a minimum gap is set, because a Gleisbox loses frames that come too close. Order is always kept.
+class SendQueue {
+public:
+    using Writer = std::function<void(std::span<const cs2::CanFrame>)>;
+    static constexpr std::size_t DefaultLimit = 1000;
+
+    // `owner` owns the pacing timer (so that it moves to another thread with its transport).
+    SendQueue(QObject* owner, Writer writer);
+
+    // Appends frames, writing at once what the wire and the gap allow. Returns how many were accepted:
+    // a full queue refuses the rest.
+    std::size_t push(std::span<const cs2::CanFrame> frames);
+    // The wire is (or is no longer) there; when it comes back, what waits is written.
+    void setWritable(bool writable);
+    bool isWritable() const { return writable_; }
+    // Forgets everything that waits; returns how many frames that were.
+    std::size_t discard();
+
+    std::size_t size() const { return waiting_.size(); }
+    void setLimit(std::size_t limit) { limit_ = limit; }
+    std::size_t limit() const { return limit_; }
+    void setPacing(std::chrono::milliseconds gap);
+    std::chrono::milliseconds pacing() const { return gap_; }
+
+private:
+    bool paced() const { return gap_.count() > 0; }
+    bool gapElapsed() const;
+    int msUntilGapElapsed() const;
+    void pump();
+    void writeAllWaiting();
+    void writeOne(const cs2::CanFrame& frame);
+
+    Writer writer_;
+    QTimer* timer_;
+    std::deque<cs2::CanFrame> waiting_;
+    std::size_t limit_ = DefaultLimit;
+    std::chrono::milliseconds gap_{0};
+    bool writable_ = false;
+    QElapsedTimer sinceLastWrite_;
+};
+
+} // namespace stellwerk::can

@@ -1,0 +1,90 @@
+#pragma once
+
+#include "can/SendQueue.h"
+#include "cs2/CanFrame.h"
+
+#include <QObject>
+#include <QString>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace stellwerk::can {
+
+// What a transport has seen and done since it was created, for the status bar and for tests.
+struct TransportCounters {
+    std::uint64_t framesIn = 0;   // frames delivered to the application
+    std::uint64_t framesOut = 0;  // frames handed to the wire
+    std::uint64_t malformed = 0;  // input that was not a frame (wrong datagram size, DLC above 8, ...)
+    std::uint64_t dropped = 0;    // frames lost: refused while closed, queue overflow, failed writes
+    std::uint64_t reconnects = 0; // connections made again after a loss (the first one after open() is not)
+};
+
+// One way to reach a station's CAN bus (UDP gateway, TCP, a QCanBus device, an in-process pipe):
+// frames out, batches of frames in, connection state and counters. Lives on the thread that uses it.
+class Transport : public QObject {
+    Q_OBJECT
+
+public:
+    enum class State { Closed, Connecting, Connected, Reconnecting };
+    Q_ENUM(State)
+
+    explicit Transport(QObject* parent = nullptr);
+
+    // Starts connecting (and keeps reconnecting with back-off until close()).
+    virtual void open() = 0;
+    // Stops; frames still waiting for the wire are discarded and counted as dropped.
+    virtual void close() = 0;
+
+    // Hands a frame to the wire: at once when connected, otherwise (or while pacing holds it back) from
+    // the send queue, in order. Returns false when the frame is refused: the transport is closed or the
+    // queue is full; the frame is then counted as dropped.
+    bool send(const cs2::CanFrame& frame);
+    // Sends frames in order, as one block where the wire allows it. Returns how many were accepted; the
+    // rest (from the first refused one on) are counted as dropped.
+    std::size_t sendBatch(std::span<const cs2::CanFrame> frames);
+
+    State state() const { return state_; }
+    const TransportCounters& counters() const { return counters_; }
+    // A short human-readable description: "udp://192.168.1.2:15731", "can://socketcan/can0".
+    virtual QString description() const = 0;
+
+    // Minimum gap between two frames written to the wire (a Gleisbox needs about 10 ms); 0 = none.
+    void setPacing(std::chrono::milliseconds gap) { queue_.setPacing(gap); }
+    std::chrono::milliseconds pacing() const { return queue_.pacing(); }
+    // How many frames may wait for the wire (while not connected, or held back by pacing).
+    void setQueueLimit(std::size_t limit) { queue_.setLimit(limit); }
+    std::size_t queueLimit() const { return queue_.limit(); }
+    std::size_t queuedFrames() const { return queue_.size(); }
+
+signals:
+    // Frames that arrived, in order; one signal per read, never one per frame of a burst.
+    void framesReceived(const std::vector<stellwerk::cs2::CanFrame>& frames);
+    void stateChanged(stellwerk::can::Transport::State state);
+    // Something a person should see (connection refused, interface vanished, ...).
+    void problem(const QString& message);
+
+protected:
+    // Connected lets waiting frames go to the wire; Closed discards them (counted as dropped).
+    void setState(State state);
+    // Puts frames on the wire; called only while Connected. Returns how many the wire took; the rest are
+    // counted as dropped.
+    virtual std::size_t writeFrames(std::span<const cs2::CanFrame> frames) = 0;
+    // Hands received frames to the application as one batch (nothing happens for an empty batch).
+    void deliver(std::vector<cs2::CanFrame>&& frames);
+    // Counts input that was not a frame and logs what it was.
+    void countMalformed(std::size_t count, const QString& what);
+    void countReconnect() { ++counters_.reconnects; }
+
+private:
+    void write(std::span<const cs2::CanFrame> frames);
+    void discardWaiting();
+
+    State state_ = State::Closed;
+    TransportCounters counters_;
+    SendQueue queue_;
+};
+
+} // namespace stellwerk::can

@@ -1,0 +1,144 @@
+// The in-process pair: frames cross in batches, an end that goes away is waited for, pacing holds.
+
+#include "can/LoopbackTransport.h"
+
+#include "TestSupport.h"
+
+namespace stellwerk::can::test {
+namespace {
+
+using State = Transport::State;
+
+struct Pair {
+    LoopbackTransport app{QStringLiteral("app")};
+    LoopbackTransport station{QStringLiteral("station")};
+
+    Pair() { LoopbackTransport::join(app, station); }
+    void open() {
+        app.open();
+        station.open();
+    }
+};
+
+TEST(LoopbackTransport, EndsAreConnectedOnceBothAreOpen) {
+    Pair pair;
+    pair.app.open();
+    EXPECT_EQ(pair.app.state(), State::Connecting);
+    pair.station.open();
+    EXPECT_EQ(pair.app.state(), State::Connected);
+    EXPECT_EQ(pair.station.state(), State::Connected);
+    EXPECT_EQ(pair.app.description(), QStringLiteral("loopback://app"));
+}
+
+TEST(LoopbackTransport, FramesArriveOnTheOtherEndAsOneBatch) {
+    Pair pair;
+    pair.open();
+    Recorder station(pair.station);
+    for (const CanFrame& frame : numberedFrames(100))
+        EXPECT_TRUE(pair.app.send(frame));
+    EXPECT_TRUE(station.batches.empty()) << "delivery waits for the event loop";
+    ASSERT_TRUE(station.waitForFrames(100));
+    EXPECT_EQ(station.batches.size(), 1u);
+    EXPECT_EQ(station.frames(), numberedFrames(100));
+    EXPECT_EQ(pair.app.counters().framesOut, 100u);
+    EXPECT_EQ(pair.station.counters().framesIn, 100u);
+}
+
+TEST(LoopbackTransport, FramesCrossBothWays) {
+    Pair pair;
+    pair.open();
+    Recorder app(pair.app);
+    Recorder station(pair.station);
+    EXPECT_EQ(pair.app.sendBatch(numberedFrames(3)), 3u);
+    EXPECT_EQ(pair.station.sendBatch(numberedFrames(2, 10)), 2u);
+    ASSERT_TRUE(station.waitForFrames(3));
+    ASSERT_TRUE(app.waitForFrames(2));
+    EXPECT_EQ(station.frames(), numberedFrames(3));
+    EXPECT_EQ(app.frames(), numberedFrames(2, 10));
+}
+
+TEST(LoopbackTransport, SendOnAClosedEndIsRefusedAndCounted) {
+    Pair pair;
+    EXPECT_FALSE(pair.app.send(numbered(1)));
+    EXPECT_EQ(pair.app.sendBatch(numberedFrames(3)), 0u);
+    EXPECT_EQ(pair.app.counters().dropped, 4u);
+    EXPECT_EQ(pair.app.counters().framesOut, 0u);
+}
+
+TEST(LoopbackTransport, FramesSentWhileThePeerIsAwayWaitAndArriveWhenItReturns) {
+    Pair pair;
+    pair.open();
+    Recorder app(pair.app);
+    pair.station.close();
+    EXPECT_EQ(pair.app.state(), State::Reconnecting);
+    EXPECT_EQ(pair.app.sendBatch(numberedFrames(5)), 5u);
+    EXPECT_EQ(pair.app.queuedFrames(), 5u);
+    Recorder station(pair.station);
+    pair.station.open();
+    EXPECT_EQ(pair.app.state(), State::Connected);
+    ASSERT_TRUE(station.waitForFrames(5));
+    EXPECT_EQ(station.frames(), numberedFrames(5));
+    EXPECT_EQ(pair.app.counters().reconnects, 1u);
+    EXPECT_EQ(pair.app.counters().dropped, 0u);
+    EXPECT_EQ(app.states, (std::vector{State::Reconnecting, State::Connected}));
+}
+
+TEST(LoopbackTransport, QueueLimitRefusesAndCountsDropped) {
+    Pair pair;
+    pair.app.setQueueLimit(3);
+    pair.app.open();
+    EXPECT_EQ(pair.app.queueLimit(), 3u);
+    EXPECT_TRUE(pair.app.send(numbered(0)));
+    EXPECT_EQ(pair.app.sendBatch(numberedFrames(4, 1)), 2u);
+    EXPECT_FALSE(pair.app.send(numbered(5)));
+    EXPECT_EQ(pair.app.counters().dropped, 3u);
+    Recorder station(pair.station);
+    pair.station.open();
+    ASSERT_TRUE(station.waitForFrames(3));
+    EXPECT_EQ(station.frames(), numberedFrames(3));
+}
+
+TEST(LoopbackTransport, CloseDiscardsWaitingFramesAndSaysSo) {
+    Pair pair;
+    Recorder app(pair.app);
+    pair.app.open();
+    pair.app.sendBatch(numberedFrames(4));
+    pair.app.close();
+    EXPECT_EQ(pair.app.counters().dropped, 4u);
+    ASSERT_EQ(app.problems.size(), 1u);
+    EXPECT_TRUE(app.problems[0].contains(QStringLiteral("4 frame(s) not sent")))
+        << app.problems[0].toStdString();
+}
+
+TEST(LoopbackTransport, DestroyedPeerLeavesTheOtherEndWaiting) {
+    LoopbackTransport app(QStringLiteral("app"));
+    {
+        LoopbackTransport station(QStringLiteral("station"));
+        LoopbackTransport::join(app, station);
+        app.open();
+        station.open();
+    }
+    EXPECT_EQ(app.state(), State::Reconnecting);
+    EXPECT_TRUE(app.send(numbered(1)));
+    EXPECT_EQ(app.queuedFrames(), 1u);
+}
+
+// Paced frames cross one by one: each arrives in its own batch, the whole run takes at least the gaps.
+TEST(LoopbackTransport, PacingSpacesFramesAndKeepsTheirOrder) {
+    constexpr auto gap = 10ms;
+    constexpr std::size_t count = 8;
+    Pair pair;
+    pair.app.setPacing(gap);
+    EXPECT_EQ(pair.app.pacing(), gap);
+    pair.open();
+    Recorder station(pair.station);
+    EXPECT_EQ(pair.app.sendBatch(numberedFrames(count)), count);
+    ASSERT_TRUE(station.waitForFrames(count));
+    EXPECT_EQ(station.frames(), numberedFrames(count));
+    EXPECT_EQ(station.batches.size(), count);
+    const qint64 span = station.batchTimesNs.back() - station.batchTimesNs.front();
+    EXPECT_GE(span, std::chrono::nanoseconds(gap).count() * qint64(count - 1) * 8 / 10);
+}
+
+} // namespace
+} // namespace stellwerk::can::test
