@@ -1,0 +1,94 @@
+#include "station/StationSession.h"
+
+#include "cs2/Codec.h"
+
+namespace stellwerk::station {
+
+StationSession::StationSession(can::Transport& transport, StationSettings settings, QObject* parent)
+    : QObject(parent), transport_(transport), settings_(settings), identity_(settings.uid),
+      tracker_(new CommandTracker([this](std::span<const cs2::CanFrame> f) { return sendFrames(f); }, this)),
+      download_(new ConfigDownload(
+          *tracker_, [this] { return identity_.hash(); }, this)),
+      statusData_(new StatusDataReader(*tracker_, this)), liveness_(new Liveness([this] { ping(); }, this)) {
+    download_->setRequestPolicy(settings_.commands);
+    download_->setIdleTimeout(settings_.streamIdle);
+    liveness_->setSettings(settings_.liveness);
+    connect(&transport_, &can::Transport::framesReceived, this, &StationSession::receive);
+}
+
+StationSession::~StationSession() {
+    disconnect(&transport_, nullptr, this, nullptr);
+}
+
+bool StationSession::send(const cs2::Message& message) {
+    const cs2::CanFrame frame = cs2::encode(message);
+    return sendFrames({&frame, 1});
+}
+
+bool StationSession::sendFrames(std::span<const cs2::CanFrame> frames) {
+    if (frames.size() == 1)
+        return transport_.send(identity_.stamp(frames.front()));
+    std::vector<cs2::CanFrame> stamped;
+    stamped.reserve(frames.size());
+    for (const auto& frame : frames)
+        stamped.push_back(identity_.stamp(frame));
+    return transport_.sendBatch(stamped) == stamped.size();
+}
+
+CommandId StationSession::request(const cs2::Message& command, CommandCallback done,
+                                  std::optional<CommandPolicy> policy) {
+    return tracker_->send(command, std::move(done), policy.value_or(settings_.commands));
+}
+
+void StationSession::ping() {
+    send(cs2::Message{0, false, 0, cs2::Ping{}});
+}
+
+void StationSession::receive(const std::vector<cs2::CanFrame>& frames) {
+    for (const auto& frame : frames)
+        receiveFrame(frame);
+    download_->flushProgress();
+    if (events_.hasUpdates()) {
+        emit updated(events_.updates());
+        events_.clear();
+    }
+}
+
+void StationSession::receiveFrame(const cs2::CanFrame& frame) {
+    ++counters_.frames;
+    if (const auto newHash = identity_.observe(frame)) {
+        ++counters_.hashCollisions;
+        emit hashChanged(frame.hash(), *newHash);
+    }
+    const auto decoded = cs2::decode(frame);
+    if (!decoded) {
+        ++counters_.undecodable;
+        download_->feed(frame); // a broken 0x21 frame aborts the stream it belongs to
+        return;
+    }
+    route(*decoded, frame);
+}
+
+void StationSession::route(const cs2::Message& message, const cs2::CanFrame& frame) {
+    if (const auto* stream = std::get_if<cs2::ConfigDataStream>(&message.body)) {
+        download_->feed(frame);
+        if (stream->form == cs2::ConfigDataStream::Form::BroadcastHeader)
+            events_.observe(message);
+        return;
+    }
+    if (const auto* status = std::get_if<cs2::StatusDataConfig>(&message.body);
+        status && status->form == cs2::StatusDataConfig::Form::Packet) {
+        statusData_->feedPacket(*status, frame.hash());
+        return;
+    }
+    if (const auto* ping = std::get_if<cs2::Ping>(&message.body);
+        ping && ping->identity && message.response) {
+        directory_.record(*ping->identity);
+        liveness_->answered(*ping->identity);
+    }
+    if (message.response && tracker_->offer(message))
+        ++counters_.answersMatched;
+    events_.observe(message);
+}
+
+} // namespace stellwerk::station

@@ -1,0 +1,90 @@
+#pragma once
+
+#include "can/Transport.h"
+#include "station/CommandTracker.h"
+#include "station/ConfigDownload.h"
+#include "station/DeviceDirectory.h"
+#include "station/Liveness.h"
+#include "station/StationIdentity.h"
+#include "station/StationUpdates.h"
+#include "station/StatusDataReader.h"
+
+#include <QObject>
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace stellwerk::station {
+
+// The settings of one station session; the defaults suit a CS2 on a LAN.
+struct StationSettings {
+    std::optional<std::uint32_t> uid; // random when not given
+    CommandPolicy commands{};
+    LivenessSettings liveness{};
+    std::chrono::milliseconds streamIdle{2000};
+};
+
+// What a session has seen since it started, for the status bar and tests.
+struct SessionCounters {
+    std::uint64_t frames = 0;
+    std::uint64_t undecodable = 0;
+    std::uint64_t answersMatched = 0;
+    std::uint64_t hashCollisions = 0;
+};
+
+// One connected command station: the only place that knows the conversation rules. Sends with our
+// hash, tracks acknowledgements, watches liveness, downloads files, and turns every frame on the bus
+// (ours and other controllers') into batched StationUpdates.
+class StationSession final : public QObject {
+    Q_OBJECT
+
+public:
+    explicit StationSession(can::Transport& transport, StationSettings settings = {},
+                            QObject* parent = nullptr);
+    ~StationSession() override;
+
+    const StationIdentity& identity() const { return identity_; }
+    CommandTracker& tracker() { return *tracker_; }
+    ConfigDownload& downloads() { return *download_; }
+    StatusDataReader& statusData() { return *statusData_; }
+    Liveness& liveness() { return *liveness_; }
+    DeviceDirectory& devices() { return directory_; }
+    const DeviceDirectory& devices() const { return directory_; }
+    const SessionCounters& counters() const { return counters_; }
+    can::Transport& transport() { return transport_; }
+
+    // Sends without waiting for an answer (ping, bootloader "go", commands nobody acknowledges).
+    bool send(const cs2::Message& message);
+    // Frames as they are, with our hash written in.
+    bool sendFrames(std::span<const cs2::CanFrame> frames);
+    // Sends and tracks the acknowledgement with the session's default policy (or the given one).
+    CommandId request(const cs2::Message& command, CommandCallback done,
+                      std::optional<CommandPolicy> policy = std::nullopt);
+    void ping();
+
+signals:
+    // Everything the last batch of frames changed (never emitted empty).
+    void updated(const stellwerk::station::StationUpdates& updates);
+    // Another sender used our hash; we now use `newHash`.
+    void hashChanged(std::uint16_t oldHash, std::uint16_t newHash);
+
+private:
+    void receive(const std::vector<cs2::CanFrame>& frames);
+    void receiveFrame(const cs2::CanFrame& frame);
+    void route(const cs2::Message& message, const cs2::CanFrame& frame);
+
+    can::Transport& transport_;
+    StationSettings settings_;
+    StationIdentity identity_;
+    CommandTracker* tracker_;
+    ConfigDownload* download_;
+    StatusDataReader* statusData_;
+    Liveness* liveness_;
+    DeviceDirectory directory_;
+    StationEventCollector events_;
+    SessionCounters counters_;
+};
+
+} // namespace stellwerk::station
