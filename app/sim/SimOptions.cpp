@@ -1,0 +1,118 @@
+#include "SimOptions.h"
+
+#include <QCommandLineParser>
+
+namespace stellwerk::simapp {
+
+namespace {
+
+struct Parser {
+    QCommandLineParser parser;
+    QCommandLineOption listen{"listen",
+                              "Address to listen on (default 127.0.0.1; 0.0.0.0 for the whole network).",
+                              "address", "127.0.0.1"};
+    QCommandLineOption udpPort{"udp-port", "UDP port frames are received on (default 15731).", "port",
+                               "15731"};
+    QCommandLineOption udpReplyHost{
+        "udp-reply-host",
+        "Where UDP frames are sent (default 127.0.0.1; 255.255.255.255 broadcasts like a CS2).", "address",
+        "127.0.0.1"};
+    QCommandLineOption udpReplyPort{"udp-reply-port", "Port UDP frames are sent to (default 15730).", "port",
+                                    "15730"};
+    QCommandLineOption tcpPort{"tcp-port", "TCP port for 13-byte frame streams (default 15731).", "port",
+                               "15731"};
+    QCommandLineOption httpPort{"http-port", "HTTP port serving /config/<file> (default 8080; 0: none).",
+                                "port", "8080"};
+    QCommandLineOption can{"can",
+                           "Also put the frames on a CAN interface (plugin:interface, e.g. socketcan:can0).",
+                           "plugin:interface"};
+    QCommandLineOption layout{"layout", "A CS2 config folder to serve instead of the demo layout.", "dir"};
+    QCommandLineOption gleisbox{"gleisbox", "Also answer as a Gleisbox on the bus."};
+    QCommandLineOption noTrains{"no-trains", "Locomotives do not move (no S88 events)."};
+    QCommandLineOption tick{"tick", "Train movement step in milliseconds (default 100).", "ms", "100"};
+
+    Parser() {
+        parser.setApplicationDescription(
+            "A simulated Märklin Central Station 2 on UDP, TCP, HTTP and optionally CAN.");
+        parser.addHelpOption();
+        parser.addOptions({listen, udpPort, udpReplyHost, udpReplyPort, tcpPort, httpPort, can, layout,
+                           gleisbox, noTrains, tick});
+    }
+};
+
+std::optional<std::uint16_t> port(const QString& text) {
+    bool ok = false;
+    const uint value = text.toUInt(&ok);
+    return ok && value <= 65535 ? std::optional<std::uint16_t>(std::uint16_t(value)) : std::nullopt;
+}
+
+ParsedOptions failure(const QString& message) {
+    return {std::nullopt, message, true};
+}
+
+// Reads the numbers and addresses; the first one that does not parse is the error.
+std::optional<QString> readNetwork(const Parser& p, SimOptions& options) {
+    const auto readPort = [&p](const QCommandLineOption& option,
+                               std::uint16_t& target) -> std::optional<QString> {
+        const std::optional<std::uint16_t> value = port(p.parser.value(option));
+        if (!value)
+            return "--" + option.names().front() + ": '" + p.parser.value(option) + "' is not a port number";
+        target = *value;
+        return std::nullopt;
+    };
+    const auto readAddress = [&p](const QCommandLineOption& option,
+                                  QHostAddress& target) -> std::optional<QString> {
+        if (!target.setAddress(p.parser.value(option)))
+            return "--" + option.names().front() + ": '" + p.parser.value(option) + "' is not an IP address";
+        return std::nullopt;
+    };
+    for (auto problem :
+         {readAddress(p.listen, options.server.listenAddress),
+          readAddress(p.udpReplyHost, options.server.udpReplyHost),
+          readPort(p.udpPort, options.server.udpPort), readPort(p.udpReplyPort, options.server.udpReplyPort),
+          readPort(p.tcpPort, options.server.tcpPort), readPort(p.httpPort, options.httpPort)})
+        if (problem)
+            return problem;
+    if (options.server.udpReplyPort == 0)
+        return QString("--udp-reply-port: frames cannot be sent to port 0");
+    return std::nullopt;
+}
+
+std::optional<QString> readCan(const Parser& p, SimOptions& options) {
+    if (!p.parser.isSet(p.can))
+        return std::nullopt;
+    const QString text = p.parser.value(p.can);
+    const qsizetype colon = text.indexOf(':');
+    if (colon <= 0 || colon == text.size() - 1)
+        return "--can: '" + text + "' is not plugin:interface (e.g. socketcan:can0)";
+    options.server.canBus = can::CanBusSettings{text.left(colon), text.mid(colon + 1), std::nullopt, {}};
+    return std::nullopt;
+}
+
+} // namespace
+
+ParsedOptions parseSimOptions(const QStringList& arguments) {
+    Parser p;
+    if (!p.parser.parse(arguments))
+        return failure(p.parser.errorText());
+    if (p.parser.isSet("help"))
+        return {std::nullopt, p.parser.helpText(), false};
+    if (!p.parser.positionalArguments().isEmpty())
+        return failure("unexpected argument '" + p.parser.positionalArguments().front() + "'");
+    SimOptions options;
+    if (const auto problem = readNetwork(p, options))
+        return failure(*problem);
+    if (const auto problem = readCan(p, options))
+        return failure(*problem);
+    bool ok = false;
+    const int tick = p.parser.value(p.tick).toInt(&ok);
+    if (!ok || tick < 1 || tick > 10000)
+        return failure("--tick: '" + p.parser.value(p.tick) + "' is not 1..10000 milliseconds");
+    options.tick = std::chrono::milliseconds(tick);
+    options.layoutDirectory = p.parser.value(p.layout);
+    options.gleisbox = p.parser.isSet(p.gleisbox);
+    options.trains = !p.parser.isSet(p.noTrains);
+    return {std::move(options), {}, false};
+}
+
+} // namespace stellwerk::simapp

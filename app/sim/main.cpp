@@ -1,0 +1,124 @@
+// stellwerk-sim: the simulated CS2 as a process, for other programs (and Stellwerk itself) to talk to
+// over UDP, TCP, HTTP and optionally a CAN interface.
+
+#include "ShutdownSignal.h"
+#include "SimOptions.h"
+#include "sim/HttpConfigServer.h"
+#include "sim/SimulatedStation.h"
+#include "sim/StationLayout.h"
+#include "sim/StationServer.h"
+#include "sim/TrainMovement.h"
+#include "sim/TrainTrack.h"
+
+#include <QCoreApplication>
+#include <QTextStream>
+#include <memory>
+#include <optional>
+
+namespace {
+
+using namespace stellwerk;
+
+QTextStream& out() {
+    static QTextStream stream(stdout);
+    return stream;
+}
+
+QTextStream& err() {
+    static QTextStream stream(stderr);
+    return stream;
+}
+
+std::optional<sim::StationLayout> loadLayout(const simapp::SimOptions& options) {
+    if (options.layoutDirectory.isEmpty())
+        return sim::StationLayout::demo();
+    cs2config::Diagnostics diagnostics(options.layoutDirectory.toStdString());
+    sim::StationLayout layout = sim::StationLayout::load(options.layoutDirectory.toStdString(), diagnostics);
+    for (const std::string& line : layout.diagnostics())
+        err() << QString::fromStdString(line) << Qt::endl;
+    if (layout.files().empty()) {
+        err() << "stellwerk-sim: no configuration files in " << options.layoutDirectory << Qt::endl;
+        return std::nullopt;
+    }
+    return layout;
+}
+
+sim::TrainTrack trackFor(const simapp::SimOptions& options, const sim::StationLayout& layout) {
+    if (options.layoutDirectory.isEmpty())
+        return sim::TrainTrack::demo();
+    std::vector<std::uint32_t> locIds;
+    for (const cs2config::Locomotive& loco : layout.locomotives().locomotives)
+        if (loco.uid != 0) // the placeholder record some stations write first
+            locIds.push_back(loco.uid);
+    return sim::TrainTrack::loopOfContacts(layout.trackPlan(), locIds);
+}
+
+// Everything the running simulator owns, torn down in reverse order when the event loop ends.
+struct Simulator {
+    std::unique_ptr<sim::SimulatedStation> station;
+    std::unique_ptr<sim::StationServer> server;
+    std::unique_ptr<sim::HttpConfigServer> http;
+    std::unique_ptr<sim::TrainMovement> trains;
+};
+
+bool start(Simulator& simulator, const simapp::SimOptions& options, sim::StationLayout layout) {
+    sim::SimulatedStation::Options stationOptions;
+    stationOptions.gleisbox = options.gleisbox;
+    simulator.station = std::make_unique<sim::SimulatedStation>(std::move(layout), stationOptions);
+    simulator.server = std::make_unique<sim::StationServer>(*simulator.station, options.server);
+    QObject::connect(simulator.server.get(), &sim::StationServer::problem,
+                     [](const QString& message) { err() << "stellwerk-sim: " << message << Qt::endl; });
+    if (!simulator.server->listen()) {
+        err() << "stellwerk-sim: " << simulator.server->errorString() << Qt::endl;
+        return false;
+    }
+    for (const QString& listener : simulator.server->listeners())
+        out() << "listening: " << listener << Qt::endl;
+    if (options.httpPort != 0) {
+        const sim::SimulatedStation* station = simulator.station.get();
+        simulator.http = std::make_unique<sim::HttpConfigServer>(
+            [station](std::string_view path) { return station->layout().fileForPath(path); });
+        if (!simulator.http->listen(options.server.listenAddress, options.httpPort)) {
+            err() << "stellwerk-sim: HTTP port " << options.httpPort << ": " << simulator.http->errorString()
+                  << Qt::endl;
+            return false;
+        }
+        out() << "listening: http://" << options.server.listenAddress.toString() << ':'
+              << simulator.http->port() << "/config/" << Qt::endl;
+    }
+    if (options.trains) {
+        sim::TrainMovement::Options movement;
+        movement.tick = options.tick;
+        simulator.trains = std::make_unique<sim::TrainMovement>(
+            *simulator.station, trackFor(options, simulator.station->layout()), movement);
+        simulator.trains->start();
+        out() << "trains: " << simulator.trains->track().placements.size() << " on "
+              << simulator.trains->track().sections.size() << " feedback sections" << Qt::endl;
+    }
+    return true;
+}
+
+} // namespace
+
+int main(int argc, char* argv[]) {
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName("stellwerk-sim");
+    const simapp::ParsedOptions parsed = simapp::parseSimOptions(QCoreApplication::arguments());
+    if (!parsed.options) {
+        (parsed.error ? err() : out()) << parsed.message << Qt::endl;
+        return parsed.error ? 2 : 0;
+    }
+    std::optional<sim::StationLayout> layout = loadLayout(*parsed.options);
+    if (!layout)
+        return 1;
+    Simulator simulator;
+    if (!start(simulator, *parsed.options, std::move(*layout)))
+        return 1;
+    simapp::ShutdownSignal shutdown;
+    QObject::connect(&shutdown, &simapp::ShutdownSignal::requested, &app, [] {
+        out() << "stopping" << Qt::endl;
+        QCoreApplication::quit();
+    });
+    out() << "press Ctrl-C to stop" << Qt::endl;
+    return QCoreApplication::exec();
+}

@@ -1,0 +1,171 @@
+#include "sim/StationServer.h"
+
+#include "can/CanBusTransport.h"
+#include "can/NetworkFraming.h"
+#include "sim/SimulatedStation.h"
+
+#include <QLoggingCategory>
+#include <QNetworkDatagram>
+#include <QTcpServer>
+#include <QTcpSocket>
+#include <QUdpSocket>
+
+namespace stellwerk::sim {
+
+namespace {
+
+Q_LOGGING_CATEGORY(serverLog, "stellwerk.sim.server")
+
+QString endpoint(const QHostAddress& address, std::uint16_t port) {
+    return address.toString() + ':' + QString::number(port);
+}
+
+} // namespace
+
+StationServer::StationServer(SimulatedStation& station, StationServerSettings settings, QObject* parent)
+    : QObject(parent), station_(station), settings_(std::move(settings)) {
+    connect(&station_, &SimulatedStation::framesEmitted, this,
+            [this](const std::vector<cs2::CanFrame>& frames) {
+                counters_.framesOut += frames.size();
+                broadcast(frames, std::nullopt);
+            });
+}
+
+StationServer::~StationServer() {
+    for (auto& [socket, assembler] : clients_)
+        socket->disconnect(this); // closing them must not call back into a half-destroyed server
+}
+
+bool StationServer::listen() {
+    if (settings_.udp && !listenUdp())
+        return false;
+    if (settings_.tcp && !listenTcp())
+        return false;
+    if (settings_.canBus)
+        openCanBus();
+    return true;
+}
+
+bool StationServer::listenUdp() {
+    udp_ = new QUdpSocket(this);
+    if (!udp_->bind(settings_.listenAddress, settings_.udpPort)) {
+        error_ = "UDP port " + QString::number(settings_.udpPort) + ": " + udp_->errorString();
+        return false;
+    }
+    connect(udp_, &QUdpSocket::readyRead, this, &StationServer::readDatagrams);
+    return true;
+}
+
+bool StationServer::listenTcp() {
+    tcp_ = new QTcpServer(this);
+    if (!tcp_->listen(settings_.listenAddress, settings_.tcpPort)) {
+        error_ = "TCP port " + QString::number(settings_.tcpPort) + ": " + tcp_->errorString();
+        return false;
+    }
+    connect(tcp_, &QTcpServer::newConnection, this, &StationServer::acceptClients);
+    return true;
+}
+
+void StationServer::openCanBus() {
+    canBus_ = new can::CanBusTransport(*settings_.canBus, this);
+    connect(canBus_, &can::Transport::framesReceived, this,
+            [this](const std::vector<cs2::CanFrame>& frames) { received(frames, {Origin::Kind::Can}); });
+    connect(canBus_, &can::Transport::problem, this, &StationServer::problem);
+    canBus_->open();
+}
+
+std::uint16_t StationServer::udpPort() const {
+    return udp_ ? udp_->localPort() : 0;
+}
+
+std::uint16_t StationServer::tcpPort() const {
+    return tcp_ ? tcp_->serverPort() : 0;
+}
+
+QStringList StationServer::listeners() const {
+    QStringList result;
+    if (udp_)
+        result << "udp " + endpoint(settings_.listenAddress, udpPort()) + " -> " +
+                      endpoint(settings_.udpReplyHost, settings_.udpReplyPort);
+    if (tcp_)
+        result << "tcp " + endpoint(settings_.listenAddress, tcpPort());
+    if (canBus_)
+        result << "can " + canBus_->description();
+    return result;
+}
+
+// A CS2 takes datagrams of n x 13 bytes; anything else is counted and dropped.
+void StationServer::readDatagrams() {
+    while (udp_->hasPendingDatagrams()) {
+        const QNetworkDatagram datagram = udp_->receiveDatagram();
+        std::vector<cs2::CanFrame> frames;
+        const can::DatagramContent content = can::decodeDatagram(can::asBytes(datagram.data()), frames);
+        if (!content.wholeFrames) {
+            ++counters_.malformedDatagrams;
+            qCInfo(serverLog) << "dropped a UDP datagram of" << datagram.data().size() << "bytes from"
+                              << datagram.senderAddress().toString() << "(not n x 13 bytes)";
+        }
+        counters_.malformedFrames += content.malformed;
+        received(frames, {Origin::Kind::Udp});
+    }
+}
+
+void StationServer::acceptClients() {
+    while (QTcpSocket* socket = tcp_->nextPendingConnection()) {
+        clients_.emplace(socket, can::FrameAssembler{});
+        ++counters_.tcpConnections;
+        connect(socket, &QTcpSocket::readyRead, this, [this, socket] { readClient(socket); });
+        connect(socket, &QTcpSocket::disconnected, this, [this, socket] { dropClient(socket); });
+        emit tcpClientsChanged(int(clients_.size()));
+    }
+}
+
+// TCP is a byte stream: the client's assembler cuts it into frames whatever the segmentation.
+void StationServer::readClient(QTcpSocket* socket) {
+    const auto client = clients_.find(socket);
+    if (client == clients_.end())
+        return;
+    const QByteArray bytes = socket->readAll();
+    std::vector<cs2::CanFrame> frames;
+    counters_.malformedFrames += client->second.feed(can::asBytes(bytes), frames);
+    received(frames, {Origin::Kind::Tcp, socket});
+}
+
+void StationServer::dropClient(QTcpSocket* socket) {
+    if (clients_.erase(socket) == 0)
+        return;
+    socket->deleteLater();
+    emit tcpClientsChanged(int(clients_.size()));
+}
+
+void StationServer::received(const std::vector<cs2::CanFrame>& frames, Origin origin) {
+    if (frames.empty())
+        return;
+    counters_.framesIn += frames.size();
+    broadcast(frames, origin);
+    for (const cs2::CanFrame& frame : frames)
+        station_.receive(frame);
+}
+
+void StationServer::broadcast(std::span<const cs2::CanFrame> frames, const std::optional<Origin>& except) {
+    const auto from = [&except](Origin::Kind kind) { return except && except->kind == kind; };
+    if (udp_ && !from(Origin::Kind::Udp))
+        sendUdp(frames);
+    if (canBus_ && !from(Origin::Kind::Can))
+        canBus_->sendBatch(frames);
+    if (clients_.empty())
+        return;
+    const QByteArray bytes = can::encodeFrames(frames);
+    for (auto& [socket, assembler] : clients_)
+        if (!except || except->socket != socket)
+            socket->write(bytes);
+}
+
+// One frame per datagram, as a CS2 sends them.
+void StationServer::sendUdp(std::span<const cs2::CanFrame> frames) {
+    for (const cs2::CanFrame& frame : frames)
+        udp_->writeDatagram(can::encodeFrames(std::span(&frame, 1)), settings_.udpReplyHost,
+                            settings_.udpReplyPort);
+}
+
+} // namespace stellwerk::sim

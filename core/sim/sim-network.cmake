@@ -1,0 +1,28 @@
+# The simulated CS2's world and network side (core/sim): moving trains, the UDP/TCP/HTTP servers and
+# the demo layout embedded as the Qt resource :/demo-layout/config/.
+target_sources(stellwerk-core PRIVATE
+    sim/DemoLayoutTrack.cpp
+    sim/HttpConfigServer.cpp
+    sim/HttpConfigServer.h
+    sim/StationServer.cpp
+    sim/StationServer.h
+    sim/TrainMovement.cpp
+    sim/TrainMovement.h
+    sim/TrainTrack.cpp
+)
+
+# A static library's resources become an object library that CMake links into every executable using
+# stellwerk-core, so no Q_INIT_RESOURCE is needed (tests/core/simnet checks that the files are there).
+set(demo_layout_dir ${PROJECT_SOURCE_DIR}/resources/demo-layout)
+qt_add_resources(stellwerk-core demo_layout
+    PREFIX /demo-layout
+    BASE ${demo_layout_dir}
+    FILES
+        ${demo_layout_dir}/config/fahrstrassen.cs2
+        ${demo_layout_dir}/config/gleisbild.cs2
+        ${demo_layout_dir}/config/gleisbilder/Bahnhof.cs2
+        ${demo_layout_dir}/config/gleisbilder/Bw.cs2
+        ${demo_layout_dir}/config/gleisbilder/Strecke.cs2
+        ${demo_layout_dir}/config/lokomotive.cs2
+        ${demo_layout_dir}/config/magnetartikel.cs2
+)
