@@ -1,0 +1,92 @@
+#include "model/Device.h"
+
+#include <algorithm>
+#include <charconv>
+
+namespace stellwerk::model {
+namespace {
+
+double labelValue(const std::string& label) {
+    double value = 0;
+    std::from_chars(label.data(), label.data() + label.size(), value);
+    return value;
+}
+
+} // namespace
+
+StatusChannel::StatusChannel(station::ReadingChannel description) : description_(std::move(description)) {}
+
+double StatusChannel::minimum() const {
+    return labelValue(description_.startLabel);
+}
+
+double StatusChannel::maximum() const {
+    return labelValue(description_.endLabel);
+}
+
+std::optional<double> StatusChannel::value() const {
+    if (!raw_)
+        return std::nullopt;
+    return description_.scaled(*raw_);
+}
+
+QString StatusChannel::text() const {
+    const auto v = value();
+    if (!v)
+        return QStringLiteral("–");
+    return QStringLiteral("%1 %2").arg(QString::number(*v, 'f', decimals()), unit()).trimmed();
+}
+
+bool StatusChannel::confirm(std::uint16_t raw, const QDateTime& now) {
+    updated_ = now;
+    const bool changed = raw_ != raw || stale_;
+    raw_ = raw;
+    stale_ = false;
+    return changed;
+}
+
+bool StatusChannel::markStale() {
+    if (stale_)
+        return false;
+    stale_ = true;
+    return true;
+}
+
+Device::Device(const cs2::DeviceIdentity& identity) : identity_(identity) {}
+
+Device::Device(const station::DeviceDescription& description)
+    : identity_(description.identity), summary_(description.summary),
+      described_(description.summary.has_value()) {
+    for (const station::ReadingChannel& reading : description.readings)
+        channels_.emplace_back(reading);
+}
+
+QString Device::typeName() const {
+    const auto name = cs2::deviceTypeName(identity_.deviceType);
+    return QString::fromUtf8(name.data(), qsizetype(name.size()));
+}
+
+QString Device::name() const {
+    if (summary_ && !summary_->name.empty())
+        return QString::fromStdString(summary_->name);
+    return typeName();
+}
+
+QString Device::article() const {
+    return summary_ ? QString::fromStdString(summary_->article) : QString();
+}
+
+QString Device::version() const {
+    return QStringLiteral("%1.%2").arg(identity_.versionMajor).arg(identity_.versionMinor);
+}
+
+StatusChannel* Device::channel(std::uint8_t number) {
+    const auto it = std::ranges::find(channels_, number, &StatusChannel::channel);
+    return it == channels_.end() ? nullptr : &*it;
+}
+
+const StatusChannel* Device::channel(std::uint8_t number) const {
+    return const_cast<Device*>(this)->channel(number);
+}
+
+} // namespace stellwerk::model

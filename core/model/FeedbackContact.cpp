@@ -1,0 +1,17 @@
+#include "model/FeedbackContact.h"
+
+namespace stellwerk::model {
+
+FeedbackContact::FeedbackContact(std::uint16_t device, std::uint16_t contact, QString name)
+    : device_(device), contact_(contact), name_(std::move(name)) {}
+
+bool FeedbackContact::confirm(bool occupied, const QDateTime& now) {
+    if (known_ && occupied == occupied_)
+        return false;
+    lastChange_ = now;
+    occupied_ = occupied;
+    known_ = true;
+    return true;
+}
+
+} // namespace stellwerk::model

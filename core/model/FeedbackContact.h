@@ -1,0 +1,46 @@
+#pragma once
+
+#include <QDateTime>
+#include <QString>
+#include <cstdint>
+
+namespace stellwerk::model {
+
+// A contact's identity on the bus: feedback device id (high 16 bits) and contact number (document 5).
+using ContactKey = std::uint32_t;
+
+constexpr ContactKey contactKey(std::uint16_t device, std::uint16_t contact) {
+    return ContactKey(device) << 16 | contact;
+}
+
+// An S88 feedback contact: whether a train occupies it and since when, as the bus last reported.
+class FeedbackContact {
+public:
+    FeedbackContact() = default;
+    FeedbackContact(std::uint16_t device, std::uint16_t contact, QString name = {});
+
+    ContactKey key() const { return contactKey(device_, contact_); }
+    std::uint16_t device() const { return device_; }
+    std::uint16_t contact() const { return contact_; }
+    const QString& name() const { return name_; }
+    void setName(const QString& name) { name_ = name; }
+
+    bool occupied() const { return occupied_; }
+    // False until the bus reported the contact (answer to the start-up query or an event).
+    bool known() const { return known_; }
+    // When the state last changed (local clock); invalid before the first change.
+    const QDateTime& lastChange() const { return lastChange_; }
+
+    // Returns true when the state or its knownness changed.
+    bool confirm(bool occupied, const QDateTime& now);
+
+private:
+    std::uint16_t device_ = 0;
+    std::uint16_t contact_ = 0;
+    QString name_;
+    bool occupied_ = false;
+    bool known_ = false;
+    QDateTime lastChange_;
+};
+
+} // namespace stellwerk::model

@@ -1,0 +1,174 @@
+#include "model/Railway.h"
+
+#include "model/CommandProblem.h"
+#include "station/StationSession.h"
+
+#include <QPointer>
+#include <algorithm>
+
+namespace stellwerk::model {
+namespace {
+
+template <class Key, class Out = Key>
+QList<Out> toList(const ChangedKeys<Key>& keys) {
+    QList<Out> list;
+    list.reserve(qsizetype(keys.keys().size()));
+    for (const Key& key : keys.keys())
+        list.push_back(Out(key));
+    return list;
+}
+
+} // namespace
+
+Railway::Railway(station::StationSession& session, QObject* parent)
+    : QObject(parent), session_(session), poller_(new ReadingPoller(session, this)) {
+    connect(&session_, &station::StationSession::updated, this, &Railway::apply);
+    connect(poller_, &ReadingPoller::readingMissed, this, &Railway::readingMissed);
+}
+
+Railway::Railway(station::StationSession& session, const station::StartupResult& startup, QObject* parent)
+    : Railway(session, parent) {
+    load(startup);
+}
+
+Railway::~Railway() {
+    for (auto& [id, runner] : runners_)
+        runner->disconnect(this);
+}
+
+void Railway::load(const station::StartupResult& startup) {
+    state_.load(startup);
+    updatePollerSources();
+    if (!poller_->sources().empty())
+        poller_->start();
+    emit loaded();
+}
+
+void Railway::updatePollerSources() {
+    std::vector<ReadingSource> sources;
+    for (const Device& device : state_.devices().items())
+        for (const StatusChannel& channel : device.channels())
+            sources.push_back({device.uid(), channel.channel()});
+    poller_->setSources(std::move(sources));
+}
+
+void Railway::apply(const station::StationUpdates& updates) {
+    const RailwayChanges changes = state_.apply(updates, QDateTime::currentDateTime());
+    announce(changes);
+}
+
+void Railway::announce(const RailwayChanges& changes) {
+    if (!changes.locomotives.empty())
+        emit locomotivesChanged(toList<std::uint32_t, quint32>(changes.locomotives));
+    if (!changes.accessories.empty())
+        emit accessoriesChanged(toList<std::int64_t, qint64>(changes.accessories));
+    if (!changes.contacts.empty())
+        emit contactsChanged(toList<ContactKey, quint32>(changes.contacts));
+    announceTiles(changes);
+    if (!changes.devices.empty())
+        emit devicesChanged(toList<std::uint32_t, quint32>(changes.devices));
+    if (changes.power)
+        emit powerChanged(*changes.power);
+    if (changes.configurationChanged)
+        emit configurationChanged();
+    for (const station::OverloadReport& overload : changes.overloads) {
+        emit overloaded(overload.device, overload.channel);
+        const Device* device = state_.devices().find(overload.device);
+        emit problem(QStringLiteral("Overload on %1 (channel %2): the track power is off")
+                         .arg(device ? device->name()
+                                     : QStringLiteral("0x%1").arg(overload.device, 8, 16, QLatin1Char('0')))
+                         .arg(overload.channel));
+    }
+}
+
+void Railway::announceTiles(const RailwayChanges& changes) {
+    QList<TileRef> tiles;
+    for (const std::int64_t id : changes.accessories.keys())
+        for (const TileRef& tile : layout().tilesOfAccessory(id))
+            tiles.push_back(tile);
+    for (const ContactKey key : changes.contacts.keys())
+        for (const TileRef& tile : layout().tilesOfContact(key))
+            tiles.push_back(tile);
+    if (!tiles.isEmpty())
+        emit tilesChanged(tiles);
+}
+
+void Railway::readingMissed(quint32 uid, quint8 number) {
+    Device* device = state_.devices().find(uid);
+    StatusChannel* channel = device ? device->channel(number) : nullptr;
+    if (channel && channel->markStale())
+        emit devicesChanged({uid});
+}
+
+void Railway::command(const cs2::Message& message, const QString& what, std::function<void()> done) {
+    QPointer<Railway> self(this);
+    session_.request(message, [self, what, done = std::move(done)](const station::CommandResult& result) {
+        if (!self)
+            return;
+        if (!result.succeeded())
+            emit self->problem(commandProblem(what, result));
+        else if (done)
+            done();
+    });
+}
+
+QString Railway::locoName(std::uint32_t loco) const {
+    const Locomotive* found = locomotive(loco);
+    return found ? found->displayName() : Locomotive(cs2::LocId(loco)).displayName();
+}
+
+void Railway::setSpeed(std::uint32_t loco, int speed) {
+    const auto value = std::uint16_t(std::clamp(speed, 0, int(Locomotive::MaxSpeed)));
+    command({0, false, 0, cs2::LocoSpeed{cs2::LocId(loco), value}},
+            QStringLiteral("%1: speed %2").arg(locoName(loco)).arg(value));
+}
+
+void Railway::setDirection(std::uint32_t loco, cs2::Direction direction) {
+    const QString what =
+        QStringLiteral("%1: direction %2")
+            .arg(locoName(loco), direction == cs2::Direction::Backward ? QStringLiteral("backward")
+                                                                       : QStringLiteral("forward"));
+    QPointer<Railway> self(this);
+    command({0, false, 0, cs2::LocoDirection{cs2::LocId(loco), std::uint8_t(direction)}}, what,
+            [self, loco, direction] {
+                // The station stopped the locomotive and will not say so (field notes).
+                if (self && self->state_.locomotives().find(loco) &&
+                    self->state_.locomotives().find(loco)->directionSet(direction))
+                    emit self->locomotivesChanged({loco});
+            });
+}
+
+void Railway::reverse(std::uint32_t loco) {
+    const Locomotive* found = locomotive(loco);
+    const bool forward = !found || found->direction() == cs2::Direction::Forward;
+    setDirection(loco, forward ? cs2::Direction::Backward : cs2::Direction::Forward);
+}
+
+void Railway::setFunction(std::uint32_t loco, int function, bool on) {
+    if (function < 0 || function >= Locomotive::MaxFunctions) {
+        emit problem(QStringLiteral("%1: there is no function F%2").arg(locoName(loco)).arg(function));
+        return;
+    }
+    command({0, false, 0, cs2::LocoFunction{cs2::LocId(loco), std::uint8_t(function), std::uint8_t(on), {}}},
+            QStringLiteral("%1: F%2 %3").arg(locoName(loco)).arg(function).arg(on ? "on" : "off"));
+}
+
+void Railway::toggleFunction(std::uint32_t loco, int function) {
+    const Locomotive* found = locomotive(loco);
+    setFunction(loco, function, !(found && found->functionOn(function)));
+}
+
+void Railway::emergencyStop(std::uint32_t loco) {
+    command({0, false, 0, cs2::LocoEmergencyStop{cs2::LocId(loco)}},
+            QStringLiteral("%1: emergency stop").arg(locoName(loco)));
+}
+
+void Railway::stop() {
+    command({0, false, 0, cs2::SystemStop{0}}, QStringLiteral("Stop (track power off)"));
+}
+
+void Railway::go() {
+    command({0, false, 0, cs2::SystemGo{0}}, QStringLiteral("Go (track power on)"));
+}
+
+} // namespace stellwerk::model

@@ -1,0 +1,101 @@
+#pragma once
+
+#include "model/RailwayState.h"
+#include "model/ReadingPoller.h"
+#include "model/RouteRunner.h"
+
+#include <QList>
+#include <QObject>
+#include <QString>
+#include <cstdint>
+#include <map>
+
+namespace stellwerk::station {
+class StationSession;
+}
+
+namespace stellwerk::model {
+
+// The railway as the UI sees it: locomotives, accessories, contacts, routes, track plan pages and
+// devices, and the intents a person has (drive, switch, run a route, stop). Intents become station
+// commands; the state changes only when the station confirms them or the bus shows a change, so that
+// several controllers on one station stay consistent. Every received batch gives at most one change
+// signal per kind, so that views keep up with a flood of frames.
+class Railway final : public QObject {
+    Q_OBJECT
+
+public:
+    // Create it before the start-up runs to keep the state answers the start-up asks for, then load().
+    // The session must outlive the railway.
+    explicit Railway(station::StationSession& session, QObject* parent = nullptr);
+    Railway(station::StationSession& session, const station::StartupResult& startup,
+            QObject* parent = nullptr);
+    ~Railway() override;
+
+    // Takes the layout from the start-up's files and starts polling the devices' readings.
+    void load(const station::StartupResult& startup);
+
+    const RailwayState& state() const { return state_; }
+    const Locomotive* locomotive(std::uint32_t id) const { return state_.locomotives().find(id); }
+    const Accessory* accessory(std::int64_t id) const { return state_.accessories().find(id); }
+    const FeedbackContact* contact(ContactKey key) const { return state_.contacts().find(key); }
+    const Route* route(std::int64_t id) const { return state_.routes().find(id); }
+    const Device* device(std::uint32_t uid) const { return state_.devices().find(uid); }
+    const TrackLayout& layout() const { return state_.layout(); }
+    // Unknown until the station reported its power state.
+    std::optional<station::PowerState> power() const { return state_.power(); }
+    ReadingPoller& readings() { return *poller_; }
+
+    // Intents, in railway words. Each reports a problem signal when the station does not carry it out.
+    void setSpeed(std::uint32_t loco, int speed); // 0..1000
+    void setDirection(std::uint32_t loco, cs2::Direction direction);
+    void reverse(std::uint32_t loco);
+    void setFunction(std::uint32_t loco, int function, bool on);
+    void toggleFunction(std::uint32_t loco, int function);
+    void emergencyStop(std::uint32_t loco);
+    void switchAccessory(std::int64_t accessory, int position);
+    // Starts a route; false (and a problem) when it is unknown, already running or cannot run.
+    bool runRoute(std::int64_t route);
+    void cancelRoute(std::int64_t route);
+    void stop();
+    void go();
+
+signals:
+    void loaded();
+    void locomotivesChanged(const QList<quint32>& ids);
+    void accessoriesChanged(const QList<qint64>& ids);
+    void contactsChanged(const QList<quint32>& keys);
+    // Tiles whose accessory or contact changed, for the track plan view.
+    void tilesChanged(const QList<stellwerk::model::TileRef>& tiles);
+    // New devices, and devices whose readings changed or went stale.
+    void devicesChanged(const QList<quint32>& uids);
+    void powerChanged(stellwerk::station::PowerState state);
+    void overloaded(quint32 device, quint8 channel);
+    // The station announced changed configuration files (a broadcast config stream): time to download again.
+    void configurationChanged();
+    void routeStarted(qint64 route);
+    void routeProgressed(qint64 route, int stepsDone, int stepCount);
+    void routeFinished(qint64 route);
+    void routeFailed(qint64 route, const QString& message);
+    // A readable sentence: a command the station rejected or did not answer, an overload, a failed route.
+    void problem(const QString& message);
+
+private:
+    void apply(const station::StationUpdates& updates);
+    void announce(const RailwayChanges& changes);
+    void announceTiles(const RailwayChanges& changes);
+    void readingMissed(quint32 device, quint8 channel);
+    void updatePollerSources();
+    // Sends a command; `what` names it for the problem message, `done` runs after an acknowledgement.
+    void command(const cs2::Message& message, const QString& what, std::function<void()> done = {});
+    void switchForRoute(std::int64_t accessory, int position, std::function<void(const QString&)> done);
+    void routeEnded(std::int64_t route);
+    QString locoName(std::uint32_t loco) const;
+
+    station::StationSession& session_;
+    RailwayState state_;
+    ReadingPoller* poller_;
+    std::map<std::int64_t, RouteRunner*> runners_;
+};
+
+} // namespace stellwerk::model

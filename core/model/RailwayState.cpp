@@ -1,0 +1,142 @@
+#include "model/RailwayState.h"
+
+namespace stellwerk::model {
+
+void RailwayState::load(const station::StartupResult& startup) {
+    loadLocomotives(startup);
+    loadAccessories(startup);
+    routeFile_ = startup.routes.value_or(cs2config::RouteFile{});
+    routes_.clear();
+    for (const cs2config::Route& route : routeFile_.routes)
+        routes_.put(route.id, Route(route));
+    layout_ = TrackLayout(startup.pages);
+    loadContacts();
+    loadDevices(startup);
+}
+
+void RailwayState::loadLocomotives(const station::StartupResult& startup) {
+    Registry<std::uint32_t, Locomotive> seen = std::move(locomotives_);
+    locomotives_.clear();
+    if (startup.locomotives)
+        for (const cs2config::Locomotive& record : startup.locomotives->locomotives) {
+            if (record.isEmpty())
+                continue;
+            Locomotive& loco = locomotives_.put(record.uid, Locomotive::fromFile(record));
+            if (const Locomotive* before = seen.find(record.uid))
+                loco.keepConfirmedState(*before);
+        }
+    for (const Locomotive& loco : seen.items())
+        if (!locomotives_.find(loco.id().value()))
+            locomotives_.put(loco.id().value(), loco);
+}
+
+void RailwayState::loadAccessories(const station::StartupResult& startup) {
+    accessories_.clear();
+    addressOwners_.clear();
+    if (!startup.accessories)
+        return;
+    for (const cs2config::Accessory& record : startup.accessories->accessories) {
+        if (record.id < 1 || record.secondOutput)
+            continue; // no address, or the second half of a pair that shares the first one's id
+        const Accessory& accessory = accessories_.put(record.id, Accessory::fromFile(record));
+        for (int n = 0; n < accessory.addressCount(); ++n)
+            if (const auto address = accessory.address(n))
+                addressOwners_.emplace(address->value(), AddressOwner{record.id, n});
+    }
+}
+
+void RailwayState::loadContacts() {
+    Registry<ContactKey, FeedbackContact> seen = std::move(contacts_);
+    contacts_.clear();
+    for (FeedbackContact contact : layout_.contacts()) {
+        if (const FeedbackContact* before = seen.find(contact.key())) {
+            const QString name = contact.name();
+            contact = *before;
+            contact.setName(name);
+        }
+        contacts_.put(contact.key(), contact);
+    }
+    for (const FeedbackContact& contact : seen.items())
+        if (!contacts_.find(contact.key()))
+            contacts_.put(contact.key(), contact);
+}
+
+void RailwayState::loadDevices(const station::StartupResult& startup) {
+    for (const station::DeviceDescription& description : startup.devices)
+        devices_.put(description.identity.uid, Device(description));
+}
+
+RailwayChanges RailwayState::apply(const station::StationUpdates& updates, const QDateTime& now) {
+    RailwayChanges changes;
+    applyDevices(updates, now, changes);
+    applyLocomotives(updates, changes);
+    applyAccessories(updates, changes);
+    applyContacts(updates, now, changes);
+    for (const station::PowerChange& change : updates.power)
+        if (power_ != change.state)
+            changes.power = power_ = change.state;
+    changes.overloads = updates.overloads;
+    changes.configurationChanged = updates.configurationChanged;
+    return changes;
+}
+
+Locomotive& RailwayState::locomotive(cs2::LocId id) {
+    if (Locomotive* loco = locomotives_.find(id.value()))
+        return *loco;
+    return locomotives_.put(id.value(), Locomotive(id));
+}
+
+// Directions before speeds: a batch that turns a locomotive and then starts it ends with the new speed.
+void RailwayState::applyLocomotives(const station::StationUpdates& updates, RailwayChanges& changes) {
+    for (const station::LocomotiveDirectionChange& change : updates.directions)
+        if (locomotive(change.loco).confirmDirection(change.direction))
+            changes.locomotives.add(change.loco.value());
+    for (const station::LocomotiveSpeedChange& change : updates.speeds)
+        if (locomotive(change.loco).confirmSpeed(change.speed))
+            changes.locomotives.add(change.loco.value());
+    for (const station::LocomotiveFunctionChange& change : updates.functions)
+        if (locomotive(change.loco).confirmFunction(change.function, change.value != 0))
+            changes.locomotives.add(change.loco.value());
+}
+
+void RailwayState::applyAccessories(const station::StationUpdates& updates, RailwayChanges& changes) {
+    for (const station::AccessoryChange& change : updates.accessories) {
+        if (change.current == 0)
+            continue; // switching the output off keeps the position
+        const auto owner = addressOwners_.find(change.article.value());
+        if (owner == addressOwners_.end())
+            continue; // not on this station's keyboard
+        Accessory* accessory = accessories_.find(owner->second.accessory);
+        if (accessory->confirmPosition(accessory->positionOf(owner->second.addressIndex, change.position)))
+            changes.accessories.add(accessory->id());
+    }
+}
+
+void RailwayState::applyContacts(const station::StationUpdates& updates, const QDateTime& now,
+                                 RailwayChanges& changes) {
+    for (const station::FeedbackContactChange& change : updates.contacts) {
+        const ContactKey key = contactKey(change.device, change.contact);
+        FeedbackContact* contact = contacts_.find(key);
+        if (!contact)
+            contact = &contacts_.put(key, FeedbackContact(change.device, change.contact));
+        if (contact->confirm(change.occupied, now))
+            changes.contacts.add(key);
+    }
+}
+
+void RailwayState::applyDevices(const station::StationUpdates& updates, const QDateTime& now,
+                                RailwayChanges& changes) {
+    for (const cs2::DeviceIdentity& identity : updates.devices)
+        if (!devices_.find(identity.uid)) {
+            devices_.put(identity.uid, Device(identity));
+            changes.devices.add(identity.uid);
+        }
+    for (const station::ReadingValue& reading : updates.readings) {
+        Device* device = devices_.find(reading.device);
+        StatusChannel* channel = device ? device->channel(reading.channel) : nullptr;
+        if (channel && channel->confirm(reading.raw, now))
+            changes.devices.add(reading.device);
+    }
+}
+
+} // namespace stellwerk::model

@@ -1,0 +1,83 @@
+#pragma once
+
+#include "cs2config/RouteFile.h"
+#include "model/Accessory.h"
+#include "model/Device.h"
+#include "model/FeedbackContact.h"
+#include "model/Locomotive.h"
+#include "model/Registry.h"
+#include "model/Route.h"
+#include "model/TrackLayout.h"
+#include "station/StartupSequence.h"
+#include "station/StationUpdates.h"
+
+#include <QDateTime>
+#include <cstdint>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+namespace stellwerk::model {
+
+// What one batch of station updates changed, each item once: the Railway turns it into one signal
+// per kind.
+struct RailwayChanges {
+    ChangedKeys<std::uint32_t> locomotives;
+    ChangedKeys<std::int64_t> accessories;
+    ChangedKeys<ContactKey> contacts;
+    ChangedKeys<std::uint32_t> devices;
+    std::optional<station::PowerState> power;
+    std::vector<station::OverloadReport> overloads;
+    bool configurationChanged = false;
+};
+
+// Everything the UI shows about the layout, updated only from what the station confirmed or the bus
+// showed. Plain data without signals, so that applying a batch is one call and easy to test.
+class RailwayState {
+public:
+    // Builds the layout from the start-up's files and devices; state the bus already reported (a
+    // Railway created before the start-up sees the state answers) is kept.
+    void load(const station::StartupResult& startup);
+    RailwayChanges apply(const station::StationUpdates& updates, const QDateTime& now);
+
+    Registry<std::uint32_t, Locomotive>& locomotives() { return locomotives_; }
+    const Registry<std::uint32_t, Locomotive>& locomotives() const { return locomotives_; }
+    const Registry<std::int64_t, Accessory>& accessories() const { return accessories_; }
+    const Registry<ContactKey, FeedbackContact>& contacts() const { return contacts_; }
+    const Registry<std::int64_t, Route>& routes() const { return routes_; }
+    Registry<std::int64_t, Route>& routes() { return routes_; }
+    const cs2config::RouteFile& routeFile() const { return routeFile_; }
+    const Registry<std::uint32_t, Device>& devices() const { return devices_; }
+    Registry<std::uint32_t, Device>& devices() { return devices_; }
+    const TrackLayout& layout() const { return layout_; }
+    std::optional<station::PowerState> power() const { return power_; }
+
+private:
+    void loadLocomotives(const station::StartupResult& startup);
+    void loadAccessories(const station::StartupResult& startup);
+    void loadContacts();
+    void loadDevices(const station::StartupResult& startup);
+    void applyLocomotives(const station::StationUpdates& updates, RailwayChanges& changes);
+    void applyAccessories(const station::StationUpdates& updates, RailwayChanges& changes);
+    void applyContacts(const station::StationUpdates& updates, const QDateTime& now, RailwayChanges& changes);
+    void applyDevices(const station::StationUpdates& updates, const QDateTime& now, RailwayChanges& changes);
+    Locomotive& locomotive(cs2::LocId id);
+
+    // Which accessory (keyboard id) and which of its addresses a wire address belongs to.
+    struct AddressOwner {
+        std::int64_t accessory = 0;
+        int addressIndex = 0;
+    };
+
+    Registry<std::uint32_t, Locomotive> locomotives_;
+    Registry<std::int64_t, Accessory> accessories_;
+    std::unordered_map<std::uint32_t, AddressOwner> addressOwners_;
+    Registry<ContactKey, FeedbackContact> contacts_;
+    Registry<std::int64_t, Route> routes_;
+    cs2config::RouteFile routeFile_;
+    Registry<std::uint32_t, Device> devices_;
+    TrackLayout layout_;
+    std::optional<station::PowerState> power_;
+};
+
+} // namespace stellwerk::model
