@@ -3,8 +3,10 @@
 #include "Cs2Command.h"
 #include "DecodeCommand.h"
 #include "EncodeCommand.h"
+#include "StationCommand.h"
 #include "StreamCommand.h"
 
+#include <QCoreApplication>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -28,7 +30,8 @@ void printUsage(std::ostream& out) {
            "track plan "
            "as JSON\n"
            "  stellwerk-cli cs2 format FILE [-o OUT]      write the file back through its typed model\n"
-           "\n"
+        << stellwerk::cli::stationUsage()
+        << "\n"
            "FRAME notations:\n"
            "  document   00004711 5 00 00 00 00 00\n"
            "  candump    00004711#0000000000   or   (1700000000.000000) can0 00004711#0000000000\n"
@@ -59,6 +62,10 @@ int main(int argc, char** argv) {
         return stellwerk::cli::runCs2(rest, std::cout, std::cerr);
     if (arguments[0] == "stream")
         return stellwerk::cli::runStream(rest, std::cin, std::cout, std::cerr);
+    if (arguments[0] == "--station") {
+        QCoreApplication application(argc, argv); // the transports need an event loop
+        return stellwerk::cli::runStation(rest, std::cout, std::cerr);
+    }
     std::cerr << "stellwerk-cli: unknown command '" << arguments[0] << "'\n\n";
     printUsage(std::cerr);
     return 2;

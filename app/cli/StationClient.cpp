@@ -1,0 +1,118 @@
+#include "StationClient.h"
+
+#include "can/TransportFactory.h"
+
+#include <QTimer>
+#include <atomic>
+#include <csignal>
+#include <ostream>
+
+namespace stellwerk::cli {
+namespace {
+
+std::atomic<bool> interrupted{false};
+
+extern "C" void onInterrupt(int) {
+    interrupted = true;
+}
+
+// The transports say "...; trying again in 250 ms": the command line does not try again.
+QString withoutRetryNote(QString message) {
+    const qsizetype note = message.indexOf(QStringLiteral("; trying again"));
+    return note < 0 ? message : message.left(note);
+}
+
+} // namespace
+
+StationClient::StationClient(std::ostream& err, ClientSettings settings, QObject* parent)
+    : QObject(parent), err_(err), settings_(settings) {}
+
+StationClient::~StationClient() {
+    session_.reset();
+    if (transport_)
+        transport_->close();
+}
+
+int StationClient::connectTo(const QString& url) {
+    auto created = can::createTransport(url);
+    if (!created) {
+        err_ << "stellwerk-cli: " << created.error().toStdString() << '\n';
+        return UsageError;
+    }
+    transport_ = std::move(created.value());
+    station::StationSettings settings;
+    settings.commands = settings_.commands;
+    session_ = std::make_unique<station::StationSession>(*transport_, settings);
+    connect(transport_.get(), &can::Transport::problem, this, [this](const QString& message) {
+        if (transport_->state() == can::Transport::State::Connected || status_)
+            err_ << "stellwerk-cli: " << withoutRetryNote(message).toStdString() << '\n';
+        else
+            problem_ = withoutRetryNote(message);
+    });
+    return waitForConnection();
+}
+
+int StationClient::waitForConnection() {
+    QTimer timeout;
+    timeout.setSingleShot(true);
+    connect(&timeout, &QTimer::timeout, this, [this] {
+        if (problem_.isEmpty())
+            problem_ = QStringLiteral("%1: no connection within %2 ms")
+                           .arg(transport_->description())
+                           .arg(settings_.connectTimeout.count());
+        finish(CannotOpen);
+    });
+    const auto watch = connect(transport_.get(), &can::Transport::stateChanged, this, [this](auto state) {
+        if (state == can::Transport::State::Connected)
+            finish(Acknowledged);
+        else if (state == can::Transport::State::Reconnecting || !problem_.isEmpty())
+            finish(CannotOpen);
+    });
+    transport_->open();
+    if (transport_->state() == can::Transport::State::Connected)
+        status_ = Acknowledged;
+    else if (!problem_.isEmpty())
+        status_ = CannotOpen;
+    timeout.start(settings_.connectTimeout);
+    const int status = status_ ? *status_ : loop_.exec();
+    disconnect(watch);
+    status_.reset();
+    if (status == CannotOpen)
+        err_ << "stellwerk-cli: cannot open the transport: " << problem_.toStdString() << '\n';
+    return status;
+}
+
+int StationClient::run(const StationJob& job) {
+    QTimer limit;
+    limit.setSingleShot(true);
+    connect(&limit, &QTimer::timeout, this, [this] {
+        err_ << "stellwerk-cli: the station did not finish the command in time\n";
+        finish(NotAcknowledged);
+    });
+    job.start(*this);
+    if (status_)
+        return *status_;
+    if (job.limit)
+        limit.start(*job.limit);
+    return loop_.exec();
+}
+
+void StationClient::finish(int status) {
+    if (status_)
+        return;
+    status_ = status;
+    loop_.exit(status);
+}
+
+void StationClient::finishOnInterrupt(int status) {
+    interrupted = false;
+    std::signal(SIGINT, onInterrupt);
+    auto* poll = new QTimer(this);
+    connect(poll, &QTimer::timeout, this, [this, status] {
+        if (interrupted.exchange(false))
+            finish(status);
+    });
+    poll->start(100);
+}
+
+} // namespace stellwerk::cli

@@ -1,0 +1,64 @@
+#include "StationCommand.h"
+
+#include "DeviceCommands.h"
+#include "DriveCommands.h"
+#include "StationClient.h"
+#include "TransferCommands.h"
+
+#include <ostream>
+
+namespace stellwerk::cli {
+namespace {
+
+ParsedJob parseCommand(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
+    const std::string& command = arguments[1];
+    const std::vector<std::string> rest(arguments.begin() + 2, arguments.end());
+    if (auto job = parseDriveCommand(command, rest, out, err))
+        return std::move(*job);
+    if (auto job = parseDeviceCommand(command, rest, out, err))
+        return std::move(*job);
+    if (auto job = parseTransferCommand(command, rest, out, err))
+        return std::move(*job);
+    return "unknown station command '" + command + "'";
+}
+
+} // namespace
+
+const char* stationUsage() {
+    return "  stellwerk-cli --station URL COMMAND      talk to a command station; exit status 0 "
+           "acknowledged,\n"
+           "                1 not acknowledged (rejected, timed out), 2 usage error, 3 cannot open URL\n"
+           "    URL: udp://host[:port][?listen=port]  (sends to port, default 15731; receives on listen,\n"
+           "                                          default 15730)\n"
+           "         tcp://host[:port]                (default 15731)\n"
+           "         can://plugin/interface[?bitrate=n] (a QCanBus device, e.g. can://socketcan/can0)\n"
+           "    ping                               list the devices (UID, version, type)\n"
+           "    stop | go | halt [UID]             track power off / on, every loco to speed 0\n"
+           "    speed LOC 0-1000                   LOC: mfx:5, dcc:3, mm2:72 or a Loc-ID (0x4005)\n"
+           "    direction LOC forward|backward|toggle\n"
+           "    function LOC 0-31 on|off\n"
+           "    switch ADDR POSITION               ADDR: keyboard number 1.. (mm2), dcc:N, or 0x3004;\n"
+           "                                       POSITION: 0-255, red|round, green|straight, yellow, "
+           "white\n"
+           "    download KEY [QUALIFIER] [-o FILE] a config file (loks, mags, fs, gbs, gbs-N, ...)\n"
+           "    status [UID]                       readings (name, value, unit) of the device(s)\n"
+           "    monitor [--json] [--count N]       print every frame until N frames or Ctrl-C\n";
+}
+
+int runStation(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
+    if (arguments.size() < 2) {
+        err << "usage: stellwerk-cli --station URL COMMAND ...\n" << stationUsage();
+        return UsageError;
+    }
+    const ParsedJob job = parseCommand(arguments, out, err);
+    if (!job) {
+        err << "stellwerk-cli: " << job.error() << '\n';
+        return UsageError;
+    }
+    StationClient client(err);
+    if (const int opened = client.connectTo(QString::fromStdString(arguments[0])); opened != 0)
+        return opened;
+    return client.run(*job);
+}
+
+} // namespace stellwerk::cli
