@@ -17,6 +17,139 @@
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::ConnectDialog</name>
+    <message>
+        <source>Connect to a station</source>
+        <translation>Mit einer Zentrale verbinden</translation>
+    </message>
+    <message>
+        <source>Station &amp;address:</source>
+        <translation>&amp;Adresse der Zentrale:</translation>
+    </message>
+    <message>
+        <source>Examples:
+udp://192.168.2.5 — a CS2 with its CAN-UDP gateway switched on
+tcp://192.168.2.5 — a CS3, or a CS2 over TCP
+can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
+        <translation>Beispiele:
+udp://192.168.2.5 — eine CS2 mit eingeschaltetem CAN-UDP-Gateway
+tcp://192.168.2.5 — eine CS3 oder eine CS2 über TCP
+can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
+    </message>
+    <message>
+        <source>&amp;Use the simulated station (demo layout)</source>
+        <translation>&amp;Simulierte Zentrale verwenden (Demo-Anlage)</translation>
+    </message>
+    <message>
+        <source>&amp;Connect</source>
+        <translation>&amp;Verbinden</translation>
+    </message>
+    <message>
+        <source>Enter the station&apos;s address, or use the simulated station.</source>
+        <translation>Adresse der Zentrale eingeben oder die simulierte Zentrale verwenden.</translation>
+    </message>
+    <message>
+        <source>This address cannot be used: %1</source>
+        <translation>Diese Adresse ist nicht verwendbar: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::ConnectionStatus</name>
+    <message>
+        <source>Simulated CS2 (demo layout)</source>
+        <translation>Simulierte CS2 (Demo-Anlage)</translation>
+    </message>
+    <message>
+        <source>CS2 at %1 (UDP)</source>
+        <translation>CS2 unter %1 (UDP)</translation>
+    </message>
+    <message>
+        <source>CS2 at %1 (TCP)</source>
+        <translation>CS2 unter %1 (TCP)</translation>
+    </message>
+    <message>
+        <source>CAN interface %1</source>
+        <translation>CAN-Schnittstelle %1</translation>
+    </message>
+    <message>
+        <source>Station &quot;%1&quot;</source>
+        <translation>Zentrale „%1“</translation>
+    </message>
+    <message>
+        <source>No station connected</source>
+        <translation>Keine Zentrale verbunden</translation>
+    </message>
+    <message>
+        <source>%1 — connecting</source>
+        <translation>%1 — Verbindung wird aufgebaut</translation>
+    </message>
+    <message>
+        <source>%1 — ready: %2</source>
+        <translation>%1 — bereit: %2</translation>
+    </message>
+    <message>
+        <source>%1 — station silent</source>
+        <translation>%1 — Zentrale antwortet nicht</translation>
+    </message>
+    <message>
+        <source>%1 — failed: %2</source>
+        <translation>%1 — fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>listing the devices</source>
+        <translation>Geräte abfragen</translation>
+    </message>
+    <message>
+        <source>waking up the Gleisbox</source>
+        <translation>Gleisbox wecken</translation>
+    </message>
+    <message>
+        <source>reading the devices</source>
+        <translation>Gerätedaten lesen</translation>
+    </message>
+    <message>
+        <source>files</source>
+        <translation>Dateien</translation>
+    </message>
+    <message>
+        <source>%1 %2 %</source>
+        <translation>%1 %2 %</translation>
+    </message>
+    <message>
+        <source>locomotive and contact states</source>
+        <translation>Zustände der Loks und Rückmeldekontakte</translation>
+    </message>
+    <message>
+        <source>%1, %2, %3</source>
+        <translation>%1, %2, %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n locomotive(s)</source>
+        <translation>
+            <numerusform>%n Lok</numerusform>
+            <numerusform>%n Loks</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n accessory(s)</source>
+        <translation>
+            <numerusform>%n Magnetartikel</numerusform>
+            <numerusform>%n Magnetartikel</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n page(s)</source>
+        <translation>
+            <numerusform>%n Seite</numerusform>
+            <numerusform>%n Seiten</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 — loading configuration %2/%3: %4</source>
+        <translation>%1 — Konfiguration wird geladen %2/%3: %4</translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::FrameDecoderPanel</name>
     <message>
         <source>unreadable</source>
@@ -127,16 +260,24 @@
         <translation>Versionen von Stellwerk und Qt anzeigen</translation>
     </message>
     <message>
-        <source>No station connected</source>
-        <translation>Keine Zentrale verbunden</translation>
-    </message>
-    <message>
         <source>The translation &quot;%1&quot; could not be loaded.</source>
         <translation>Die Übersetzung „%1“ konnte nicht geladen werden.</translation>
     </message>
     <message>
         <source>Frame decoder</source>
         <translation>Telegramm-Decoder</translation>
+    </message>
+    <message>
+        <source>&amp;Station</source>
+        <translation>&amp;Zentrale</translation>
+    </message>
+    <message>
+        <source>&amp;Connect…</source>
+        <translation>&amp;Verbinden …</translation>
+    </message>
+    <message>
+        <source>Choose the station to connect to, or the simulated one</source>
+        <translation>Die Zentrale wählen, mit der Stellwerk sich verbindet, oder die simulierte</translation>
     </message>
 </context>
 </TS>

@@ -17,6 +17,136 @@
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::ConnectDialog</name>
+    <message>
+        <source>Connect to a station</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Station &amp;address:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Examples:
+udp://192.168.2.5 — a CS2 with its CAN-UDP gateway switched on
+tcp://192.168.2.5 — a CS3, or a CS2 over TCP
+can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Use the simulated station (demo layout)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Connect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enter the station&apos;s address, or use the simulated station.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This address cannot be used: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::ConnectionStatus</name>
+    <message>
+        <source>Simulated CS2 (demo layout)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CS2 at %1 (UDP)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CS2 at %1 (TCP)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CAN interface %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Station &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No station connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — connecting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — ready: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — station silent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — failed: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>listing the devices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>waking up the Gleisbox</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the devices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>locomotive and contact states</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, %2, %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n locomotive(s)</source>
+        <translation>
+            <numerusform>%n locomotive</numerusform>
+            <numerusform>%n locomotives</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n accessory(s)</source>
+        <translation>
+            <numerusform>%n accessory</numerusform>
+            <numerusform>%n accessories</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n page(s)</source>
+        <translation>
+            <numerusform>%n page</numerusform>
+            <numerusform>%n pages</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 — loading configuration %2/%3: %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::FrameDecoderPanel</name>
     <message>
         <source>unreadable</source>
@@ -127,15 +257,23 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>No station connected</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>The translation &quot;%1&quot; could not be loaded.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Frame decoder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Station</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Connect…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose the station to connect to, or the simulated one</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

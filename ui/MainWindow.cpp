@@ -2,13 +2,15 @@
 
 #include "AboutBox.h"
 #include "ApplicationInfo.h"
+#include "ConnectDialog.h"
+#include "ConnectionStatus.h"
 #include "FrameDecoderPanel.h"
 #include "LanguageMenu.h"
 #include "LanguageSettings.h"
 #include "Translations.h"
+#include "connection/StationConnection.h"
 
 #include <QEvent>
-#include <QLabel>
 #include <QMenuBar>
 #include <QStatusBar>
 #include <QTabWidget>
@@ -22,6 +24,7 @@ MainWindow::MainWindow(Translations& translations, QWidget* parent)
     setWindowIcon(applicationIcon());
     createWorkspace();
     createFileMenu();
+    createStationMenu();
     createViewMenu();
     createHelpMenu();
     createStatusBar();
@@ -55,6 +58,37 @@ void MainWindow::createFileMenu() {
     m_quitAction->setMenuRole(QAction::QuitRole);
 }
 
+void MainWindow::createStationMenu() {
+    m_stationMenu = menuBar()->addMenu(QString());
+    m_stationMenu->setObjectName(QStringLiteral("stationMenu"));
+    m_connectAction = m_stationMenu->addAction(QString(), this, &MainWindow::showConnectDialog);
+    m_connectAction->setObjectName(QStringLiteral("connectAction"));
+}
+
+void MainWindow::setConnection(connection::StationConnection* station) {
+    if (m_connection)
+        disconnect(m_connection, nullptr, this, nullptr);
+    m_connection = station;
+    m_stationStatus->setConnection(station);
+    if (m_connection) {
+        connect(m_connection, &connection::StationConnection::problem, this,
+                [this](const QString& message) { showStationProblem(message); });
+        connect(m_connection, &QObject::destroyed, this, [this] { m_connection = nullptr; });
+    }
+}
+
+// A failure is already on the station's status line; other problems pass by on the left for a while.
+void MainWindow::showStationProblem(const QString& message) {
+    if (m_connection && m_connection->state() != connection::StationConnection::State::Failed)
+        statusBar()->showMessage(message, 8000);
+}
+
+void MainWindow::showConnectDialog() {
+    ConnectDialog dialog(m_connection ? m_connection->address() : QString(), this);
+    if (dialog.exec() == QDialog::Accepted && m_connection)
+        m_connection->connectTo(dialog.url());
+}
+
 void MainWindow::createViewMenu() {
     m_viewMenu = menuBar()->addMenu(QString());
     m_viewMenu->setObjectName(QStringLiteral("viewMenu"));
@@ -73,8 +107,7 @@ void MainWindow::createHelpMenu() {
 
 // Station state is permanent information; the left side stays free for temporary messages.
 void MainWindow::createStatusBar() {
-    m_stationStatus = new QLabel(this);
-    m_stationStatus->setObjectName(QStringLiteral("stationStatus"));
+    m_stationStatus = new ConnectionStatus(this);
     statusBar()->addPermanentWidget(m_stationStatus);
 }
 
@@ -82,11 +115,13 @@ void MainWindow::retranslate() {
     m_fileMenu->setTitle(tr("&File"));
     m_quitAction->setText(tr("&Quit"));
     m_quitAction->setStatusTip(tr("Close the window and end Stellwerk"));
+    m_stationMenu->setTitle(tr("&Station"));
+    m_connectAction->setText(tr("&Connect…"));
+    m_connectAction->setStatusTip(tr("Choose the station to connect to, or the simulated one"));
     m_viewMenu->setTitle(tr("&View"));
     m_helpMenu->setTitle(tr("&Help"));
     m_aboutAction->setText(tr("&About Stellwerk"));
     m_aboutAction->setStatusTip(tr("Show the version of Stellwerk and of Qt"));
-    m_stationStatus->setText(tr("No station connected"));
     m_workspaceTabs->setTabText(m_workspaceTabs->indexOf(m_frameDecoder), tr("Frame decoder"));
 }
 

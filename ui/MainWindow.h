@@ -4,16 +4,20 @@
 
 #include <QMainWindow>
 
-class QLabel;
 class QTabWidget;
+
+namespace stellwerk::connection {
+class StationConnection;
+}
 
 namespace stellwerk::ui {
 
+class ConnectionStatus;
 class FrameDecoderPanel;
 class LanguageMenu;
 class Translations;
 
-// The station's main window: menus, the status line and the workspace tabs that later features
+// The station's main window: menus, the station's status line and the workspace tabs that later features
 // (throttles, track plan, bus monitor) fill.
 class MainWindow final : public QMainWindow {
     Q_OBJECT
@@ -25,6 +29,12 @@ public:
     // Features add their pages here with addTab().
     QTabWidget* workspaceTabs() const { return m_workspaceTabs; }
     FrameDecoderPanel* frameDecoder() const { return m_frameDecoder; }
+    // The station connection the status bar shows and Station → Connect… reconnects (null: none). It
+    // must outlive the window or be replaced before it goes.
+    void setConnection(connection::StationConnection* station);
+    connection::StationConnection* stationConnection() const { return m_connection; }
+    // Opens Station → Connect…; on Connect the choice is stored and the connection reconnects.
+    void showConnectDialog();
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -32,22 +42,27 @@ protected:
 private:
     void createWorkspace();
     void createFileMenu();
+    void createStationMenu();
     void createViewMenu();
     void createHelpMenu();
     void createStatusBar();
     void retranslate();
     void chooseLanguage(Language language);
+    void showStationProblem(const QString& message);
 
     Translations& m_translations;
     QTabWidget* m_workspaceTabs = nullptr;
     FrameDecoderPanel* m_frameDecoder = nullptr;
     QMenu* m_fileMenu = nullptr;
     QAction* m_quitAction = nullptr;
+    QMenu* m_stationMenu = nullptr;
+    QAction* m_connectAction = nullptr;
     QMenu* m_viewMenu = nullptr;
     LanguageMenu* m_languageMenu = nullptr;
     QMenu* m_helpMenu = nullptr;
     QAction* m_aboutAction = nullptr;
-    QLabel* m_stationStatus = nullptr;
+    ConnectionStatus* m_stationStatus = nullptr;
+    connection::StationConnection* m_connection = nullptr;
 };
 
 } // namespace stellwerk::ui

@@ -1,10 +1,13 @@
-// Start-up of the Stellwerk desktop application: language from the settings, then the main window.
+// Start-up of the Stellwerk desktop application: language from the settings, then the main window, then the
+// station (the one in the settings or on the command line; the embedded simulated one when none is set).
 
 #include "ApplicationInfo.h"
 #include "FrameDecoderPanel.h"
 #include "LanguageSettings.h"
 #include "MainWindow.h"
+#include "StationUrlSettings.h"
 #include "Translations.h"
+#include "connection/StationConnection.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -14,10 +17,26 @@
 
 namespace {
 
+using stellwerk::connection::StationConnection;
+
+// How long a screenshot waits for the station to be ready before it shows whatever state it reached.
+constexpr int ScreenshotPatienceMs = 15000;
+
 struct Options {
     QString screenshotFile; // empty: run normally
     QString captureFile;    // a capture to open in the frame decoder
+    QString stationUrl;     // the station to connect to; empty: the embedded simulated station
 };
+
+// --simulated wins over --station, which wins over the settings.
+QString stationUrl(const QCommandLineParser& parser, const QCommandLineOption& station,
+                   const QCommandLineOption& simulated) {
+    if (parser.isSet(simulated))
+        return QString();
+    if (parser.isSet(station))
+        return parser.value(station);
+    return stellwerk::ui::StationUrlSettings::load();
+}
 
 Options parseOptions(const QApplication& app) {
     QCommandLineParser parser;
@@ -35,20 +54,49 @@ Options parseOptions(const QApplication& app) {
                                              "document's notation) in the frame decoder."),
                               QStringLiteral("file"));
     parser.addOption(decode);
+    QCommandLineOption station(QStringLiteral("station"),
+                               QStringLiteral("Connect to the station at <url> (udp://192.168.2.5, "
+                                              "tcp://192.168.2.5, can://socketcan/can0) instead of the one "
+                                              "in the settings, without changing them."),
+                               QStringLiteral("url"));
+    parser.addOption(station);
+    QCommandLineOption simulated(QStringLiteral("simulated"),
+                                 QStringLiteral("Connect to the embedded simulated station (demo layout)."));
+    parser.addOption(simulated);
     parser.process(app);
-    return Options{parser.value(screenshot), parser.value(decode)};
+    return Options{parser.value(screenshot), parser.value(decode), stationUrl(parser, station, simulated)};
 }
 
-// For documentation: grabs the shown window once the event loop runs, then ends with 0 or 1.
-void saveScreenshotAndQuit(QWidget& window, const QString& file) {
-    QTimer::singleShot(200, &window, [&window, file] {
-        if (window.grab().save(file)) {
-            QCoreApplication::exit(0);
-            return;
-        }
-        std::fprintf(stderr, "stellwerk: cannot write the screenshot to %s\n", qPrintable(file));
-        QCoreApplication::exit(1);
-    });
+void grabAndQuit(QWidget& window, const QString& file) {
+    if (window.grab().save(file)) {
+        QCoreApplication::exit(0);
+        return;
+    }
+    std::fprintf(stderr, "stellwerk: cannot write the screenshot to %s\n", qPrintable(file));
+    QCoreApplication::exit(1);
+}
+
+bool settled(StationConnection::State state) {
+    return state != StationConnection::State::Connecting &&
+           state != StationConnection::State::LoadingConfiguration;
+}
+
+// For documentation: grabs the shown window once the station is ready (or failed, or did not get there in
+// time), after the status bar had a moment to lay out its new text; then ends with 0 or 1.
+void saveScreenshotAndQuit(QWidget& window, const StationConnection& connection, const QString& file) {
+    auto* patience = new QTimer(&window);
+    patience->setSingleShot(true);
+    const auto grabSoon = [&window, file, patience] {
+        patience->stop();
+        QTimer::singleShot(200, &window, [&window, file] { grabAndQuit(window, file); });
+    };
+    QObject::connect(patience, &QTimer::timeout, &window, grabSoon);
+    QObject::connect(&connection, &StationConnection::stateChanged, patience,
+                     [grabSoon, patience](StationConnection::State state) {
+                         if (patience->isActive() && settled(state))
+                             grabSoon();
+                     });
+    patience->start(ScreenshotPatienceMs);
 }
 
 } // namespace
@@ -63,7 +111,9 @@ int main(int argc, char* argv[]) {
 
     stellwerk::ui::Translations translations;
     translations.select(stellwerk::ui::LanguageSettings::load());
+    StationConnection connection; // outlives the window that shows it
     stellwerk::ui::MainWindow window(translations);
+    window.setConnection(&connection);
     if (!options.captureFile.isEmpty()) {
         if (const QString error = window.frameDecoder()->loadCapture(options.captureFile); !error.isEmpty()) {
             std::fprintf(stderr, "stellwerk: %s\n", qPrintable(error));
@@ -72,7 +122,9 @@ int main(int argc, char* argv[]) {
     }
     window.show();
     if (!options.screenshotFile.isEmpty()) {
-        saveScreenshotAndQuit(window, options.screenshotFile);
+        saveScreenshotAndQuit(window, connection, options.screenshotFile);
     }
+    QTimer::singleShot(0, &connection,
+                       [&connection, url = options.stationUrl] { connection.connectTo(url); });
     return QApplication::exec();
 }

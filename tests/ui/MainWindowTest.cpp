@@ -68,12 +68,18 @@ TEST_F(MainWindowTest, HasWindowIcon) {
     EXPECT_FALSE(window->windowIcon().isNull());
 }
 
-TEST_F(MainWindowTest, MenuBarHasFileViewHelpInThatOrder) {
+TEST_F(MainWindowTest, MenuBarHasFileStationViewHelpInThatOrder) {
     QStringList titles;
     for (const QAction* entry : window->menuBar()->actions()) {
         titles << plain(entry->text());
     }
-    EXPECT_EQ(titles, (QStringList{QStringLiteral("File"), QStringLiteral("View"), QStringLiteral("Help")}));
+    EXPECT_EQ(titles, (QStringList{QStringLiteral("File"), QStringLiteral("Station"), QStringLiteral("View"),
+                                   QStringLiteral("Help")}));
+}
+
+TEST_F(MainWindowTest, StationMenuHasConnect) {
+    EXPECT_TRUE(menu("stationMenu")->actions().contains(action("connectAction")));
+    EXPECT_EQ(actionText("connectAction"), QStringLiteral("Connect…"));
 }
 
 TEST_F(MainWindowTest, FileMenuHasQuitWithStandardShortcut) {
@@ -141,6 +147,8 @@ TEST_F(MainWindowTest, DeutschTranslatesMenusAndStatus) {
     EXPECT_EQ(translations.current(), Language::German);
     EXPECT_EQ(menuTitle("fileMenu"), QStringLiteral("Datei"));
     EXPECT_EQ(actionText("quitAction"), QStringLiteral("Beenden"));
+    EXPECT_EQ(menuTitle("stationMenu"), QStringLiteral("Zentrale"));
+    EXPECT_EQ(actionText("connectAction"), QStringLiteral("Verbinden …"));
     EXPECT_EQ(menuTitle("viewMenu"), QStringLiteral("Ansicht"));
     EXPECT_EQ(menuTitle("languageMenu"), QStringLiteral("Sprache"));
     EXPECT_EQ(menuTitle("helpMenu"), QStringLiteral("Hilfe"));

@@ -1,0 +1,136 @@
+#pragma once
+
+#include "connection/StationEndpoint.h"
+#include "station/StartupSequence.h"
+#include "station/StationSession.h"
+
+#include <QObject>
+#include <QString>
+#include <memory>
+#include <optional>
+
+namespace stellwerk::connection {
+
+class StationLink;
+
+// What the start-up is doing, in a person's words.
+enum class LoadingStep { ListingDevices, WakingUp, ReadingDevices, DownloadingFiles, ReadingStates };
+
+// How far loading the configuration has come: step n of m, and the file being downloaded.
+struct LoadingProgress {
+    LoadingStep step = LoadingStep::ListingDevices;
+    int stepNumber = 0;
+    int stepCount = station::StartupSequence::StepCount;
+    QString file; // "lokomotive.cs2" while a file downloads, else empty
+    int fileNumber = 0;
+    int fileCount = 0;
+    qsizetype received = 0;
+    qsizetype announced = 0; // 0 until the station announced the size
+
+    // Percent of the current file, when its size is known.
+    std::optional<int> percent() const;
+};
+
+// What the station's configuration holds, once loaded.
+struct StationCounts {
+    int locomotives = 0;
+    int accessories = 0;
+    int routes = 0;
+    int pages = 0;
+    int devices = 0;
+
+    static StationCounts of(const station::StartupResult& result);
+    friend bool operator==(const StationCounts&, const StationCounts&) = default;
+};
+
+// How patient the connection is; the defaults suit a CS2 on a LAN and the embedded simulator.
+struct ConnectionSettings {
+    station::StationSettings session{};
+    station::StartupOptions startup{};
+};
+
+// The one object the app holds to be connected to a station. Given an address (udp://, tcp://, can://,
+// see can/TransportAddress.h) it opens the transport, runs the station session's start-up and watches
+// liveness; given none it starts the embedded simulated CS2 and reaches it over a real TCP transport.
+// Its state is in user terms; the model takes the session and the start-up result from here.
+// After the station was silent or the connection was lost, the start-up runs again (the station may
+// have restarted, and others may have changed what we missed).
+class StationConnection final : public QObject {
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(StationConnection)
+
+public:
+    enum class State { Disconnected, Connecting, LoadingConfiguration, Ready, Silent, Failed };
+    Q_ENUM(State)
+
+    explicit StationConnection(ConnectionSettings settings = {}, QObject* parent = nullptr);
+    ~StationConnection() override;
+
+    // Connects to the station at `url`; an empty url starts the embedded simulated station. Any
+    // previous connection ends first.
+    void connectTo(const QString& url);
+    void connectToSimulator() { connectTo(QString()); }
+    void disconnectFromStation();
+
+    State state() const { return state_; }
+    // The address given to connectTo() (empty for the embedded station).
+    const QString& address() const { return address_; }
+    const StationEndpoint& endpoint() const { return endpoint_; }
+    QString description() const { return endpoint_.description(); }
+    const LoadingProgress& progress() const { return progress_; }
+    // What the last finished start-up found (empty counts before the first one finished).
+    StationCounts counts() const { return StationCounts::of(result_); }
+    const station::StartupResult& startupResult() const { return result_; }
+    // The session while connected (also during the start-up), else null.
+    station::StationSession* session() const;
+    // Why the connection failed (state Failed), in English.
+    QString failureReason() const { return failure_; }
+    // The last problem reported (connection refused, a file that could not be read, ...).
+    QString lastProblem() const { return lastProblem_; }
+    // The embedded station's TCP port while it runs, else 0 (for diagnostics and tests).
+    std::uint16_t embeddedPort() const;
+
+signals:
+    void stateChanged(stellwerk::connection::StationConnection::State state);
+    void progressChanged(const stellwerk::connection::LoadingProgress& progress);
+    // Something a person should see; the state does not necessarily change.
+    void problem(const QString& message);
+    // A new session exists and its start-up is about to run: the moment to create the model.
+    void sessionStarted(stellwerk::station::StationSession* session);
+    // A start-up finished (the first one, and again after each reload): the moment to load the model.
+    void configurationLoaded(const stellwerk::station::StartupResult& result);
+
+private:
+    void open(std::unique_ptr<can::Transport> transport);
+    void fail(const QString& reason);
+    void watchTransport();
+    void transportStateChanged(can::Transport::State state);
+    void stationSilent();
+    void stationRecovered();
+    void runStartup();
+    void reloadWhenPossible();
+    void startupStep(station::StartupSequence::Step step, int number, int count);
+    void downloadProgress(const QString& key, qsizetype received, qsizetype announced, int file, int files);
+    void startupReady(const station::StartupResult& result);
+    void report(const QString& message);
+    void updateState();
+    State evaluate() const;
+
+    ConnectionSettings settings_;
+    std::unique_ptr<StationLink> link_;
+    QString address_;
+    StationEndpoint endpoint_;
+    State state_ = State::Disconnected;
+    LoadingProgress progress_;
+    station::StartupResult result_;
+    QString failure_;
+    QString lastProblem_;
+    bool everConnected_ = false;
+    bool lost_ = false;    // the transport lost its connection and is trying again
+    bool silent_ = false;  // the station stopped answering pings
+    bool loading_ = false; // a start-up runs
+    bool loaded_ = false;  // a start-up finished
+    bool reload_ = false;  // run the start-up again once the station is back
+};
+
+} // namespace stellwerk::connection
