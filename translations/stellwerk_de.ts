@@ -150,6 +150,37 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::ContactTableModel</name>
+    <message>
+        <source>Contact</source>
+        <translation>Kontakt</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Last change</source>
+        <translation>Letzte Änderung</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>occupied</source>
+        <translation>besetzt</translation>
+    </message>
+    <message>
+        <source>free</source>
+        <translation>frei</translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::FrameDecoderPanel</name>
     <message>
         <source>unreadable</source>
@@ -230,6 +261,72 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::LayoutOverview</name>
+    <message>
+        <source>No station connected</source>
+        <translation>Keine Zentrale verbunden</translation>
+    </message>
+    <message>
+        <source>Track power: not reported yet</source>
+        <translation>Gleisspannung: noch nicht gemeldet</translation>
+    </message>
+    <message>
+        <source>Track power: on, trains may run</source>
+        <translation>Gleisspannung: an, Züge dürfen fahren</translation>
+    </message>
+    <message>
+        <source>Track power: on, every train halted</source>
+        <translation>Gleisspannung: an, alle Züge angehalten</translation>
+    </message>
+    <message>
+        <source>Track power: off (stop)</source>
+        <translation>Gleisspannung: aus (Stopp)</translation>
+    </message>
+    <message>
+        <source>Locomotives</source>
+        <translation>Loks</translation>
+    </message>
+    <message>
+        <source>Feedback contacts</source>
+        <translation>Rückmeldekontakte</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::LocomotiveTableModel</name>
+    <message>
+        <source>Locomotive</source>
+        <translation>Lok</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Richtung</translation>
+    </message>
+    <message>
+        <source>Functions on</source>
+        <translation>Funktionen an</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>backward</source>
+        <translation>rückwärts</translation>
+    </message>
+    <message>
+        <source>forward</source>
+        <translation>vorwärts</translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::MainWindow</name>
     <message>
         <source>&amp;File</source>
@@ -278,6 +375,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Choose the station to connect to, or the simulated one</source>
         <translation>Die Zentrale wählen, mit der Stellwerk sich verbindet, oder die simulierte</translation>
+    </message>
+    <message>
+        <source>Layout</source>
+        <translation>Anlage</translation>
     </message>
 </context>
 </TS>

@@ -147,6 +147,37 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::ContactTableModel</name>
+    <message>
+        <source>Contact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Last change</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>occupied</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>free</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::FrameDecoderPanel</name>
     <message>
         <source>unreadable</source>
@@ -227,6 +258,72 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::LayoutOverview</name>
+    <message>
+        <source>No station connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track power: not reported yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track power: on, trains may run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track power: on, every train halted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track power: off (stop)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Locomotives</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feedback contacts</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::LocomotiveTableModel</name>
+    <message>
+        <source>Locomotive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Functions on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>backward</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>forward</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::MainWindow</name>
     <message>
         <source>&amp;File</source>
@@ -274,6 +371,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Choose the station to connect to, or the simulated one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Layout</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -7,6 +7,7 @@
 #include "FrameDecoderPanel.h"
 #include "LanguageMenu.h"
 #include "LanguageSettings.h"
+#include "LayoutOverview.h"
 #include "Translations.h"
 #include "connection/StationConnection.h"
 
@@ -44,6 +45,8 @@ void MainWindow::createWorkspace() {
     m_workspaceTabs->setObjectName(QStringLiteral("workspaceTabs"));
     m_workspaceTabs->setDocumentMode(true);
     m_workspaceTabs->setMovable(true);
+    m_layoutOverview = new LayoutOverview(m_workspaceTabs);
+    m_workspaceTabs->addTab(m_layoutOverview, QString());
     m_frameDecoder = new FrameDecoderPanel(m_workspaceTabs);
     m_workspaceTabs->addTab(m_frameDecoder, QString());
     setCentralWidget(m_workspaceTabs);
@@ -75,6 +78,10 @@ void MainWindow::setConnection(connection::StationConnection* station) {
                 [this](const QString& message) { showStationProblem(message); });
         connect(m_connection, &QObject::destroyed, this, [this] { m_connection = nullptr; });
     }
+}
+
+void MainWindow::setRailway(const model::Railway* railway) {
+    m_layoutOverview->setRailway(railway);
 }
 
 // A failure is already on the station's status line; other problems pass by on the left for a while.
@@ -122,6 +129,7 @@ void MainWindow::retranslate() {
     m_helpMenu->setTitle(tr("&Help"));
     m_aboutAction->setText(tr("&About Stellwerk"));
     m_aboutAction->setStatusTip(tr("Show the version of Stellwerk and of Qt"));
+    m_workspaceTabs->setTabText(m_workspaceTabs->indexOf(m_layoutOverview), tr("Layout"));
     m_workspaceTabs->setTabText(m_workspaceTabs->indexOf(m_frameDecoder), tr("Frame decoder"));
 }
 

@@ -9,16 +9,20 @@ class QTabWidget;
 namespace stellwerk::connection {
 class StationConnection;
 }
+namespace stellwerk::model {
+class Railway;
+}
 
 namespace stellwerk::ui {
 
 class ConnectionStatus;
 class FrameDecoderPanel;
 class LanguageMenu;
+class LayoutOverview;
 class Translations;
 
-// The station's main window: menus, the station's status line and the workspace tabs that later features
-// (throttles, track plan, bus monitor) fill.
+// The station's main window: menus, the station's status line and the workspace tabs: the layout
+// overview first, then the frame decoder, and what later features (throttles, track plan, bus monitor) add.
 class MainWindow final : public QMainWindow {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(MainWindow)
@@ -29,6 +33,9 @@ public:
     // Features add their pages here with addTab().
     QTabWidget* workspaceTabs() const { return m_workspaceTabs; }
     FrameDecoderPanel* frameDecoder() const { return m_frameDecoder; }
+    LayoutOverview* layoutOverview() const { return m_layoutOverview; }
+    // The railway the layout overview shows (null: none); see RailwayBinding.
+    void setRailway(const model::Railway* railway);
     // The station connection the status bar shows and Station → Connect… reconnects (null: none). It
     // must outlive the window or be replaced before it goes.
     void setConnection(connection::StationConnection* station);
@@ -52,6 +59,7 @@ private:
 
     Translations& m_translations;
     QTabWidget* m_workspaceTabs = nullptr;
+    LayoutOverview* m_layoutOverview = nullptr;
     FrameDecoderPanel* m_frameDecoder = nullptr;
     QMenu* m_fileMenu = nullptr;
     QAction* m_quitAction = nullptr;

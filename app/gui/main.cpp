@@ -5,9 +5,11 @@
 #include "FrameDecoderPanel.h"
 #include "LanguageSettings.h"
 #include "MainWindow.h"
+#include "RailwayBinding.h"
 #include "StationUrlSettings.h"
 #include "Translations.h"
 #include "connection/StationConnection.h"
+#include "model/Railway.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -21,6 +23,9 @@ using stellwerk::connection::StationConnection;
 
 // How long a screenshot waits for the station to be ready before it shows whatever state it reached.
 constexpr int ScreenshotPatienceMs = 15000;
+// How long it waits for texts to be laid out, and, once the station is ready, for trains to move.
+constexpr int SettleMs = 200;
+constexpr int LivelyMs = 1500;
 
 struct Options {
     QString screenshotFile; // empty: run normally
@@ -81,20 +86,21 @@ bool settled(StationConnection::State state) {
            state != StationConnection::State::LoadingConfiguration;
 }
 
-// For documentation: grabs the shown window once the station is ready (or failed, or did not get there in
-// time), after the status bar had a moment to lay out its new text; then ends with 0 or 1.
+// For documentation: grabs the shown window a moment after the station is ready, so that the demo's trains
+// have moved and the layout shows occupied contacts and their times (or at once when it failed, or did not
+// get there in time, after the status bar had a moment to lay out its new text); then ends with 0 or 1.
 void saveScreenshotAndQuit(QWidget& window, const StationConnection& connection, const QString& file) {
     auto* patience = new QTimer(&window);
     patience->setSingleShot(true);
-    const auto grabSoon = [&window, file, patience] {
+    const auto grabIn = [&window, file, patience](int delayMs) {
         patience->stop();
-        QTimer::singleShot(200, &window, [&window, file] { grabAndQuit(window, file); });
+        QTimer::singleShot(delayMs, &window, [&window, file] { grabAndQuit(window, file); });
     };
-    QObject::connect(patience, &QTimer::timeout, &window, grabSoon);
+    QObject::connect(patience, &QTimer::timeout, &window, [grabIn] { grabIn(SettleMs); });
     QObject::connect(&connection, &StationConnection::stateChanged, patience,
-                     [grabSoon, patience](StationConnection::State state) {
+                     [grabIn, patience](StationConnection::State state) {
                          if (patience->isActive() && settled(state))
-                             grabSoon();
+                             grabIn(state == StationConnection::State::Ready ? LivelyMs : SettleMs);
                      });
     patience->start(ScreenshotPatienceMs);
 }
@@ -111,14 +117,18 @@ int main(int argc, char* argv[]) {
 
     stellwerk::ui::Translations translations;
     translations.select(stellwerk::ui::LanguageSettings::load());
-    StationConnection connection; // outlives the window that shows it
+    StationConnection connection;                       // outlives the railway and the window
+    stellwerk::ui::RailwayBinding railways(connection); // a railway model per session
     stellwerk::ui::MainWindow window(translations);
     window.setConnection(&connection);
+    QObject::connect(&railways, &stellwerk::ui::RailwayBinding::railwayChanged, &window,
+                     &stellwerk::ui::MainWindow::setRailway);
     if (!options.captureFile.isEmpty()) {
         if (const QString error = window.frameDecoder()->loadCapture(options.captureFile); !error.isEmpty()) {
             std::fprintf(stderr, "stellwerk: %s\n", qPrintable(error));
             return 1;
         }
+        window.workspaceTabs()->setCurrentWidget(window.frameDecoder()); // show what was asked for
     }
     window.show();
     if (!options.screenshotFile.isEmpty()) {

@@ -1,12 +1,54 @@
 #include "connection/EmbeddedStation.h"
 
+#include "cs2/Codec.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
 #include "sim/TrainMovement.h"
 #include "sim/TrainTrack.h"
 
+#include <QTimer>
+
 namespace stellwerk::connection {
+
+namespace {
+
+// The demo's trains that run when the app starts: BR 218 Ost and ICE 3 Velaro, both placed on the loop
+// (Gleis 1 - Ausfahrt Ost - Block 1..4 - Einfahrt West with the turnouts straight, as in
+// magnetartikel.cs2), at the same moderate speed so that they keep their distance. A contact changes
+// every second or two.
+struct DemoRun {
+    std::uint32_t locId;
+    std::uint16_t speed; // 0..1000
+};
+constexpr DemoRun DemoRuns[] = {{0x4001, 600}, {0x4002, 600}};
+constexpr std::uint8_t Headlights = 0; // F0
+
+// Commands the station as a controller on the bus would, before anyone connects.
+void command(sim::SimulatedStation& station, cs2::MessageBody body) {
+    station.receive(cs2::encode(cs2::Message{0, false, 0, std::move(body)}));
+}
+
+void startDemoTrains(sim::SimulatedStation& station) {
+    for (const DemoRun& run : DemoRuns) {
+        command(station, cs2::LocoFunction{cs2::LocId(run.locId), Headlights, std::uint8_t(1), {}});
+        command(station, cs2::LocoSpeed{cs2::LocId(run.locId), run.speed});
+    }
+}
+
+// The station announces its track power only when it is switched; a real one has a person to press Go.
+// The demo's "person" presses it whenever a controller connects, so that the app learns the power is on.
+void pressGoForNewControllers(sim::StationServer& server, sim::SimulatedStation& station) {
+    QObject::connect(&server, &sim::StationServer::tcpClientsChanged, &station,
+                     [&station, clients = 0](int count) mutable {
+                         if (count > clients)
+                             QTimer::singleShot(0, &station,
+                                                [&station] { command(station, cs2::SystemGo{}); });
+                         clients = count;
+                     });
+}
+
+} // namespace
 
 EmbeddedStation::EmbeddedStation() = default;
 
@@ -23,7 +65,10 @@ bool EmbeddedStation::start() {
         error_ = QStringLiteral("the demo layout is not built into this program");
         return false;
     }
-    station_ = std::make_unique<sim::SimulatedStation>(std::move(layout));
+    sim::SimulatedStation::Options options;
+    options.power = sim::SimulatedStation::Power::Running; // the demo is alive; a real CS2 starts in STOP
+    station_ = std::make_unique<sim::SimulatedStation>(std::move(layout), options);
+    startDemoTrains(*station_);
     sim::StationServerSettings settings;
     settings.listenAddress = QHostAddress(QHostAddress::LocalHost);
     settings.udp = false;
@@ -33,6 +78,7 @@ bool EmbeddedStation::start() {
         error_ = server_->errorString();
         return false;
     }
+    pressGoForNewControllers(*server_, *station_);
     trains_ = std::make_unique<sim::TrainMovement>(*station_, sim::TrainTrack::demo());
     trains_->start();
     return true;

@@ -12,9 +12,10 @@ class TrainMovement;
 
 namespace stellwerk::connection {
 
-// The simulated CS2 the app uses when no station is configured: the demo layout with moving trains,
-// listening for TCP on a free port of 127.0.0.1, so that the app reaches it through a real transport
-// like any other station (never as a shortcut inside the app).
+// The simulated CS2 the app uses when no station is configured: the demo layout with track power on and
+// two trains running round the loop (a real station is never commanded on start), listening for TCP on a free
+// port of 127.0.0.1, so that the app reaches it through a real transport like any other station (never as a
+// shortcut inside the app).
 class EmbeddedStation final {
 public:
     EmbeddedStation();

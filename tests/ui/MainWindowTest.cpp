@@ -122,24 +122,27 @@ TEST_F(MainWindowTest, StatusBarSaysNoStationConnected) {
     EXPECT_EQ(stationStatus(), QStringLiteral("No station connected"));
 }
 
-TEST_F(MainWindowTest, WorkspaceIsATabWidgetInTheCentreStartingWithTheFrameDecoder) {
+TEST_F(MainWindowTest, WorkspaceIsATabWidgetInTheCentreWithTheLayoutThenTheFrameDecoder) {
     auto* tabs = window->findChild<QTabWidget*>(QStringLiteral("workspaceTabs"));
     ASSERT_NE(tabs, nullptr);
     EXPECT_EQ(window->centralWidget(), tabs);
     EXPECT_EQ(window->workspaceTabs(), tabs);
-    ASSERT_EQ(tabs->count(), 1);
-    EXPECT_EQ(tabs->widget(0)->objectName(), QStringLiteral("frameDecoderPanel"));
-    EXPECT_EQ(tabs->tabText(0), QStringLiteral("Frame decoder"));
+    ASSERT_EQ(tabs->count(), 2);
+    EXPECT_EQ(tabs->widget(0)->objectName(), QStringLiteral("layoutOverview"));
+    EXPECT_EQ(tabs->tabText(0), QStringLiteral("Layout"));
+    EXPECT_EQ(tabs->widget(1)->objectName(), QStringLiteral("frameDecoderPanel"));
+    EXPECT_EQ(tabs->tabText(1), QStringLiteral("Frame decoder"));
 }
 
 TEST_F(MainWindowTest, DeutschTranslatesTheFrameDecoder) {
     choose("languageGerman");
-    EXPECT_EQ(window->workspaceTabs()->tabText(0), QStringLiteral("Telegramm-Decoder"));
+    EXPECT_EQ(window->workspaceTabs()->tabText(0), QStringLiteral("Anlage"));
+    EXPECT_EQ(window->workspaceTabs()->tabText(1), QStringLiteral("Telegramm-Decoder"));
     auto* results = window->findChild<QTreeWidget*>(QStringLiteral("frameResults"));
     ASSERT_NE(results, nullptr);
     EXPECT_EQ(results->headerItem()->text(2), QStringLiteral("Meldung"));
     choose("languageEnglish");
-    EXPECT_EQ(window->workspaceTabs()->tabText(0), QStringLiteral("Frame decoder"));
+    EXPECT_EQ(window->workspaceTabs()->tabText(1), QStringLiteral("Frame decoder"));
 }
 
 TEST_F(MainWindowTest, DeutschTranslatesMenusAndStatus) {
