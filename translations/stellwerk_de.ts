@@ -17,6 +17,156 @@
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::BusMonitorModel</name>
+    <message>
+        <source>received</source>
+        <translation>empfangen</translation>
+    </message>
+    <message>
+        <source>sent</source>
+        <translation>gesendet</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Richtung</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Meldung</translation>
+    </message>
+    <message>
+        <source>Details</source>
+        <translation>Details</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>Telegramm</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::BusMonitorPanel</name>
+    <message>
+        <source>Recording stopped</source>
+        <translation>Aufzeichnung beendet</translation>
+    </message>
+    <message>
+        <source>The frames could not be written to %1; recording stopped.</source>
+        <translation>Die Telegramme konnten nicht in %1 geschrieben werden; die Aufzeichnung wurde beendet.</translation>
+    </message>
+    <message>
+        <source>Record frames to</source>
+        <translation>Telegramme aufzeichnen in</translation>
+    </message>
+    <message>
+        <source>candump logs (*.log);;All files (*)</source>
+        <translation>candump-Protokolle (*.log);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Recording not started</source>
+        <translation>Aufzeichnung nicht gestartet</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln line(s) held no frame, the first one is line %1.</source>
+        <translation>
+            <numerusform>%Ln Zeile enthielt kein Telegramm, sie ist Zeile %1.</numerusform>
+            <numerusform>%Ln Zeilen enthielten kein Telegramm, die erste ist Zeile %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Open a candump log</source>
+        <translation>candump-Protokoll öffnen</translation>
+    </message>
+    <message>
+        <source>Log file</source>
+        <translation>Protokolldatei</translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln frame(s) received</source>
+        <translation>
+            <numerusform>%Ln Telegramm empfangen</numerusform>
+            <numerusform>%Ln Telegramme empfangen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln row(s) match the filter</source>
+        <translation>
+            <numerusform>%Ln Zeile passt zum Filter</numerusform>
+            <numerusform>%Ln Zeilen passen zum Filter</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>paused, %Ln frame(s) arrived since</source>
+        <translation>
+            <numerusform>angehalten, seitdem %Ln Telegramm eingetroffen</numerusform>
+            <numerusform>angehalten, seitdem %Ln Telegramme eingetroffen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Filter by message, Loc-ID or bytes, e.g. loco.speed or 0xC003</source>
+        <translation>Filtern nach Meldung, Loc-ID oder Bytes, z. B. loco.speed oder 0xC003</translation>
+    </message>
+    <message>
+        <source>&amp;Resume</source>
+        <translation>&amp;Weiter</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pause</translation>
+    </message>
+    <message>
+        <source>Stop adding rows; frames that arrive meanwhile are kept and shown on resume</source>
+        <translation>Keine Zeilen mehr anfügen; Telegramme, die inzwischen eintreffen, werden aufbewahrt und bei „Weiter“ gezeigt</translation>
+    </message>
+    <message>
+        <source>C&amp;lear</source>
+        <translation>&amp;Leeren</translation>
+    </message>
+    <message>
+        <source>Stop &amp;recording</source>
+        <translation>Aufzeichnung be&amp;enden</translation>
+    </message>
+    <message>
+        <source>&amp;Record…</source>
+        <translation>Au&amp;fzeichnen …</translation>
+    </message>
+    <message>
+        <source>Recording to %1</source>
+        <translation>Aufzeichnung in %1</translation>
+    </message>
+    <message>
+        <source>Write every frame from now on to a candump log file</source>
+        <translation>Ab jetzt jedes Telegramm in eine candump-Protokolldatei schreiben</translation>
+    </message>
+    <message>
+        <source>&amp;Open log…</source>
+        <translation>Protokoll &amp;öffnen …</translation>
+    </message>
+    <message>
+        <source>Show the frames of a candump log file instead of the current ones</source>
+        <translation>Die Telegramme einer candump-Protokolldatei statt der aktuellen zeigen</translation>
+    </message>
+    <message>
+        <source>&amp;Keep:</source>
+        <translation>&amp;Behalten:</translation>
+    </message>
+    <message>
+        <source> frames</source>
+        <translation> Telegramme</translation>
+    </message>
+    <message>
+        <source>How many frames the table keeps; older ones are dropped</source>
+        <translation>Wie viele Telegramme die Tabelle behält; ältere werden verworfen</translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::ConnectDialog</name>
     <message>
         <source>Connect to a station</source>
@@ -254,6 +404,13 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::GaugeWidget</name>
+    <message>
+        <source>%1: no answer to the last request, the value is old</source>
+        <translation>%1: keine Antwort auf die letzte Abfrage, der Wert ist alt</translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::LanguageMenu</name>
     <message>
         <source>&amp;Language</source>
@@ -379,6 +536,57 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Layout</source>
         <translation>Anlage</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Bus monitor</source>
+        <translation>Busmonitor</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::StatusPanel</name>
+    <message>
+        <source>Track current (main)</source>
+        <translation>Gleisstrom Hauptgleis</translation>
+    </message>
+    <message>
+        <source>Track current (programming)</source>
+        <translation>Gleisstrom Programmiergleis</translation>
+    </message>
+    <message>
+        <source>Track current</source>
+        <translation>Gleisstrom</translation>
+    </message>
+    <message>
+        <source>Voltage</source>
+        <translation>Spannung</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>Temperatur</translation>
+    </message>
+    <message>
+        <source>%1, article %2, version %3</source>
+        <translation>%1, Artikel %2, Version %3</translation>
+    </message>
+    <message>
+        <source>No device has described its readings yet.</source>
+        <translation>Noch kein Gerät hat seine Messwerte beschrieben.</translation>
+    </message>
+    <message>
+        <source>a device</source>
+        <translation>einem Gerät</translation>
+    </message>
+    <message>
+        <source>channel %1</source>
+        <translation>Kanal %1</translation>
+    </message>
+    <message>
+        <source>Overload on %1 (%2): the track power is off. Look for a short circuit or a derailed train, then switch the power on again.</source>
+        <translation>Überlast an %1 (%2): Der Gleisstrom ist aus. Suchen Sie nach einem Kurzschluss oder einem entgleisten Zug und schalten Sie den Strom dann wieder ein.</translation>
     </message>
 </context>
 </TS>

@@ -17,6 +17,156 @@
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::BusMonitorModel</name>
+    <message>
+        <source>received</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Details</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::BusMonitorPanel</name>
+    <message>
+        <source>Recording stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The frames could not be written to %1; recording stopped.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Record frames to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>candump logs (*.log);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Recording not started</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cannot be written: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln line(s) held no frame, the first one is line %1.</source>
+        <translation>
+            <numerusform>%Ln line held no frame, it is line %1.</numerusform>
+            <numerusform>%Ln lines held no frame, the first one is line %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Open a candump log</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Log file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln frame(s) received</source>
+        <translation>
+            <numerusform>%Ln frame received</numerusform>
+            <numerusform>%Ln frames received</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln row(s) match the filter</source>
+        <translation>
+            <numerusform>%Ln row matches the filter</numerusform>
+            <numerusform>%Ln rows match the filter</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>paused, %Ln frame(s) arrived since</source>
+        <translation>
+            <numerusform>paused, %Ln frame arrived since</numerusform>
+            <numerusform>paused, %Ln frames arrived since</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Filter by message, Loc-ID or bytes, e.g. loco.speed or 0xC003</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop adding rows; frames that arrive meanwhile are kept and shown on resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C&amp;lear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop &amp;recording</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Record…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Recording to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write every frame from now on to a candump log file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Open log…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the frames of a candump log file instead of the current ones</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Keep:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How many frames the table keeps; older ones are dropped</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::ConnectDialog</name>
     <message>
         <source>Connect to a station</source>
@@ -251,6 +401,13 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::GaugeWidget</name>
+    <message>
+        <source>%1: no answer to the last request, the value is old</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::LanguageMenu</name>
     <message>
         <source>&amp;Language</source>
@@ -375,6 +532,57 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bus monitor</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::StatusPanel</name>
+    <message>
+        <source>Track current (main)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track current (programming)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track current</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Voltage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, article %2, version %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No device has described its readings yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>channel %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Overload on %1 (%2): the track power is off. Look for a short circuit or a derailed train, then switch the power on again.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -2,12 +2,14 @@
 
 #include "AboutBox.h"
 #include "ApplicationInfo.h"
+#include "BusMonitorPanel.h"
 #include "ConnectDialog.h"
 #include "ConnectionStatus.h"
 #include "FrameDecoderPanel.h"
 #include "LanguageMenu.h"
 #include "LanguageSettings.h"
 #include "LayoutOverview.h"
+#include "StatusPanel.h"
 #include "Translations.h"
 #include "connection/StationConnection.h"
 
@@ -47,6 +49,11 @@ void MainWindow::createWorkspace() {
     m_workspaceTabs->setMovable(true);
     m_layoutOverview = new LayoutOverview(m_workspaceTabs);
     m_workspaceTabs->addTab(m_layoutOverview, QString());
+    // What a running session needs first, the tools for looking at the bus last.
+    m_statusPanel = new StatusPanel(m_workspaceTabs);
+    m_workspaceTabs->addTab(m_statusPanel, QString());
+    m_busMonitor = new BusMonitorPanel(m_workspaceTabs);
+    m_workspaceTabs->addTab(m_busMonitor, QString());
     m_frameDecoder = new FrameDecoderPanel(m_workspaceTabs);
     m_workspaceTabs->addTab(m_frameDecoder, QString());
     setCentralWidget(m_workspaceTabs);
@@ -73,6 +80,7 @@ void MainWindow::setConnection(connection::StationConnection* station) {
         disconnect(m_connection, nullptr, this, nullptr);
     m_connection = station;
     m_stationStatus->setConnection(station);
+    m_busMonitor->setConnection(station);
     if (m_connection) {
         connect(m_connection, &connection::StationConnection::problem, this,
                 [this](const QString& message) { showStationProblem(message); });
@@ -80,8 +88,9 @@ void MainWindow::setConnection(connection::StationConnection* station) {
     }
 }
 
-void MainWindow::setRailway(const model::Railway* railway) {
+void MainWindow::setRailway(model::Railway* railway) {
     m_layoutOverview->setRailway(railway);
+    m_statusPanel->setRailway(railway);
 }
 
 // A failure is already on the station's status line; other problems pass by on the left for a while.
@@ -131,6 +140,8 @@ void MainWindow::retranslate() {
     m_aboutAction->setStatusTip(tr("Show the version of Stellwerk and of Qt"));
     m_workspaceTabs->setTabText(m_workspaceTabs->indexOf(m_layoutOverview), tr("Layout"));
     m_workspaceTabs->setTabText(m_workspaceTabs->indexOf(m_frameDecoder), tr("Frame decoder"));
+    m_workspaceTabs->setTabText(m_workspaceTabs->indexOf(m_statusPanel), tr("Status"));
+    m_workspaceTabs->setTabText(m_workspaceTabs->indexOf(m_busMonitor), tr("Bus monitor"));
 }
 
 void MainWindow::chooseLanguage(Language language) {

@@ -15,10 +15,12 @@ class Railway;
 
 namespace stellwerk::ui {
 
+class BusMonitorPanel;
 class ConnectionStatus;
 class FrameDecoderPanel;
 class LanguageMenu;
 class LayoutOverview;
+class StatusPanel;
 class Translations;
 
 // The station's main window: menus, the station's status line and the workspace tabs: the layout
@@ -34,8 +36,10 @@ public:
     QTabWidget* workspaceTabs() const { return m_workspaceTabs; }
     FrameDecoderPanel* frameDecoder() const { return m_frameDecoder; }
     LayoutOverview* layoutOverview() const { return m_layoutOverview; }
-    // The railway the layout overview shows (null: none); see RailwayBinding.
-    void setRailway(const model::Railway* railway);
+    StatusPanel* statusPanel() const { return m_statusPanel; }
+    BusMonitorPanel* busMonitor() const { return m_busMonitor; }
+    // The railway the layout overview and the status page show (null: none); see RailwayBinding.
+    void setRailway(model::Railway* railway);
     // The station connection the status bar shows and Station → Connect… reconnects (null: none). It
     // must outlive the window or be replaced before it goes.
     void setConnection(connection::StationConnection* station);
@@ -61,6 +65,8 @@ private:
     QTabWidget* m_workspaceTabs = nullptr;
     LayoutOverview* m_layoutOverview = nullptr;
     FrameDecoderPanel* m_frameDecoder = nullptr;
+    StatusPanel* m_statusPanel = nullptr;
+    BusMonitorPanel* m_busMonitor = nullptr;
     QMenu* m_fileMenu = nullptr;
     QAction* m_quitAction = nullptr;
     QMenu* m_stationMenu = nullptr;

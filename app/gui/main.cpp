@@ -31,6 +31,7 @@ struct Options {
     QString screenshotFile; // empty: run normally
     QString captureFile;    // a capture to open in the frame decoder
     QString stationUrl;     // the station to connect to; empty: the embedded simulated station
+    QString tab;            // object name of the workspace tab to show first (for screenshots)
 };
 
 // --simulated wins over --station, which wins over the settings.
@@ -68,8 +69,13 @@ Options parseOptions(const QApplication& app) {
     QCommandLineOption simulated(QStringLiteral("simulated"),
                                  QStringLiteral("Connect to the embedded simulated station (demo layout)."));
     parser.addOption(simulated);
+    QCommandLineOption tab(QStringLiteral("tab"), QStringLiteral("Workspace tab to show (object name)."),
+                           QStringLiteral("name"));
+    tab.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOption(tab);
     parser.process(app);
-    return Options{parser.value(screenshot), parser.value(decode), stationUrl(parser, station, simulated)};
+    return Options{parser.value(screenshot), parser.value(decode), stationUrl(parser, station, simulated),
+                   parser.value(tab)};
 }
 
 void grabAndQuit(QWidget& window, const QString& file) {
@@ -129,6 +135,10 @@ int main(int argc, char* argv[]) {
             return 1;
         }
         window.workspaceTabs()->setCurrentWidget(window.frameDecoder()); // show what was asked for
+    }
+    if (!options.tab.isEmpty()) {
+        if (auto* page = window.workspaceTabs()->findChild<QWidget*>(options.tab))
+            window.workspaceTabs()->setCurrentWidget(page);
     }
     window.show();
     if (!options.screenshotFile.isEmpty()) {

@@ -24,6 +24,22 @@ double StatusChannel::maximum() const {
     return labelValue(description_.endLabel);
 }
 
+std::array<StatusChannel::Zone, 4> StatusChannel::zones() const {
+    std::array<Zone, 4> zones;
+    for (std::size_t i = 0; i < zones.size(); ++i) {
+        // One byte per colour: red, green, blue and grey, two bits each from the top.
+        const std::uint8_t colour = description_.colours[i];
+        Zone& zone = zones[i];
+        zone.end = description_.scaled(description_.rangeEnds[i]);
+        zone.red = (colour >> 6) & 3;
+        zone.green = (colour >> 4) & 3;
+        zone.blue = (colour >> 2) & 3;
+        if (zone.red == 0 && zone.green == 0 && zone.blue == 0)
+            zone.red = zone.green = zone.blue = colour & 3;
+    }
+    return zones;
+}
+
 std::optional<double> StatusChannel::value() const {
     if (!raw_)
         return std::nullopt;

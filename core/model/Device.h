@@ -4,6 +4,7 @@
 
 #include <QDateTime>
 #include <QString>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -24,6 +25,17 @@ public:
     double minimum() const;
     double maximum() const;
     const station::ReadingChannel& description() const { return description_; }
+    // A coloured stretch of the scale (green, yellow, red ...) up to `end`, in the unit; each colour
+    // component 0..3 as the description's 2-bit fields give it.
+    struct Zone {
+        double end = 0;
+        int red = 0;
+        int green = 0;
+        int blue = 0;
+    };
+    // The description's four range ends and colours, scaled like the value; the first zone starts at
+    // minimum().
+    std::array<Zone, 4> zones() const;
 
     std::optional<std::uint16_t> raw() const { return raw_; }
     std::optional<double> value() const;

@@ -38,12 +38,26 @@ std::chrono::milliseconds ReadingPoller::interval() const {
 }
 
 void ReadingPoller::start() {
+    started_ = true;
+    if (!active_)
+        return;
     poll();
     timer_->start();
 }
 
 void ReadingPoller::stop() {
+    started_ = false;
     timer_->stop();
+}
+
+void ReadingPoller::setActive(bool active) {
+    if (active == active_)
+        return;
+    active_ = active;
+    if (!active_)
+        timer_->stop();
+    else if (started_)
+        start();
 }
 
 bool ReadingPoller::running() const {

@@ -44,6 +44,10 @@ public:
     void start();
     void stop();
     bool running() const;
+    // Pauses a started poller while nobody looks at the readings (a hidden gauge page) and resumes it;
+    // start() while inactive only takes note. Active from construction.
+    void setActive(bool active);
+    bool active() const { return active_; }
     // One round of requests now.
     void poll();
 
@@ -58,6 +62,8 @@ private:
     std::vector<ReadingSource> sources_;
     std::set<ReadingSource> pending_;
     std::vector<station::CommandId> sent_;
+    bool started_ = false;
+    bool active_ = true;
 };
 
 } // namespace stellwerk::model

@@ -1,6 +1,8 @@
 #include "MainWindow.h"
 
+#include "FrameDecoderPanel.h"
 #include "LanguageSettings.h"
+#include "LayoutOverview.h"
 #include "Translations.h"
 
 #include <QAction>
@@ -122,27 +124,30 @@ TEST_F(MainWindowTest, StatusBarSaysNoStationConnected) {
     EXPECT_EQ(stationStatus(), QStringLiteral("No station connected"));
 }
 
-TEST_F(MainWindowTest, WorkspaceIsATabWidgetInTheCentreWithTheLayoutThenTheFrameDecoder) {
+TEST_F(MainWindowTest, WorkspaceTabsAreLayoutStatusBusMonitorAndFrameDecoder) {
     auto* tabs = window->findChild<QTabWidget*>(QStringLiteral("workspaceTabs"));
     ASSERT_NE(tabs, nullptr);
     EXPECT_EQ(window->centralWidget(), tabs);
     EXPECT_EQ(window->workspaceTabs(), tabs);
-    ASSERT_EQ(tabs->count(), 2);
-    EXPECT_EQ(tabs->widget(0)->objectName(), QStringLiteral("layoutOverview"));
-    EXPECT_EQ(tabs->tabText(0), QStringLiteral("Layout"));
-    EXPECT_EQ(tabs->widget(1)->objectName(), QStringLiteral("frameDecoderPanel"));
-    EXPECT_EQ(tabs->tabText(1), QStringLiteral("Frame decoder"));
+    ASSERT_EQ(tabs->count(), 4);
+    const QStringList names = {"layoutOverview", "statusPanel", "busMonitorPanel", "frameDecoderPanel"};
+    const QStringList texts = {"Layout", "Status", "Bus monitor", "Frame decoder"};
+    for (int i = 0; i < 4; ++i) {
+        EXPECT_EQ(tabs->widget(i)->objectName(), names[i]);
+        EXPECT_EQ(tabs->tabText(i), texts[i]);
+    }
 }
 
 TEST_F(MainWindowTest, DeutschTranslatesTheFrameDecoder) {
     choose("languageGerman");
-    EXPECT_EQ(window->workspaceTabs()->tabText(0), QStringLiteral("Anlage"));
-    EXPECT_EQ(window->workspaceTabs()->tabText(1), QStringLiteral("Telegramm-Decoder"));
+    auto* tabs = window->workspaceTabs();
+    EXPECT_EQ(tabs->tabText(tabs->indexOf(window->layoutOverview())), QStringLiteral("Anlage"));
+    EXPECT_EQ(tabs->tabText(tabs->indexOf(window->frameDecoder())), QStringLiteral("Telegramm-Decoder"));
     auto* results = window->findChild<QTreeWidget*>(QStringLiteral("frameResults"));
     ASSERT_NE(results, nullptr);
     EXPECT_EQ(results->headerItem()->text(2), QStringLiteral("Meldung"));
     choose("languageEnglish");
-    EXPECT_EQ(window->workspaceTabs()->tabText(1), QStringLiteral("Frame decoder"));
+    EXPECT_EQ(tabs->tabText(tabs->indexOf(window->frameDecoder())), QStringLiteral("Frame decoder"));
 }
 
 TEST_F(MainWindowTest, DeutschTranslatesMenusAndStatus) {

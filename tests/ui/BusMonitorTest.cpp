@@ -1,0 +1,209 @@
+#include "BusMonitorModel.h"
+#include "BusMonitorPanel.h"
+#include "StationTestSupport.h"
+#include "Translations.h"
+#include "cs2/FrameText.h"
+
+#include <QAbstractItemModel>
+#include <QColor>
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTest>
+#include <cstdlib>
+#include <gtest/gtest.h>
+#include <vector>
+
+using namespace stellwerk;
+using namespace stellwerk::ui;
+using Direction = BusMonitorModel::Direction;
+
+namespace {
+
+// The demo trains pass a contact every second or two; generous for a loaded machine.
+constexpr int FramesMs = 10000;
+
+cs2::CanFrame frame(const char* text) {
+    const auto parsed = cs2::parseFrame(text);
+    EXPECT_TRUE(parsed.hasValue()) << text;
+    return parsed.hasValue() ? parsed.value().frame : cs2::CanFrame{};
+}
+
+// loco.speed for Loc-ID 0xC003 (DCC 3), speed 288, as in the protocol document.
+cs2::CanFrame locoSpeed() {
+    return frame("00084711 6 00 00 C0 03 01 20");
+}
+cs2::CanFrame systemStop() {
+    return frame("00004711 5 00 00 00 00 00");
+}
+
+QString cell(const QAbstractItemModel& model, int row, int column) {
+    return model.index(row, column).data().toString();
+}
+
+} // namespace
+
+TEST(BusMonitorModel, TenThousandFramesInOneBatchAreOneInsertion) {
+    BusMonitorModel model;
+    QSignalSpy inserted(&model, &QAbstractItemModel::rowsInserted);
+    const std::vector<cs2::CanFrame> frames(10000, locoSpeed());
+    model.addFrames(frames, Direction::Received);
+    EXPECT_EQ(model.rowCount(), 0); // not before the flush
+    ASSERT_TRUE(QTest::qWaitFor([&] { return model.rowCount() == 10000; }, 2000));
+    EXPECT_EQ(inserted.count(), 1);
+    EXPECT_EQ(model.totalFrames(), 10000u);
+    EXPECT_EQ(cell(model, 9999, BusMonitorModel::MessageColumn), QStringLiteral("loco.speed"));
+    EXPECT_EQ(cell(model, 0, BusMonitorModel::DirectionColumn), QStringLiteral("received"));
+    EXPECT_EQ(cell(model, 0, BusMonitorModel::FrameColumn), QStringLiteral("00084711 6 00 00 C0 03 01 20"));
+    EXPECT_TRUE(cell(model, 0, BusMonitorModel::DetailsColumn).contains(QStringLiteral("locId=0xC003")));
+}
+
+TEST(BusMonitorModel, HistoryLimitDropsTheOldestInOneRemoval) {
+    BusMonitorModel model;
+    model.setHistoryLimit(100);
+    const std::vector<cs2::CanFrame> stops(80, systemStop());
+    model.addFrames(stops, Direction::Received);
+    model.flush();
+    ASSERT_EQ(model.rowCount(), 80);
+    QSignalSpy removed(&model, &QAbstractItemModel::rowsRemoved);
+    QSignalSpy inserted(&model, &QAbstractItemModel::rowsInserted);
+    const std::vector<cs2::CanFrame> speeds(50, locoSpeed());
+    model.addFrames(speeds, Direction::Sent);
+    model.flush();
+    EXPECT_EQ(model.rowCount(), 100);
+    ASSERT_EQ(removed.count(), 1);
+    EXPECT_EQ(removed.at(0).at(1).toInt(), 0);
+    EXPECT_EQ(removed.at(0).at(2).toInt(), 29); // the 30 oldest
+    EXPECT_EQ(inserted.count(), 1);
+    EXPECT_EQ(cell(model, 0, BusMonitorModel::MessageColumn), QStringLiteral("system.stop"));
+    EXPECT_EQ(cell(model, 49, BusMonitorModel::MessageColumn), QStringLiteral("system.stop"));
+    EXPECT_EQ(cell(model, 50, BusMonitorModel::MessageColumn), QStringLiteral("loco.speed"));
+    EXPECT_EQ(cell(model, 50, BusMonitorModel::DirectionColumn), QStringLiteral("sent"));
+    EXPECT_EQ(model.totalFrames(), 130u);
+
+    model.setHistoryLimit(10);
+    EXPECT_EQ(model.rowCount(), 10);
+    EXPECT_EQ(cell(model, 0, BusMonitorModel::MessageColumn), QStringLiteral("loco.speed"));
+}
+
+TEST(BusMonitorModel, PauseHoldsRowsBackAndCountsThem) {
+    BusMonitorModel model;
+    model.setPaused(true);
+    const std::vector<cs2::CanFrame> frames(25, locoSpeed());
+    model.addFrames(frames, Direction::Received);
+    model.flush();
+    EXPECT_EQ(model.rowCount(), 0);
+    EXPECT_EQ(model.heldBack(), 25u);
+    EXPECT_EQ(model.totalFrames(), 25u);
+    model.setPaused(false);
+    EXPECT_EQ(model.rowCount(), 25);
+    EXPECT_EQ(model.heldBack(), 0u);
+}
+
+TEST(BusMonitorModel, ClearEmptiesRowsQueueAndCounters) {
+    BusMonitorModel model;
+    model.addFrames(std::vector<cs2::CanFrame>(5, systemStop()), Direction::Received);
+    model.flush();
+    model.addFrames(std::vector<cs2::CanFrame>(5, systemStop()), Direction::Received);
+    model.clear();
+    EXPECT_EQ(model.rowCount(), 0);
+    EXPECT_EQ(model.totalFrames(), 0u);
+    model.flush();
+    EXPECT_EQ(model.rowCount(), 0);
+}
+
+TEST(BusMonitorModel, CommandGroupsHaveDifferentColours) {
+    BusMonitorModel model;
+    model.addFrames(std::vector<cs2::CanFrame>{systemStop(), locoSpeed()}, Direction::Received);
+    model.flush();
+    const QVariant system = model.index(0, 0).data(Qt::BackgroundRole);
+    const QVariant loco = model.index(1, 0).data(Qt::BackgroundRole);
+    ASSERT_TRUE(system.isValid());
+    EXPECT_NE(system.value<QColor>(), loco.value<QColor>());
+    EXPECT_EQ(model.index(0, 0).data(BusMonitorModel::GroupRole).toInt(),
+              int(BusMonitorModel::Group::System));
+    EXPECT_EQ(model.index(1, 0).data(BusMonitorModel::GroupRole).toInt(), int(BusMonitorModel::Group::Loco));
+}
+
+TEST(BusMonitorPanel, FilterFindsAFrameByNameAndByLocId) {
+    Translations translations;
+    ASSERT_TRUE(translations.select(Language::English));
+    BusMonitorPanel panel;
+    panel.model()->addFrames(std::vector<cs2::CanFrame>{systemStop(), locoSpeed(), systemStop()},
+                             Direction::Received);
+    panel.model()->flush();
+    const QAbstractItemModel& shown = *panel.table()->model();
+    ASSERT_EQ(shown.rowCount(), 3);
+    panel.setFilterText(QStringLiteral("loco.SPEED"));
+    ASSERT_EQ(shown.rowCount(), 1);
+    EXPECT_EQ(cell(shown, 0, BusMonitorModel::MessageColumn), QStringLiteral("loco.speed"));
+    panel.setFilterText(QStringLiteral("0xc003"));
+    ASSERT_EQ(shown.rowCount(), 1);
+    EXPECT_EQ(cell(shown, 0, BusMonitorModel::MessageColumn), QStringLiteral("loco.speed"));
+    auto* counter = panel.findChild<QLabel*>(QStringLiteral("busMonitorCounter"));
+    ASSERT_NE(counter, nullptr);
+    EXPECT_TRUE(counter->text().contains(QStringLiteral("1 row matches the filter")))
+        << counter->text().toStdString();
+    panel.setFilterText(QString());
+    EXPECT_EQ(shown.rowCount(), 3);
+}
+
+TEST(BusMonitorPanel, ShowsTheFramesOfTheEmbeddedStation) {
+    connection::StationConnection station;
+    BusMonitorPanel panel;
+    panel.setConnection(&station);
+    station.connectToSimulator();
+    ASSERT_TRUE(test::waitForState(station, connection::StationConnection::State::Ready));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.model()->rowCount() > 0; }, FramesMs));
+    panel.setFilterText(QStringLiteral("feedback.s88-event"));
+    const QAbstractItemModel& shown = *panel.table()->model();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return shown.rowCount() > 0; }, FramesMs));
+    EXPECT_EQ(cell(shown, 0, BusMonitorModel::MessageColumn), QStringLiteral("feedback.s88-event"));
+}
+
+TEST(BusMonitorPanel, RecordsACandumpLogAndOpensItAgain) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("bus.log"));
+    connection::StationConnection station;
+    BusMonitorPanel recorder;
+    recorder.setConnection(&station);
+    ASSERT_EQ(recorder.startRecording(path), QString());
+    emit station.framesSeen({systemStop(), locoSpeed()}, false);
+    recorder.stopRecording();
+    emit station.framesSeen({systemStop()}, false); // not recorded any more
+
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QList<QByteArray> lines = file.readAll().split('\n');
+    ASSERT_EQ(lines.size(), 3); // two lines and the empty rest after the last newline
+    EXPECT_TRUE(lines[1].startsWith('(')) << lines[1].toStdString();
+    EXPECT_TRUE(lines[1].endsWith(") can0 00084711#0000C0030120")) << lines[1].toStdString();
+
+    BusMonitorPanel replay;
+    ASSERT_EQ(replay.openLog(path), QString());
+    const BusMonitorModel& model = *replay.model();
+    ASSERT_EQ(model.rowCount(), 2);
+    EXPECT_EQ(cell(model, 0, BusMonitorModel::MessageColumn), QStringLiteral("system.stop"));
+    EXPECT_EQ(cell(model, 1, BusMonitorModel::MessageColumn), QStringLiteral("loco.speed"));
+    EXPECT_LE(std::abs(model.timeAt(1).msecsTo(QDateTime::currentDateTime())), 60000);
+}
+
+TEST(BusMonitorPanel, OpeningALogReportsLinesWithoutAFrame) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("odd.log"));
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write("# a comment\n(1700000000.250000) can0 00004711#0000000000\nnot a frame\n");
+    file.close();
+    Translations translations;
+    ASSERT_TRUE(translations.select(Language::English));
+    BusMonitorPanel replay;
+    EXPECT_EQ(replay.openLog(path), QStringLiteral("1 line held no frame, it is line 3."));
+    ASSERT_EQ(replay.model()->rowCount(), 1);
+    EXPECT_EQ(replay.model()->timeAt(0).toMSecsSinceEpoch(), 1700000000250);
+}

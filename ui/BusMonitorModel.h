@@ -1,0 +1,97 @@
+#pragma once
+
+#include "cs2/CanFrame.h"
+
+#include <QAbstractTableModel>
+#include <QDateTime>
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <span>
+#include <vector>
+
+class QTimer;
+
+namespace stellwerk::ui {
+
+// The bus monitor's rows: a bounded history of compact frame records (no text per frame; the core's
+// FrameReport writes the text when a row is shown), filled in batches so that a flood of frames costs
+// one insert per flush instead of one per frame.
+class BusMonitorModel final : public QAbstractTableModel {
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(BusMonitorModel)
+
+public:
+    enum Column { TimeColumn, DirectionColumn, MessageColumn, DetailsColumn, FrameColumn, ColumnCount };
+    enum class Direction : std::uint8_t { Received, Sent };
+    // What kind of command a row carries; each has its own colour.
+    enum class Group : std::uint8_t { System, Loco, Accessory, Feedback, Stream, Other };
+    enum Role {
+        // name, details and frame text in one string, for the filter (decodes the frame once)
+        SearchTextRole = Qt::UserRole + 1,
+        GroupRole, // the row's Group as int
+    };
+
+    static constexpr int DefaultHistory = 100000;
+    static constexpr int FlushIntervalMs = 50;
+
+    explicit BusMonitorModel(QObject* parent = nullptr);
+
+    // Queues frames seen now; they appear at the next flush (at most FlushIntervalMs later).
+    void addFrames(std::span<const cs2::CanFrame> frames, Direction direction);
+    void addFrames(std::span<const cs2::CanFrame> frames, Direction direction, const QDateTime& time);
+    // Moves the queued frames into the table now: one row insertion (and at most one removal of the
+    // oldest rows) per call. Nothing moves while paused.
+    void flush();
+
+    // How many rows are kept; older ones go when newer ones come. Shrinking drops the oldest at once.
+    void setHistoryLimit(int rows);
+    int historyLimit() const { return m_historyLimit; }
+
+    // While paused, frames are counted and held back (up to the history limit), and shown on resume.
+    void setPaused(bool paused);
+    bool isPaused() const { return m_paused; }
+    // Frames that arrived since the pause began.
+    std::uint64_t heldBack() const { return m_heldBack; }
+    // Every frame ever given to addFrames() since the last clear().
+    std::uint64_t totalFrames() const { return m_total; }
+    // Forgets all rows, queued frames and counters.
+    void clear();
+
+    cs2::CanFrame frameAt(int row) const;
+    QDateTime timeAt(int row) const;
+    Direction directionAt(int row) const;
+
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+
+signals:
+    // After each flush that changed something, and after pause, resume and clear (for counters).
+    void countsChanged();
+
+private:
+    // 24 bytes per frame: a million rows fit in about 24 MB.
+    struct Record {
+        qint64 timeMs;
+        std::uint32_t id;
+        std::uint8_t dlc;
+        Direction direction;
+        std::array<std::uint8_t, 8> data;
+    };
+
+    static Record record(const cs2::CanFrame& frame, Direction direction, qint64 timeMs);
+    void dropOldest(std::size_t count);
+    QVariant display(const Record& record, int column) const;
+
+    std::deque<Record> m_rows;
+    std::deque<Record> m_queued;
+    QTimer* m_flushTimer = nullptr;
+    int m_historyLimit = DefaultHistory;
+    bool m_paused = false;
+    std::uint64_t m_heldBack = 0;
+    std::uint64_t m_total = 0;
+};
+
+} // namespace stellwerk::ui
