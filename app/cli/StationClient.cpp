@@ -6,6 +6,7 @@
 #include <atomic>
 #include <csignal>
 #include <ostream>
+#include <utility>
 
 namespace stellwerk::cli {
 namespace {
@@ -14,12 +15,6 @@ std::atomic<bool> interrupted{false};
 
 extern "C" void onInterrupt(int) {
     interrupted = true;
-}
-
-// The transports say "...; trying again in 250 ms": the command line does not try again.
-QString withoutRetryNote(QString message) {
-    const qsizetype note = message.indexOf(QStringLiteral("; trying again"));
-    return note < 0 ? message : message.left(note);
 }
 
 } // namespace
@@ -43,13 +38,24 @@ int StationClient::connectTo(const QString& url) {
     station::StationSettings settings;
     settings.commands = settings_.commands;
     session_ = std::make_unique<station::StationSession>(*transport_, settings);
+    // A lost connection is reported twice: the reason, then the same with the transport's retry plan,
+    // which the command line does not follow. Only the reason is shown.
+    connect(transport_.get(), &can::Transport::connectionFailed, this, [this](const QString& reason) {
+        retryNoteFollows_ = true;
+        report(reason);
+    });
     connect(transport_.get(), &can::Transport::problem, this, [this](const QString& message) {
-        if (transport_->state() == can::Transport::State::Connected || status_)
-            err_ << "stellwerk-cli: " << withoutRetryNote(message).toStdString() << '\n';
-        else
-            problem_ = withoutRetryNote(message);
+        if (!std::exchange(retryNoteFollows_, false))
+            report(message);
     });
     return waitForConnection();
+}
+
+void StationClient::report(const QString& message) {
+    if (transport_->state() == can::Transport::State::Connected || status_)
+        err_ << "stellwerk-cli: " << message.toStdString() << '\n';
+    else
+        problem_ = message;
 }
 
 int StationClient::waitForConnection() {

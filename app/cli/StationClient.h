@@ -59,6 +59,7 @@ public:
 
 private:
     int waitForConnection();
+    void report(const QString& message);
     void watchInterrupt(int status);
 
     std::ostream& err_;
@@ -68,6 +69,7 @@ private:
     QEventLoop loop_;
     std::optional<int> status_;
     QString problem_;
+    bool retryNoteFollows_ = false; // the next problem() repeats a connectionFailed() with a retry plan
 };
 
 } // namespace stellwerk::cli

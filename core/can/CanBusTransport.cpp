@@ -163,7 +163,7 @@ void CanBusTransport::connectionLost(const QString& reason) {
         return;
     dropDevice();
     const auto delay = reconnector_.lost();
-    emit problem(tr("%1: %2; trying again in %3 ms").arg(description(), reason).arg(delay.count()));
+    reportConnectionLost(reason, delay);
     setState(State::Reconnecting);
 }
 

@@ -89,7 +89,7 @@ void TcpTransport::connectionLost(const QString& reason) {
                              int(assembler_.pendingBytes())));
     assembler_.clear();
     const auto delay = reconnector_.lost();
-    emit problem(tr("%1: %2; trying again in %3 ms").arg(description(), reason).arg(delay.count()));
+    reportConnectionLost(reason, delay);
     setState(State::Reconnecting);
 }
 

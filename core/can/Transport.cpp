@@ -61,4 +61,10 @@ void Transport::write(std::span<const CanFrame> frames) {
     counters_.dropped += frames.size() - written;
 }
 
+void Transport::reportConnectionLost(const QString& reason, std::chrono::milliseconds retryIn) {
+    const QString failure = QStringLiteral("%1: %2").arg(description(), reason);
+    emit connectionFailed(failure);
+    emit problem(tr("%1; trying again in %2 ms").arg(failure).arg(retryIn.count()));
+}
+
 } // namespace stellwerk::can

@@ -65,6 +65,9 @@ signals:
     void stateChanged(stellwerk::can::Transport::State state);
     // Something a person should see (connection refused, interface vanished, ...).
     void problem(const QString& message);
+    // The connection failed or was lost: "<description>: <reason>", without the retry plan that the
+    // problem() sent right after it adds. For callers that do not retry (the command line).
+    void connectionFailed(const QString& reason);
 
 protected:
     // Connected lets waiting frames go to the wire; Closed discards them (counted as dropped).
@@ -77,6 +80,8 @@ protected:
     // Counts input that was not a frame and logs what it was.
     void countMalformed(std::size_t count, const QString& what);
     void countReconnect() { ++counters_.reconnects; }
+    // Reports a failed or lost connection that will be tried again after `retryIn`.
+    void reportConnectionLost(const QString& reason, std::chrono::milliseconds retryIn);
 
 private:
     void write(std::span<const cs2::CanFrame> frames);

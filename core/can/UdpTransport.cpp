@@ -117,7 +117,7 @@ void UdpTransport::attemptFailed(const QString& reason) {
         return;
     stopLookup();
     const auto delay = reconnector_.lost();
-    emit problem(tr("%1: %2; trying again in %3 ms").arg(description(), reason).arg(delay.count()));
+    reportConnectionLost(reason, delay);
     setState(State::Reconnecting);
 }
 

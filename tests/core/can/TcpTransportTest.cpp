@@ -200,6 +200,19 @@ TEST_F(TcpTransportTest, UnreachableStationIsRetriedWithGrowingDelays) {
     EXPECT_EQ(transport->state(), State::Reconnecting);
 }
 
+TEST_F(TcpTransportTest, ConnectionFailedGivesTheReasonWithoutTheRetryPlan) {
+    QStringList reasons;
+    QObject::connect(transport.get(), &Transport::connectionFailed,
+                     [&](const QString& reason) { reasons.append(reason); });
+    station.stop();
+    transport->open();
+    ASSERT_TRUE(waitFor([&] { return !reasons.isEmpty() && !recorder->problems.empty(); }));
+    EXPECT_TRUE(reasons[0].startsWith(transport->description() + QStringLiteral(": ")))
+        << reasons[0].toStdString();
+    EXPECT_FALSE(reasons[0].contains(QStringLiteral("trying again"))) << reasons[0].toStdString();
+    EXPECT_EQ(recorder->problems[0], reasons[0] + QStringLiteral("; trying again in 20 ms"));
+}
+
 TEST_F(TcpTransportTest, CloseDiscardsWaitingFramesAsDroppedAndStopsRetrying) {
     station.stop();
     transport->open();
