@@ -134,6 +134,10 @@ std::uint16_t StationConnection::embeddedPort() const {
     return link_ && link_->embedded ? link_->embedded->tcpPort() : 0;
 }
 
+can::TransportCounters StationConnection::transportCounters() const {
+    return link_ && link_->transport ? link_->transport->counters() : can::TransportCounters{};
+}
+
 station::StationSession* StationConnection::session() const {
     return link_ ? link_->session.get() : nullptr;
 }

@@ -89,6 +89,9 @@ public:
     QString lastProblem() const { return lastProblem_; }
     // The embedded station's TCP port while it runs, else 0 (for diagnostics and tests).
     std::uint16_t embeddedPort() const;
+    // What the transport of the current connection counted (frames in and out, ...); zeros while there is
+    // none.
+    can::TransportCounters transportCounters() const;
 
 signals:
     void stateChanged(stellwerk::connection::StationConnection::State state);

@@ -132,6 +132,18 @@ TEST(StationConnection, EmbeddedStationHasTheDemoLayoutsCounts) {
         << connection.startupResult().problems.join(QLatin1Char('\n')).toStdString();
 }
 
+TEST(StationConnection, CountsTheFramesOfItsTransportAndZerosWithoutOne) {
+    StationConnection connection;
+    EXPECT_EQ(connection.transportCounters().framesIn, 0u);
+    connection.connectToSimulator();
+    ASSERT_TRUE(waitForState(connection, State::Ready));
+    const can::TransportCounters counters = connection.transportCounters();
+    EXPECT_GT(counters.framesOut, 10u);               // pings, config requests, state queries
+    EXPECT_GT(counters.framesIn, counters.framesOut); // every request has an answer, downloads have many
+    connection.disconnectFromStation();
+    EXPECT_EQ(connection.transportCounters().framesOut, 0u);
+}
+
 TEST(StationConnection, ProgressNamesTheStepsAndTheFilesWithTheirPercentage) {
     StationConnection connection;
     std::vector<LoadingProgress> seen;
