@@ -2,27 +2,37 @@
 
 #include <QDialog>
 
-class QCheckBox;
+class QButtonGroup;
+class QComboBox;
 class QDialogButtonBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
+class QRadioButton;
 
 namespace stellwerk::ui {
 
-// Station → Connect…: the address of a station (with examples) or the simulated one. Connect checks the
-// address and stores the choice in the settings (StationUrlSettings), so the next start uses it too.
+// Station → Connect…: the simulated station, a CS2/CS3 over UDP or TCP by its host, a CAN interface from
+// the ones Qt's CAN plugins offer, or any address typed in full; the recent choices one click away.
+// Connect checks the address and stores the choice (StationUrlSettings), so the next start uses it too.
+// Connecting itself happens afterwards, in the background: the dialog never waits for a station.
 class ConnectDialog final : public QDialog {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(ConnectDialog)
 
 public:
+    enum class Kind { Simulated, Udp, Tcp, CanBus };
+
     // `url` is the station in use; empty for the simulated one.
     explicit ConnectDialog(const QString& url, QWidget* parent = nullptr);
 
     // The chosen address; empty when the simulated station was chosen.
     QString url() const;
-
+    Kind kind() const;
+    // Fills the dialog from an address (as stored, typed or recent); an unreadable one is kept as typed.
+    void setUrl(const QString& url);
+    // Lists the CAN interfaces the plugins offer now.
+    void refreshInterfaces();
     void accept() override;
 
 protected:
@@ -30,16 +40,33 @@ protected:
 
 private:
     void createWidgets();
+    QLayout* createChoices();
+    void createRecent();
     void retranslate();
+    void chooseKind(Kind kind);
+    void composeUrl();
+    void readUrl();
     void check();
 
+    QComboBox* m_recent = nullptr;
+    QLabel* m_recentLabel = nullptr;
+    QButtonGroup* m_kinds = nullptr;
+    QRadioButton* m_simulated = nullptr;
+    QRadioButton* m_udp = nullptr;
+    QRadioButton* m_tcp = nullptr;
+    QRadioButton* m_can = nullptr;
+    QLabel* m_hostLabel = nullptr;
+    QLineEdit* m_host = nullptr;
+    QLabel* m_interfaceLabel = nullptr;
+    QComboBox* m_interface = nullptr;
+    QPushButton* m_refresh = nullptr;
     QLabel* m_urlLabel = nullptr;
     QLineEdit* m_url = nullptr;
     QLabel* m_examples = nullptr;
     QLabel* m_error = nullptr;
-    QCheckBox* m_simulated = nullptr;
     QDialogButtonBox* m_buttons = nullptr;
     QPushButton* m_connect = nullptr;
+    bool m_syncing = false; // fields and address are being matched to each other
 };
 
 } // namespace stellwerk::ui

@@ -9,6 +9,7 @@ namespace {
 const QString organisation = QStringLiteral("Stellwerk");
 const QString application = QStringLiteral("Stellwerk");
 const QString urlKey = QStringLiteral("station/url");
+const QString recentKey = QStringLiteral("station/recent");
 
 } // namespace
 
@@ -18,8 +19,25 @@ QString StationUrlSettings::load() {
 }
 
 void StationUrlSettings::save(const QString& url) {
+    const QString chosen = url.trimmed();
+    QStringList recent = StationUrlSettings::recent();
+    recent.removeAll(chosen);
+    recent.prepend(chosen);
+    while (recent.size() > MaxRecent)
+        recent.removeLast();
     QSettings settings(organisation, application);
-    settings.setValue(urlKey, url.trimmed());
+    settings.setValue(urlKey, chosen);
+    settings.setValue(recentKey, recent);
+}
+
+QStringList StationUrlSettings::recent() {
+    const QSettings settings(organisation, application);
+    QStringList recent;
+    for (const QString& url : settings.value(recentKey).toStringList()) {
+        if (!recent.contains(url.trimmed()))
+            recent.append(url.trimmed());
+    }
+    return recent;
 }
 
 } // namespace stellwerk::ui

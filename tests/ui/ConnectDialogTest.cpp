@@ -4,14 +4,18 @@
 #include "StationTestSupport.h"
 #include "StationUrlSettings.h"
 #include "Translations.h"
+#include "can/CanBusTransport.h"
 
+#include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
-#include <QCheckBox>
+#include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QRadioButton>
 #include <QSettings>
+#include <QTest>
 #include <QTimer>
 #include <gtest/gtest.h>
 
@@ -38,8 +42,9 @@ protected:
         return dialog.findChild<Widget*>(QLatin1String(name));
     }
     static void enter(ConnectDialog& dialog, const QString& url) {
-        part<QCheckBox>(dialog, "useSimulatedStation")->setChecked(false);
+        part<QAbstractButton>(dialog, "useUdp")->click();
         part<QLineEdit>(dialog, "stationUrl")->setText(url);
+        dialog.setUrl(url);
     }
 
     Translations translations;
@@ -49,7 +54,7 @@ protected:
 
 TEST_F(ConnectDialogTest, SimulatedIsCheckedWhenNoAddressIsInUse) {
     ConnectDialog dialog{QString()};
-    EXPECT_TRUE(part<QCheckBox>(dialog, "useSimulatedStation")->isChecked());
+    EXPECT_TRUE(part<QAbstractButton>(dialog, "useSimulatedStation")->isChecked());
     EXPECT_FALSE(part<QLineEdit>(dialog, "stationUrl")->isEnabled());
     EXPECT_TRUE(part<QPushButton>(dialog, "connectButton")->isEnabled());
     EXPECT_EQ(dialog.url(), QString());
@@ -57,7 +62,7 @@ TEST_F(ConnectDialogTest, SimulatedIsCheckedWhenNoAddressIsInUse) {
 
 TEST_F(ConnectDialogTest, OpensWithTheAddressInUse) {
     ConnectDialog dialog(QStringLiteral("udp://192.168.2.5"));
-    EXPECT_FALSE(part<QCheckBox>(dialog, "useSimulatedStation")->isChecked());
+    EXPECT_FALSE(part<QAbstractButton>(dialog, "useSimulatedStation")->isChecked());
     EXPECT_EQ(part<QLineEdit>(dialog, "stationUrl")->text(), QStringLiteral("udp://192.168.2.5"));
     EXPECT_EQ(dialog.url(), QStringLiteral("udp://192.168.2.5"));
 }
@@ -84,7 +89,7 @@ TEST_F(ConnectDialogTest, ConnectStoresTheAddressInTheSettings) {
 TEST_F(ConnectDialogTest, SimulatedStationIsStoredAsAnEmptyAddress) {
     StationUrlSettings::save(QStringLiteral("udp://192.168.2.5"));
     ConnectDialog dialog(QStringLiteral("udp://192.168.2.5"));
-    part<QCheckBox>(dialog, "useSimulatedStation")->setChecked(true);
+    part<QAbstractButton>(dialog, "useSimulatedStation")->click();
     part<QPushButton>(dialog, "connectButton")->click();
     EXPECT_EQ(dialog.result(), QDialog::Accepted);
     EXPECT_TRUE(stellwerkSettings().contains(QStringLiteral("station/url")));
@@ -115,8 +120,8 @@ TEST_F(ConnectDialogTest, Deutsch) {
     ConnectDialog dialog{QString()};
     EXPECT_EQ(dialog.windowTitle(), QStringLiteral("Mit einer Zentrale verbinden"));
     EXPECT_EQ(part<QPushButton>(dialog, "connectButton")->text(), QStringLiteral("&Verbinden"));
-    EXPECT_EQ(part<QCheckBox>(dialog, "useSimulatedStation")->text(),
-              QStringLiteral("&Simulierte Zentrale verwenden (Demo-Anlage)"));
+    EXPECT_EQ(part<QAbstractButton>(dialog, "useSimulatedStation")->text(),
+              QStringLiteral("&Simulierte Zentrale (Demo-Anlage, keine Hardware nötig)"));
     translations.select(Language::English);
 }
 
@@ -140,4 +145,86 @@ TEST_F(ConnectDialogTest, StationMenuConnectReconnectsTheWindowsConnection) {
 
 TEST_F(ConnectDialogTest, StationUrlSettingsAreEmptyOnAFirstRun) {
     EXPECT_EQ(StationUrlSettings::load(), QString());
+}
+
+TEST_F(ConnectDialogTest, RecentStationsAreOfferedNewestFirstAndFillTheDialog) {
+    StationUrlSettings::save(QStringLiteral("udp://192.168.2.5"));
+    StationUrlSettings::save(QString());
+    StationUrlSettings::save(QStringLiteral("tcp://10.0.0.7"));
+    StationUrlSettings::save(QStringLiteral("udp://192.168.2.5")); // again: moves to the front, once
+    ConnectDialog dialog(QStringLiteral("tcp://10.0.0.7"));
+    auto* recent = part<QComboBox>(dialog, "recentStations");
+    ASSERT_EQ(recent->count(), 4); // the prompt and three stations
+    EXPECT_EQ(recent->itemData(1).toString(), QStringLiteral("udp://192.168.2.5"));
+    EXPECT_EQ(recent->itemText(1), QStringLiteral("CS2 at 192.168.2.5 (UDP) — udp://192.168.2.5"));
+    EXPECT_EQ(recent->itemData(2).toString(), QStringLiteral("tcp://10.0.0.7"));
+    EXPECT_EQ(recent->itemText(3), QStringLiteral("Simulated CS2 (demo layout)"));
+    recent->setCurrentIndex(1);
+    emit recent->activated(1);
+    EXPECT_EQ(dialog.kind(), ConnectDialog::Kind::Udp);
+    EXPECT_EQ(dialog.url(), QStringLiteral("udp://192.168.2.5"));
+    recent->setCurrentIndex(3);
+    emit recent->activated(3);
+    EXPECT_EQ(dialog.kind(), ConnectDialog::Kind::Simulated);
+    EXPECT_EQ(dialog.url(), QString());
+}
+
+TEST_F(ConnectDialogTest, RecentListKeepsTheNewestEight) {
+    for (int i = 1; i <= 10; ++i)
+        StationUrlSettings::save(QStringLiteral("tcp://10.0.0.%1").arg(i));
+    const QStringList recent = StationUrlSettings::recent();
+    ASSERT_EQ(recent.size(), StationUrlSettings::MaxRecent);
+    EXPECT_EQ(recent.first(), QStringLiteral("tcp://10.0.0.10"));
+    EXPECT_EQ(recent.last(), QStringLiteral("tcp://10.0.0.3"));
+}
+
+TEST_F(ConnectDialogTest, AKindAndAHostMakeTheAddress) {
+    ConnectDialog dialog{QString()};
+    part<QAbstractButton>(dialog, "useUdp")->click();
+    EXPECT_FALSE(part<QPushButton>(dialog, "connectButton")->isEnabled()); // no host yet
+    QTest::keyClicks(part<QLineEdit>(dialog, "stationHost"), QStringLiteral("192.168.2.5"));
+    EXPECT_EQ(dialog.url(), QStringLiteral("udp://192.168.2.5:15731")); // the ports are spelled out
+    EXPECT_TRUE(part<QPushButton>(dialog, "connectButton")->isEnabled());
+    part<QAbstractButton>(dialog, "useTcp")->click();
+    EXPECT_EQ(dialog.url(), QStringLiteral("tcp://192.168.2.5:15731"));
+}
+
+TEST_F(ConnectDialogTest, ATypedAddressPicksItsKindAndKeepsItsPortWhenTheHostChanges) {
+    ConnectDialog dialog{QString()};
+    part<QAbstractButton>(dialog, "useUdp")->click();
+    QLineEdit* address = part<QLineEdit>(dialog, "stationUrl");
+    address->clear();
+    QTest::keyClicks(address, QStringLiteral("tcp://10.0.0.1:15732"));
+    EXPECT_EQ(dialog.kind(), ConnectDialog::Kind::Tcp);
+    EXPECT_EQ(part<QLineEdit>(dialog, "stationHost")->text(), QStringLiteral("10.0.0.1"));
+    QLineEdit* host = part<QLineEdit>(dialog, "stationHost");
+    host->selectAll();
+    QTest::keyClicks(host, QStringLiteral("10.0.0.2"));
+    EXPECT_EQ(dialog.url(), QStringLiteral("tcp://10.0.0.2:15732"));
+}
+
+TEST_F(ConnectDialogTest, CanInterfacesAreTheOnesThePluginsOffer) {
+    ConnectDialog dialog{QString()};
+    auto* interfaces = part<QComboBox>(dialog, "canInterface");
+    QStringList offered;
+    for (const can::CanBusInterface& found : can::CanBusTransport::availableInterfaces())
+        offered << found.plugin + QLatin1Char('/') + found.name;
+    QStringList listed;
+    for (int i = 0; i < interfaces->count(); ++i)
+        listed << interfaces->itemText(i);
+    EXPECT_EQ(listed, offered);
+    part<QAbstractButton>(dialog, "useCan")->click();
+    interfaces->setCurrentText(QStringLiteral("virtualcan/can1"));
+    EXPECT_EQ(dialog.kind(), ConnectDialog::Kind::CanBus);
+    EXPECT_EQ(dialog.url(), QStringLiteral("can://virtualcan/can1"));
+    EXPECT_TRUE(part<QPushButton>(dialog, "connectButton")->isEnabled());
+}
+
+TEST_F(ConnectDialogTest, TheSimulatedStationKeepsTheTypedAddressForLater) {
+    ConnectDialog dialog(QStringLiteral("udp://192.168.2.5"));
+    part<QAbstractButton>(dialog, "useSimulatedStation")->click();
+    EXPECT_EQ(dialog.url(), QString());
+    EXPECT_FALSE(part<QLineEdit>(dialog, "stationHost")->isEnabled());
+    part<QAbstractButton>(dialog, "useUdp")->click();
+    EXPECT_EQ(dialog.url(), QStringLiteral("udp://192.168.2.5:15731"));
 }
