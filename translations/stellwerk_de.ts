@@ -173,10 +173,6 @@
         <translation>Mit einer Zentrale verbinden</translation>
     </message>
     <message>
-        <source>Station &amp;address:</source>
-        <translation>&amp;Adresse der Zentrale:</translation>
-    </message>
-    <message>
         <source>Examples:
 udp://192.168.2.5 — a CS2 with its CAN-UDP gateway switched on
 tcp://192.168.2.5 — a CS3, or a CS2 over TCP
@@ -185,10 +181,6 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
 udp://192.168.2.5 — eine CS2 mit eingeschaltetem CAN-UDP-Gateway
 tcp://192.168.2.5 — eine CS3 oder eine CS2 über TCP
 can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
-    </message>
-    <message>
-        <source>&amp;Use the simulated station (demo layout)</source>
-        <translation>&amp;Simulierte Zentrale verwenden (Demo-Anlage)</translation>
     </message>
     <message>
         <source>&amp;Connect</source>
@@ -201,6 +193,58 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>This address cannot be used: %1</source>
         <translation>Diese Adresse ist nicht verwendbar: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Recent:</source>
+        <translation>&amp;Zuletzt:</translation>
+    </message>
+    <message>
+        <source>Choose a station used before…</source>
+        <translation>Eine früher verwendete Zentrale wählen …</translation>
+    </message>
+    <message>
+        <source>None yet</source>
+        <translation>Noch keine</translation>
+    </message>
+    <message>
+        <source>&amp;Simulated station (demo layout, no hardware needed)</source>
+        <translation>&amp;Simulierte Zentrale (Demo-Anlage, keine Hardware nötig)</translation>
+    </message>
+    <message>
+        <source>CS2 or CS3 over &amp;UDP (the CAN gateway, ports 15731/15730)</source>
+        <translation>CS2 oder CS3 über &amp;UDP (CAN-Gateway, Ports 15731/15730)</translation>
+    </message>
+    <message>
+        <source>CS2 or CS3 over &amp;TCP (port 15731)</source>
+        <translation>CS2 oder CS3 über &amp;TCP (Port 15731)</translation>
+    </message>
+    <message>
+        <source>&amp;Host:</source>
+        <translation>&amp;Rechner:</translation>
+    </message>
+    <message>
+        <source>CAN &amp;interface (Gleisbox through a CAN adapter)</source>
+        <translation>CAN-&amp;Schnittstelle (Gleisbox über einen CAN-Adapter)</translation>
+    </message>
+    <message>
+        <source>&amp;Interface:</source>
+        <translation>S&amp;chnittstelle:</translation>
+    </message>
+    <message>
+        <source>plugin/interface, e.g. socketcan/can0</source>
+        <translation>Plugin/Schnittstelle, z. B. socketcan/can0</translation>
+    </message>
+    <message>
+        <source>&amp;Look again</source>
+        <translation>&amp;Neu suchen</translation>
+    </message>
+    <message>
+        <source>List the CAN interfaces Qt&apos;s plugins find now</source>
+        <translation>Die CAN-Schnittstellen auflisten, die Qts Plugins jetzt finden</translation>
+    </message>
+    <message>
+        <source>&amp;Address:</source>
+        <translation>&amp;Adresse:</translation>
     </message>
 </context>
 <context>
@@ -297,6 +341,26 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>%1 — loading configuration %2/%3: %4</source>
         <translation>%1 — Konfiguration wird geladen %2/%3: %4</translation>
+    </message>
+    <message>
+        <source>Try: restart Stellwerk; if it happens again, report the message above.</source>
+        <translation>Versuchen Sie: Stellwerk neu starten; geschieht es wieder, die Meldung oben melden.</translation>
+    </message>
+    <message>
+        <source>Try: check that the station is on and reachable at this address, and that its CAN-UDP gateway sends to this computer (CS2: Setup → IP → CAN gateway).</source>
+        <translation>Versuchen Sie: prüfen, ob die Zentrale eingeschaltet und unter dieser Adresse erreichbar ist und ihr CAN-UDP-Gateway an diesen Rechner sendet (CS2: Einstellungen → IP → CAN-Gateway).</translation>
+    </message>
+    <message>
+        <source>Try: check that the station is on and reachable at this address and port.</source>
+        <translation>Versuchen Sie: prüfen, ob die Zentrale eingeschaltet und unter dieser Adresse und diesem Port erreichbar ist.</translation>
+    </message>
+    <message>
+        <source>Try: check that the CAN interface exists and is up (SocketCAN: ip link set can0 up type can bitrate 250000) and that the Gleisbox has power.</source>
+        <translation>Versuchen Sie: prüfen, ob die CAN-Schnittstelle existiert und aktiv ist (SocketCAN: ip link set can0 up type can bitrate 250000) und ob die Gleisbox Strom hat.</translation>
+    </message>
+    <message>
+        <source>Try: correct the address in Station → Connect…, for example udp://192.168.2.5.</source>
+        <translation>Versuchen Sie: die Adresse unter Zentrale → Verbinden … berichtigen, zum Beispiel udp://192.168.2.5.</translation>
     </message>
 </context>
 <context>
@@ -420,26 +484,6 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
 <context>
     <name>stellwerk::ui::LayoutOverview</name>
     <message>
-        <source>No station connected</source>
-        <translation>Keine Zentrale verbunden</translation>
-    </message>
-    <message>
-        <source>Track power: not reported yet</source>
-        <translation>Gleisspannung: noch nicht gemeldet</translation>
-    </message>
-    <message>
-        <source>Track power: on, trains may run</source>
-        <translation>Gleisspannung: an, Züge dürfen fahren</translation>
-    </message>
-    <message>
-        <source>Track power: on, every train halted</source>
-        <translation>Gleisspannung: an, alle Züge angehalten</translation>
-    </message>
-    <message>
-        <source>Track power: off (stop)</source>
-        <translation>Gleisspannung: aus (Stopp)</translation>
-    </message>
-    <message>
         <source>Locomotives</source>
         <translation>Loks</translation>
     </message>
@@ -534,16 +578,82 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <translation>Die Zentrale wählen, mit der Stellwerk sich verbindet, oder die simulierte</translation>
     </message>
     <message>
-        <source>Layout</source>
-        <translation>Anlage</translation>
-    </message>
-    <message>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
         <source>Bus monitor</source>
         <translation>Busmonitor</translation>
+    </message>
+    <message>
+        <source>&amp;Stop everything</source>
+        <translation>Alles &amp;anhalten</translation>
+    </message>
+    <message>
+        <source>Space, Esc</source>
+        <translation>Leertaste, Esc</translation>
+    </message>
+    <message>
+        <source>Switch the track power off: every train stops</source>
+        <translation>Gleisspannung ausschalten: alle Züge halten</translation>
+    </message>
+    <message>
+        <source>Stop and go</source>
+        <translation>Stopp und Go</translation>
+    </message>
+    <message>
+        <source>&amp;Panels</source>
+        <translation>&amp;Bereiche</translation>
+    </message>
+    <message>
+        <source>&amp;Reset panel layout</source>
+        <translation>Anordnung der Bereiche &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Put every panel back where it was at the first start</source>
+        <translation>Jeden Bereich wieder dorthin stellen, wo er beim ersten Start war</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::PowerStatus</name>
+    <message>
+        <source>No station connected</source>
+        <translation>Keine Zentrale verbunden</translation>
+    </message>
+    <message>
+        <source>Track power: not reported yet</source>
+        <translation>Gleisspannung: noch nicht gemeldet</translation>
+    </message>
+    <message>
+        <source>Track power: on, trains may run</source>
+        <translation>Gleisspannung: an, Züge dürfen fahren</translation>
+    </message>
+    <message>
+        <source>Track power: on, every train halted</source>
+        <translation>Gleisspannung: an, alle Züge angehalten</translation>
+    </message>
+    <message>
+        <source>Track power: off (stop)</source>
+        <translation>Gleisspannung: aus (Stopp)</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::StartupProgress</name>
+    <message>
+        <source>Step %1 of %2</source>
+        <translation>Schritt %1 von %2</translation>
+    </message>
+    <message>
+        <source>file %1 of %2</source>
+        <translation>Datei %1 von %2</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <source>%1: %2 of %3 (%4)</source>
+        <translation>%1: %2 von %3 (%4)</translation>
     </message>
 </context>
 <context>
@@ -587,6 +697,36 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Overload on %1 (%2): the track power is off. Look for a short circuit or a derailed train, then switch the power on again.</source>
         <translation>Überlast an %1 (%2): Der Gleisstrom ist aus. Suchen Sie nach einem Kurzschluss oder einem entgleisten Zug und schalten Sie den Strom dann wieder ein.</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::StopGoButton</name>
+    <message>
+        <source>STOP</source>
+        <translation>STOPP</translation>
+    </message>
+    <message>
+        <source>GO</source>
+        <translation>GO</translation>
+    </message>
+    <message>
+        <source>Switch the track power off: every train stops (Space or Escape)</source>
+        <translation>Gleisspannung ausschalten: alle Züge halten (Leertaste oder Esc)</translation>
+    </message>
+    <message>
+        <source>Switch the track power on again</source>
+        <translation>Gleisspannung wieder einschalten</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::TrafficStatus</name>
+    <message>
+        <source>Frames in %1 · out %2</source>
+        <translation>Telegramme ein %1 · aus %2</translation>
+    </message>
+    <message>
+        <source>Frames received from and sent to the station since connecting; %1 malformed, %2 dropped, %3 reconnects</source>
+        <translation>Seit dem Verbinden von der Zentrale empfangene und an sie gesendete Telegramme; %1 fehlerhaft, %2 verworfen, %3 Neuverbindungen</translation>
     </message>
 </context>
 </TS>

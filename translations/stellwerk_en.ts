@@ -173,18 +173,10 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Station &amp;address:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Examples:
 udp://192.168.2.5 — a CS2 with its CAN-UDP gateway switched on
 tcp://192.168.2.5 — a CS3, or a CS2 over TCP
 can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Use the simulated station (demo layout)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -197,6 +189,58 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>This address cannot be used: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Recent:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose a station used before…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>None yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Simulated station (demo layout, no hardware needed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CS2 or CS3 over &amp;UDP (the CAN gateway, ports 15731/15730)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CS2 or CS3 over &amp;TCP (port 15731)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Host:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CAN &amp;interface (Gleisbox through a CAN adapter)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Interface:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>plugin/interface, e.g. socketcan/can0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Look again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>List the CAN interfaces Qt&apos;s plugins find now</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Address:</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -293,6 +337,26 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>%1 — loading configuration %2/%3: %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Try: restart Stellwerk; if it happens again, report the message above.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Try: check that the station is on and reachable at this address, and that its CAN-UDP gateway sends to this computer (CS2: Setup → IP → CAN gateway).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Try: check that the station is on and reachable at this address and port.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Try: check that the CAN interface exists and is up (SocketCAN: ip link set can0 up type can bitrate 250000) and that the Gleisbox has power.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Try: correct the address in Station → Connect…, for example udp://192.168.2.5.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -417,26 +481,6 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
 <context>
     <name>stellwerk::ui::LayoutOverview</name>
     <message>
-        <source>No station connected</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Track power: not reported yet</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Track power: on, trains may run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Track power: on, every train halted</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Track power: off (stop)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Locomotives</source>
         <translation type="unfinished"></translation>
     </message>
@@ -531,15 +575,81 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Layout</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Status</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Bus monitor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Stop everything</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Space, Esc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch the track power off: every train stops</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop and go</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Panels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Reset panel layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Put every panel back where it was at the first start</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::PowerStatus</name>
+    <message>
+        <source>No station connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track power: not reported yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track power: on, trains may run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track power: on, every train halted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track power: off (stop)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::StartupProgress</name>
+    <message>
+        <source>Step %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 of %3 (%4)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -583,6 +693,36 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Overload on %1 (%2): the track power is off. Look for a short circuit or a derailed train, then switch the power on again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::StopGoButton</name>
+    <message>
+        <source>STOP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GO</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch the track power off: every train stops (Space or Escape)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch the track power on again</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::TrafficStatus</name>
+    <message>
+        <source>Frames in %1 · out %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frames received from and sent to the station since connecting; %1 malformed, %2 dropped, %3 reconnects</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -95,6 +95,25 @@ QString ConnectionStatus::describe(const connection::StationEndpoint& endpoint) 
     return tr("Station \"%1\"").arg(endpoint.place);
 }
 
+QString ConnectionStatus::advice(const connection::StationEndpoint& endpoint) {
+    using Kind = connection::StationEndpoint::Kind;
+    switch (endpoint.kind) {
+    case Kind::Simulated:
+        return tr("Try: restart Stellwerk; if it happens again, report the message above.");
+    case Kind::Udp:
+        return tr("Try: check that the station is on and reachable at this address, and that its CAN-UDP "
+                  "gateway sends to this computer (CS2: Setup → IP → CAN gateway).");
+    case Kind::Tcp:
+        return tr("Try: check that the station is on and reachable at this address and port.");
+    case Kind::CanBus:
+        return tr("Try: check that the CAN interface exists and is up (SocketCAN: "
+                  "ip link set can0 up type can bitrate 250000) and that the Gleisbox has power.");
+    case Kind::Unusable:
+        break;
+    }
+    return tr("Try: correct the address in Station → Connect…, for example udp://192.168.2.5.");
+}
+
 QString ConnectionStatus::statusText(const connection::StationConnection* station) {
     if (!station || station->state() == State::Disconnected)
         return tr("No station connected");

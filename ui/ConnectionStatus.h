@@ -25,6 +25,8 @@ public:
 
     // The station as a person calls it, in the current language.
     static QString describe(const connection::StationEndpoint& endpoint);
+    // What to try when the station cannot be reached, for its kind of connection.
+    static QString advice(const connection::StationEndpoint& endpoint);
     // The whole line for a connection in its current state.
     static QString statusText(const connection::StationConnection* station);
 

@@ -2,52 +2,25 @@
 
 #include "ContactTableModel.h"
 #include "LocomotiveTableModel.h"
-#include "StatusDot.h"
+#include "PowerStatus.h"
 #include "model/Railway.h"
 
 #include <QEvent>
 #include <QGroupBox>
-#include <QHBoxLayout>
 #include <QHeaderView>
-#include <QLabel>
 #include <QSplitter>
 #include <QTableView>
 #include <QVBoxLayout>
 
 namespace stellwerk::ui {
 
-namespace {
-
-constexpr int LampSize = 14;
-
-QColor powerColour(std::optional<station::PowerState> power) {
-    if (!power)
-        return StatusDot::Unknown;
-    switch (*power) {
-    case station::PowerState::Running:
-        return StatusDot::Running;
-    case station::PowerState::Halted:
-        return StatusDot::Halted;
-    case station::PowerState::Stopped:
-        break;
-    }
-    return StatusDot::Stopped;
-}
-
-} // namespace
-
 LayoutOverview::LayoutOverview(QWidget* parent)
     : QWidget(parent), locomotives_(new LocomotiveTableModel(this)), contacts_(new ContactTableModel(this)),
-      powerLamp_(new QLabel(this)), power_(new QLabel(this)),
-      locomotiveView_(tableView(QStringLiteral("locomotiveTable"))),
+      power_(new PowerStatus(this)), locomotiveView_(tableView(QStringLiteral("locomotiveTable"))),
       contactView_(tableView(QStringLiteral("contactTable"))) {
     setObjectName(QStringLiteral("layoutOverview"));
-    power_->setObjectName(QStringLiteral("trackPower"));
     locomotiveView_->setModel(locomotives_);
     contactView_->setModel(contacts_);
-    auto* powerLine = new QHBoxLayout;
-    powerLine->addWidget(powerLamp_);
-    powerLine->addWidget(power_, 1);
     auto* tables = new QSplitter(Qt::Horizontal, this);
     locomotiveBox_ = tableBox(locomotiveView_, QStringLiteral("locomotiveBox"));
     contactBox_ = tableBox(contactView_, QStringLiteral("contactBox"));
@@ -56,10 +29,9 @@ LayoutOverview::LayoutOverview(QWidget* parent)
     tables->setStretchFactor(0, 3);
     tables->setStretchFactor(1, 2);
     auto* layout = new QVBoxLayout(this);
-    layout->addLayout(powerLine);
+    layout->addWidget(power_);
     layout->addWidget(tables, 1);
     retranslate();
-    showPower();
 }
 
 // A table that is read, not edited: whole rows, no row numbers, columns as wide as their contents.
@@ -92,38 +64,17 @@ void LayoutOverview::setRailway(const model::Railway* railway) {
     locomotives_->setRailway(railway);
     contacts_->setRailway(railway);
     if (railway_) {
-        connect(railway_, &model::Railway::powerChanged, this, &LayoutOverview::showPower);
         connect(railway_, &model::Railway::loaded, this, [this] {
             locomotiveView_->resizeColumnsToContents();
             contactView_->resizeColumnsToContents();
-            showPower();
         });
         connect(railway_, &QObject::destroyed, this, [this] { setRailway(nullptr); });
     }
-    showPower();
+    power_->setRailway(railway);
 }
 
 QString LayoutOverview::powerText() const {
-    if (!railway_)
-        return tr("No station connected");
-    const std::optional<station::PowerState> power = railway_->power();
-    if (!power)
-        return tr("Track power: not reported yet");
-    switch (*power) {
-    case station::PowerState::Running:
-        return tr("Track power: on, trains may run");
-    case station::PowerState::Halted:
-        return tr("Track power: on, every train halted");
-    case station::PowerState::Stopped:
-        break;
-    }
-    return tr("Track power: off (stop)");
-}
-
-void LayoutOverview::showPower() {
-    powerLamp_->setPixmap(StatusDot::icon(powerColour(railway_ ? railway_->power() : std::nullopt), LampSize)
-                              .pixmap(LampSize, LampSize));
-    power_->setText(powerText());
+    return power_->text();
 }
 
 void LayoutOverview::changeEvent(QEvent* event) {
@@ -137,7 +88,6 @@ void LayoutOverview::retranslate() {
     contactBox_->setTitle(tr("Feedback contacts"));
     locomotives_->retranslate();
     contacts_->retranslate();
-    showPower();
 }
 
 } // namespace stellwerk::ui

@@ -18,6 +18,7 @@ namespace stellwerk::ui {
 
 class ContactTableModel;
 class LocomotiveTableModel;
+class PowerStatus;
 
 // The "Layout" page: a read-only look at the railway as the station reports it — track power, every
 // locomotive with its speed, direction and functions, and every feedback contact with its occupancy —
@@ -42,14 +43,12 @@ protected:
 private:
     QGroupBox* tableBox(QTableView* view, const QString& objectName);
     QTableView* tableView(const QString& objectName);
-    void showPower();
     void retranslate();
 
     QPointer<const model::Railway> railway_;
     LocomotiveTableModel* locomotives_;
     ContactTableModel* contacts_;
-    QLabel* powerLamp_;
-    QLabel* power_;
+    PowerStatus* power_;
     QTableView* locomotiveView_;
     QTableView* contactView_;
     QGroupBox* locomotiveBox_ = nullptr;

@@ -5,18 +5,26 @@
 #include "BusMonitorPanel.h"
 #include "ConnectDialog.h"
 #include "ConnectionStatus.h"
+#include "EmergencyStopKeys.h"
 #include "FrameDecoderPanel.h"
 #include "LanguageMenu.h"
 #include "LanguageSettings.h"
 #include "LayoutOverview.h"
+#include "PowerStatus.h"
+#include "StartupProgress.h"
 #include "StatusPanel.h"
+#include "StopGoButton.h"
+#include "TrafficStatus.h"
 #include "Translations.h"
+#include "Workspace.h"
 #include "connection/StationConnection.h"
 
+#include <QCloseEvent>
+#include <QDockWidget>
 #include <QEvent>
 #include <QMenuBar>
 #include <QStatusBar>
-#include <QTabWidget>
+#include <QToolBar>
 
 namespace stellwerk::ui {
 
@@ -25,14 +33,16 @@ MainWindow::MainWindow(Translations& translations, QWidget* parent)
     setObjectName(QStringLiteral("mainWindow"));
     setWindowTitle(QStringLiteral("Stellwerk"));
     setWindowIcon(applicationIcon());
-    createWorkspace();
+    resize(1280, 800);
+    createPanels();
+    createToolBar();
     createFileMenu();
     createStationMenu();
     createViewMenu();
     createHelpMenu();
     createStatusBar();
     retranslate();
-    resize(1024, 640);
+    m_workspace->restore();
 }
 
 void MainWindow::changeEvent(QEvent* event) {
@@ -42,21 +52,35 @@ void MainWindow::changeEvent(QEvent* event) {
     QMainWindow::changeEvent(event);
 }
 
-void MainWindow::createWorkspace() {
-    m_workspaceTabs = new QTabWidget(this);
-    m_workspaceTabs->setObjectName(QStringLiteral("workspaceTabs"));
-    m_workspaceTabs->setDocumentMode(true);
-    m_workspaceTabs->setMovable(true);
-    m_layoutOverview = new LayoutOverview(m_workspaceTabs);
-    m_workspaceTabs->addTab(m_layoutOverview, QString());
-    // What a running session needs first, the tools for looking at the bus last.
-    m_statusPanel = new StatusPanel(m_workspaceTabs);
-    m_workspaceTabs->addTab(m_statusPanel, QString());
-    m_busMonitor = new BusMonitorPanel(m_workspaceTabs);
-    m_workspaceTabs->addTab(m_busMonitor, QString());
-    m_frameDecoder = new FrameDecoderPanel(m_workspaceTabs);
-    m_workspaceTabs->addTab(m_frameDecoder, QString());
-    setCentralWidget(m_workspaceTabs);
+void MainWindow::closeEvent(QCloseEvent* event) {
+    m_workspace->save();
+    QMainWindow::closeEvent(event);
+}
+
+// The layout overview in the middle; around it what a running session needs, the bus tools below.
+void MainWindow::createPanels() {
+    m_workspace = new Workspace(*this);
+    m_layoutOverview = new LayoutOverview(this);
+    setCentralWidget(m_layoutOverview);
+    m_statusPanel = new StatusPanel(this);
+    m_workspace->addPanel(m_statusPanel, Qt::RightDockWidgetArea);
+    m_busMonitor = new BusMonitorPanel(this);
+    m_workspace->addPanel(m_busMonitor, Qt::BottomDockWidgetArea);
+    m_frameDecoder = new FrameDecoderPanel(this);
+    m_workspace->addPanel(m_frameDecoder, Qt::BottomDockWidgetArea, m_busMonitor);
+    m_workspace->showPanel(m_busMonitor);
+}
+
+// The STOP / GO key and the connection, always in reach; the toolbar cannot be hidden by accident.
+void MainWindow::createToolBar() {
+    m_toolBar = addToolBar(QString());
+    m_toolBar->setObjectName(QStringLiteral("mainToolBar"));
+    m_toolBar->setMovable(false);
+    m_toolBar->toggleViewAction()->setEnabled(false);
+    m_stopGo = new StopGoButton(m_toolBar);
+    m_toolBar->addWidget(m_stopGo);
+    m_stopKeys = new EmergencyStopKeys(this);
+    connect(m_stopKeys, &EmergencyStopKeys::stopRequested, m_stopGo, &StopGoButton::stopEverything);
 }
 
 void MainWindow::createFileMenu() {
@@ -73,6 +97,11 @@ void MainWindow::createStationMenu() {
     m_stationMenu->setObjectName(QStringLiteral("stationMenu"));
     m_connectAction = m_stationMenu->addAction(QString(), this, &MainWindow::showConnectDialog);
     m_connectAction->setObjectName(QStringLiteral("connectAction"));
+    m_toolBar->addSeparator();
+    m_toolBar->addAction(m_connectAction);
+    m_stationMenu->addSeparator();
+    m_stopAction = m_stationMenu->addAction(QString(), m_stopGo, &StopGoButton::stopEverything);
+    m_stopAction->setObjectName(QStringLiteral("stopAction"));
 }
 
 void MainWindow::setConnection(connection::StationConnection* station) {
@@ -80,10 +109,14 @@ void MainWindow::setConnection(connection::StationConnection* station) {
         disconnect(m_connection, nullptr, this, nullptr);
     m_connection = station;
     m_stationStatus->setConnection(station);
+    m_startupProgress->setConnection(station);
+    m_traffic->setConnection(station);
     m_busMonitor->setConnection(station);
     if (m_connection) {
         connect(m_connection, &connection::StationConnection::problem, this,
                 [this](const QString& message) { showStationProblem(message); });
+        connect(m_connection, &connection::StationConnection::stateChanged, this,
+                &MainWindow::connectionStateChanged);
         connect(m_connection, &QObject::destroyed, this, [this] { m_connection = nullptr; });
     }
 }
@@ -91,12 +124,29 @@ void MainWindow::setConnection(connection::StationConnection* station) {
 void MainWindow::setRailway(model::Railway* railway) {
     m_layoutOverview->setRailway(railway);
     m_statusPanel->setRailway(railway);
+    m_stopGo->setRailway(railway);
+    m_power->setRailway(railway);
 }
 
-// A failure is already on the station's status line; other problems pass by on the left for a while.
+// A failure is already on the station's status line; other problems pass by on the left for a while,
+// with what to try while the station was never reached.
 void MainWindow::showStationProblem(const QString& message) {
-    if (m_connection && m_connection->state() != connection::StationConnection::State::Failed)
+    using State = connection::StationConnection::State;
+    if (!m_connection || m_connection->state() == State::Failed)
+        return;
+    if (m_connection->state() == State::Connecting)
+        statusBar()->showMessage(
+            message + QStringLiteral(" — ") + ConnectionStatus::advice(m_connection->endpoint()), 15000);
+    else
         statusBar()->showMessage(message, 8000);
+}
+
+// A failed connection says what to try, and keeps saying it until something changes.
+void MainWindow::connectionStateChanged() {
+    if (m_connection && m_connection->state() == connection::StationConnection::State::Failed)
+        statusBar()->showMessage(ConnectionStatus::advice(m_connection->endpoint()));
+    else if (m_connection && m_connection->state() == connection::StationConnection::State::Ready)
+        statusBar()->clearMessage();
 }
 
 void MainWindow::showConnectDialog() {
@@ -108,6 +158,13 @@ void MainWindow::showConnectDialog() {
 void MainWindow::createViewMenu() {
     m_viewMenu = menuBar()->addMenu(QString());
     m_viewMenu->setObjectName(QStringLiteral("viewMenu"));
+    m_panelsMenu = m_viewMenu->addMenu(QString());
+    m_panelsMenu->setObjectName(QStringLiteral("panelsMenu"));
+    for (QDockWidget* dock : m_workspace->docks())
+        m_panelsMenu->addAction(dock->toggleViewAction());
+    m_resetLayoutAction = m_viewMenu->addAction(QString(), m_workspace, &Workspace::reset);
+    m_resetLayoutAction->setObjectName(QStringLiteral("resetLayoutAction"));
+    m_viewMenu->addSeparator();
     m_languageMenu = new LanguageMenu(m_translations.current(), m_viewMenu);
     m_viewMenu->addMenu(m_languageMenu);
     connect(m_languageMenu, &LanguageMenu::languageChosen, this, &MainWindow::chooseLanguage);
@@ -124,7 +181,14 @@ void MainWindow::createHelpMenu() {
 // Station state is permanent information; the left side stays free for temporary messages.
 void MainWindow::createStatusBar() {
     m_stationStatus = new ConnectionStatus(this);
-    statusBar()->addPermanentWidget(m_stationStatus);
+    m_startupProgress = new StartupProgress(this);
+    m_traffic = new TrafficStatus(this);
+    m_power = new PowerStatus(this);
+    for (QWidget* part : {static_cast<QWidget*>(m_stationStatus), static_cast<QWidget*>(m_startupProgress),
+                          static_cast<QWidget*>(m_traffic), static_cast<QWidget*>(m_power)}) {
+        part->setContentsMargins(8, 0, 8, 0); // room between the parts, as between a panel's lamps
+        statusBar()->addPermanentWidget(part);
+    }
 }
 
 void MainWindow::retranslate() {
@@ -138,10 +202,24 @@ void MainWindow::retranslate() {
     m_helpMenu->setTitle(tr("&Help"));
     m_aboutAction->setText(tr("&About Stellwerk"));
     m_aboutAction->setStatusTip(tr("Show the version of Stellwerk and of Qt"));
-    m_workspaceTabs->setTabText(m_workspaceTabs->indexOf(m_layoutOverview), tr("Layout"));
-    m_workspaceTabs->setTabText(m_workspaceTabs->indexOf(m_frameDecoder), tr("Frame decoder"));
-    m_workspaceTabs->setTabText(m_workspaceTabs->indexOf(m_statusPanel), tr("Status"));
-    m_workspaceTabs->setTabText(m_workspaceTabs->indexOf(m_busMonitor), tr("Bus monitor"));
+    // The keys are EmergencyStopKeys' job (from any widget); the menu only names them.
+    m_stopAction->setText(tr("&Stop everything") + QStringLiteral("\t") + tr("Space, Esc"));
+    m_stopAction->setStatusTip(tr("Switch the track power off: every train stops"));
+    m_toolBar->setWindowTitle(tr("Stop and go"));
+    m_panelsMenu->setTitle(tr("&Panels"));
+    m_resetLayoutAction->setText(tr("&Reset panel layout"));
+    m_resetLayoutAction->setStatusTip(tr("Put every panel back where it was at the first start"));
+    retranslateDocks();
+}
+
+void MainWindow::retranslateDocks() {
+    const auto title = [this](QWidget* panel, const QString& text) {
+        if (QDockWidget* dock = m_workspace->dockOf(panel))
+            dock->setWindowTitle(text);
+    };
+    title(m_statusPanel, tr("Status"));
+    title(m_busMonitor, tr("Bus monitor"));
+    title(m_frameDecoder, tr("Frame decoder"));
 }
 
 void MainWindow::chooseLanguage(Language language) {

@@ -4,7 +4,7 @@
 
 #include <QMainWindow>
 
-class QTabWidget;
+class QToolBar;
 
 namespace stellwerk::connection {
 class StationConnection;
@@ -17,14 +17,21 @@ namespace stellwerk::ui {
 
 class BusMonitorPanel;
 class ConnectionStatus;
+class EmergencyStopKeys;
 class FrameDecoderPanel;
 class LanguageMenu;
 class LayoutOverview;
+class PowerStatus;
+class StartupProgress;
 class StatusPanel;
+class StopGoButton;
+class TrafficStatus;
 class Translations;
+class Workspace;
 
-// The station's main window: menus, the station's status line and the workspace tabs: the layout
-// overview first, then the frame decoder, and what later features (throttles, track plan, bus monitor) add.
+// The station's main window: menus, the toolbar with the big STOP / GO, the panels of a running session
+// as docks a person arranges (kept between runs), and the status bar with the station, its traffic, the
+// configuration download and the track power. Space or Escape stop the layout from anywhere.
 class MainWindow final : public QMainWindow {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(MainWindow)
@@ -32,50 +39,65 @@ class MainWindow final : public QMainWindow {
 public:
     explicit MainWindow(Translations& translations, QWidget* parent = nullptr);
 
-    // Features add their pages here with addTab().
-    QTabWidget* workspaceTabs() const { return m_workspaceTabs; }
+    Workspace* workspace() const { return m_workspace; }
     FrameDecoderPanel* frameDecoder() const { return m_frameDecoder; }
     LayoutOverview* layoutOverview() const { return m_layoutOverview; }
     StatusPanel* statusPanel() const { return m_statusPanel; }
     BusMonitorPanel* busMonitor() const { return m_busMonitor; }
-    // The railway the layout overview and the status page show (null: none); see RailwayBinding.
+    StopGoButton* stopGoButton() const { return m_stopGo; }
+
+    // The railway the panels show and STOP / GO acts on (null: none); see RailwayBinding.
     void setRailway(model::Railway* railway);
     // The station connection the status bar shows and Station → Connect… reconnects (null: none). It
     // must outlive the window or be replaced before it goes.
     void setConnection(connection::StationConnection* station);
     connection::StationConnection* stationConnection() const { return m_connection; }
+
     // Opens Station → Connect…; on Connect the choice is stored and the connection reconnects.
     void showConnectDialog();
 
 protected:
     void changeEvent(QEvent* event) override;
+    void closeEvent(QCloseEvent* event) override;
 
 private:
-    void createWorkspace();
+    void createPanels();
+    void createToolBar();
     void createFileMenu();
     void createStationMenu();
     void createViewMenu();
     void createHelpMenu();
     void createStatusBar();
     void retranslate();
+    void retranslateDocks();
     void chooseLanguage(Language language);
     void showStationProblem(const QString& message);
+    void connectionStateChanged();
 
     Translations& m_translations;
-    QTabWidget* m_workspaceTabs = nullptr;
+    Workspace* m_workspace = nullptr;
     LayoutOverview* m_layoutOverview = nullptr;
     FrameDecoderPanel* m_frameDecoder = nullptr;
     StatusPanel* m_statusPanel = nullptr;
     BusMonitorPanel* m_busMonitor = nullptr;
+    QToolBar* m_toolBar = nullptr;
+    StopGoButton* m_stopGo = nullptr;
+    EmergencyStopKeys* m_stopKeys = nullptr;
     QMenu* m_fileMenu = nullptr;
     QAction* m_quitAction = nullptr;
     QMenu* m_stationMenu = nullptr;
     QAction* m_connectAction = nullptr;
+    QAction* m_stopAction = nullptr;
     QMenu* m_viewMenu = nullptr;
+    QMenu* m_panelsMenu = nullptr;
+    QAction* m_resetLayoutAction = nullptr;
     LanguageMenu* m_languageMenu = nullptr;
     QMenu* m_helpMenu = nullptr;
     QAction* m_aboutAction = nullptr;
     ConnectionStatus* m_stationStatus = nullptr;
+    StartupProgress* m_startupProgress = nullptr;
+    TrafficStatus* m_traffic = nullptr;
+    PowerStatus* m_power = nullptr;
     connection::StationConnection* m_connection = nullptr;
 };
 

@@ -8,6 +8,7 @@
 #include "RailwayBinding.h"
 #include "StationUrlSettings.h"
 #include "Translations.h"
+#include "Workspace.h"
 #include "connection/StationConnection.h"
 #include "model/Railway.h"
 
@@ -69,7 +70,8 @@ Options parseOptions(const QApplication& app) {
     QCommandLineOption simulated(QStringLiteral("simulated"),
                                  QStringLiteral("Connect to the embedded simulated station (demo layout)."));
     parser.addOption(simulated);
-    QCommandLineOption tab(QStringLiteral("tab"), QStringLiteral("Workspace tab to show (object name)."),
+    QCommandLineOption tab(QStringLiteral("tab"),
+                           QStringLiteral("Panel to bring to the front (object name)."),
                            QStringLiteral("name"));
     tab.setFlags(QCommandLineOption::HiddenFromHelp);
     parser.addOption(tab);
@@ -134,11 +136,11 @@ int main(int argc, char* argv[]) {
             std::fprintf(stderr, "stellwerk: %s\n", qPrintable(error));
             return 1;
         }
-        window.workspaceTabs()->setCurrentWidget(window.frameDecoder()); // show what was asked for
+        window.workspace()->showPanel(window.frameDecoder()); // show what was asked for
     }
-    if (!options.tab.isEmpty()) {
-        if (auto* page = window.workspaceTabs()->findChild<QWidget*>(options.tab))
-            window.workspaceTabs()->setCurrentWidget(page);
+    if (!options.tab.isEmpty() && !window.workspace()->showPanel(options.tab)) {
+        std::fprintf(stderr, "stellwerk: there is no panel \"%s\"\n", qPrintable(options.tab));
+        return 1;
     }
     window.show();
     if (!options.screenshotFile.isEmpty()) {

@@ -127,16 +127,26 @@ TEST_F(ConnectionStatusTest, LampIsShownBesideTheText) {
     EXPECT_FALSE(lamp->pixmap().isNull());
 }
 
-TEST_F(ConnectionStatusTest, MainWindowShowsProblemsBesideTheStatusButNotAFailureTwice) {
+TEST_F(ConnectionStatusTest, MainWindowShowsWhatToTryBesideAFailureInsteadOfRepeatingIt) {
     MainWindow window(translations);
     window.setConnection(&station);
     QSignalSpy problems(&station, &connection::StationConnection::problem);
     station.connectTo(QStringLiteral("http://cs2"));
     ASSERT_EQ(problems.count(), 1);
-    EXPECT_EQ(window.statusBar()->currentMessage(), QString());
+    EXPECT_EQ(
+        window.statusBar()->currentMessage(),
+        QStringLiteral("Try: correct the address in Station → Connect…, for example udp://192.168.2.5."));
+}
 
+TEST_F(ConnectionStatusTest, MainWindowShowsProblemsWhileConnectingWithWhatToTry) {
+    MainWindow window(translations);
+    window.setConnection(&station);
+    QSignalSpy problems(&station, &connection::StationConnection::problem);
     station.connectTo(QStringLiteral("tcp://127.0.0.1:%1").arg(test::closedTcpPort()));
     ASSERT_TRUE(problems.wait(test::ReadyMs));
-    EXPECT_EQ(window.statusBar()->currentMessage(), problems.last().at(0).toString());
-    EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("trying again")));
+    const QString shown = window.statusBar()->currentMessage();
+    EXPECT_TRUE(
+        shown.startsWith(problems.last().at(0).toString() + QStringLiteral(" — Try: check that the station")))
+        << shown.toStdString();
+    EXPECT_TRUE(shown.contains(QStringLiteral("trying again")));
 }

@@ -157,13 +157,9 @@ TEST_F(LayoutOverviewTest, DisconnectingEmptiesTheTables) {
     EXPECT_EQ(overview.powerText(), QStringLiteral("No station connected"));
 }
 
-TEST(LayoutOverviewInTheWindow, IsTheFirstTab) {
+TEST(LayoutOverviewInTheWindow, IsInTheMiddleOfTheWindow) {
     Translations translations;
     ASSERT_TRUE(translations.select(Language::English));
     MainWindow window(translations);
-    QTabWidget* tabs = window.workspaceTabs();
-    ASSERT_GE(tabs->count(), 2);
-    EXPECT_EQ(tabs->widget(0), window.layoutOverview());
-    EXPECT_EQ(tabs->tabText(0), QStringLiteral("Layout"));
-    EXPECT_EQ(tabs->currentIndex(), 0);
+    EXPECT_EQ(window.centralWidget(), window.layoutOverview());
 }

@@ -4,14 +4,15 @@
 #include "LanguageSettings.h"
 #include "LayoutOverview.h"
 #include "Translations.h"
+#include "Workspace.h"
 
 #include <QAction>
 #include <QCoreApplication>
+#include <QDockWidget>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
-#include <QTabWidget>
 #include <QTreeWidget>
 #include <gtest/gtest.h>
 #include <memory>
@@ -124,30 +125,33 @@ TEST_F(MainWindowTest, StatusBarSaysNoStationConnected) {
     EXPECT_EQ(stationStatus(), QStringLiteral("No station connected"));
 }
 
-TEST_F(MainWindowTest, WorkspaceTabsAreLayoutStatusBusMonitorAndFrameDecoder) {
-    auto* tabs = window->findChild<QTabWidget*>(QStringLiteral("workspaceTabs"));
-    ASSERT_NE(tabs, nullptr);
-    EXPECT_EQ(window->centralWidget(), tabs);
-    EXPECT_EQ(window->workspaceTabs(), tabs);
-    ASSERT_EQ(tabs->count(), 4);
-    const QStringList names = {"layoutOverview", "statusPanel", "busMonitorPanel", "frameDecoderPanel"};
-    const QStringList texts = {"Layout", "Status", "Bus monitor", "Frame decoder"};
-    for (int i = 0; i < 4; ++i) {
-        EXPECT_EQ(tabs->widget(i)->objectName(), names[i]);
-        EXPECT_EQ(tabs->tabText(i), texts[i]);
+TEST_F(MainWindowTest, PanelsAreDocksAroundTheLayoutOverview) {
+    EXPECT_EQ(window->centralWidget(), window->layoutOverview());
+    QStringList names;
+    QStringList titles;
+    for (QDockWidget* dock : window->workspace()->docks()) {
+        names << dock->widget()->objectName();
+        titles << dock->windowTitle();
+        EXPECT_EQ(dock->objectName(), dock->widget()->objectName() + QStringLiteral("Dock"));
+        EXPECT_TRUE(menu("panelsMenu")->actions().contains(dock->toggleViewAction()));
     }
+    EXPECT_TRUE(names.contains(QStringLiteral("statusPanel")));
+    EXPECT_TRUE(names.contains(QStringLiteral("busMonitorPanel")));
+    EXPECT_TRUE(names.contains(QStringLiteral("frameDecoderPanel")));
+    EXPECT_TRUE(titles.contains(QStringLiteral("Bus monitor")));
+    EXPECT_TRUE(titles.contains(QStringLiteral("Frame decoder")));
 }
 
-TEST_F(MainWindowTest, DeutschTranslatesTheFrameDecoder) {
+TEST_F(MainWindowTest, DeutschTranslatesThePanelTitles) {
     choose("languageGerman");
-    auto* tabs = window->workspaceTabs();
-    EXPECT_EQ(tabs->tabText(tabs->indexOf(window->layoutOverview())), QStringLiteral("Anlage"));
-    EXPECT_EQ(tabs->tabText(tabs->indexOf(window->frameDecoder())), QStringLiteral("Telegramm-Decoder"));
+    EXPECT_EQ(window->workspace()->dockOf(window->frameDecoder())->windowTitle(),
+              QStringLiteral("Telegramm-Decoder"));
     auto* results = window->findChild<QTreeWidget*>(QStringLiteral("frameResults"));
     ASSERT_NE(results, nullptr);
     EXPECT_EQ(results->headerItem()->text(2), QStringLiteral("Meldung"));
     choose("languageEnglish");
-    EXPECT_EQ(tabs->tabText(tabs->indexOf(window->frameDecoder())), QStringLiteral("Frame decoder"));
+    EXPECT_EQ(window->workspace()->dockOf(window->frameDecoder())->windowTitle(),
+              QStringLiteral("Frame decoder"));
 }
 
 TEST_F(MainWindowTest, DeutschTranslatesMenusAndStatus) {

@@ -6,9 +6,11 @@
 #include "RailwayBinding.h"
 #include "StationTestSupport.h"
 #include "Translations.h"
+#include "Workspace.h"
 #include "model/Railway.h"
 
 #include <QCoreApplication>
+#include <QDockWidget>
 #include <QEvent>
 #include <QGroupBox>
 #include <QRegularExpression>
@@ -32,7 +34,7 @@ protected:
     void SetUp() override {
         ASSERT_TRUE(translations.select(Language::English));
         QObject::connect(&railways, &RailwayBinding::railwayChanged, &window, &MainWindow::setRailway);
-        window.workspaceTabs()->setCurrentWidget(window.statusPanel());
+        window.workspace()->showPanel(window.statusPanel());
         window.show();
         station.connectToSimulator();
         ASSERT_TRUE(test::waitForState(station, State::Ready));
@@ -68,8 +70,7 @@ protected:
 } // namespace
 
 TEST_F(StatusPanelTest, TheStatusTabShowsTheCs2WithAGaugePerReading) {
-    EXPECT_EQ(window.workspaceTabs()->tabText(window.workspaceTabs()->indexOf(&panel())),
-              QStringLiteral("Status"));
+    EXPECT_EQ(window.workspace()->dockOf(&panel())->windowTitle(), QStringLiteral("Status"));
     ASSERT_NE(panel().deviceGroup(Cs2), nullptr);
     EXPECT_EQ(panel().deviceGroup(Cs2)->title(), QStringLiteral("Central Station 2"));
     EXPECT_EQ(titles(), (QStringList{QStringLiteral("Track current (main)"),
@@ -129,8 +130,7 @@ TEST_F(StatusPanelTest, DeutschNamesTheMeasurements) {
     EXPECT_EQ(titles(), (QStringList{QStringLiteral("Gleisstrom Hauptgleis"),
                                      QStringLiteral("Gleisstrom Programmiergleis"),
                                      QStringLiteral("Spannung"), QStringLiteral("Temperatur")}));
-    EXPECT_EQ(window.workspaceTabs()->tabText(window.workspaceTabs()->indexOf(&panel())),
-              QStringLiteral("Status"));
+    EXPECT_EQ(window.workspace()->dockOf(&panel())->windowTitle(), QStringLiteral("Status"));
     EXPECT_EQ(StatusPanel::measurementName(QStringLiteral("FOO")), QStringLiteral("FOO"));
 }
 
@@ -151,13 +151,13 @@ TEST_F(StatusPanelTest, AnOverloadShowsTheBannerUntilThePowerIsOnAgain) {
     EXPECT_FALSE(panel().gauges(Cs2)[0]->overloaded());
 }
 
-TEST_F(StatusPanelTest, ReadingsArePolledOnlyWhileTheStatusTabIsVisible) {
+TEST_F(StatusPanelTest, ReadingsArePolledOnlyWhileTheStatusPanelIsVisible) {
     model::ReadingPoller& poller = railways.railway()->readings();
     EXPECT_TRUE(poller.running());
-    window.workspaceTabs()->setCurrentWidget(window.layoutOverview());
+    window.workspace()->dockOf(&panel())->close();
     EXPECT_FALSE(poller.active());
     EXPECT_FALSE(poller.running());
-    window.workspaceTabs()->setCurrentWidget(&panel());
+    window.workspace()->showPanel(&panel());
     EXPECT_TRUE(poller.active());
     EXPECT_TRUE(poller.running());
 }
