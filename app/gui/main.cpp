@@ -32,7 +32,7 @@ struct Options {
     QString screenshotFile; // empty: run normally
     QString captureFile;    // a capture to open in the frame decoder
     QString stationUrl;     // the station to connect to; empty: the embedded simulated station
-    QString tab;            // object name of the workspace tab to show first (for screenshots)
+    QString panel;          // object name of the panel to bring to the front (for screenshots)
 };
 
 // --simulated wins over --station, which wins over the settings.
@@ -70,14 +70,14 @@ Options parseOptions(const QApplication& app) {
     QCommandLineOption simulated(QStringLiteral("simulated"),
                                  QStringLiteral("Connect to the embedded simulated station (demo layout)."));
     parser.addOption(simulated);
-    QCommandLineOption tab(QStringLiteral("tab"),
-                           QStringLiteral("Panel to bring to the front (object name)."),
-                           QStringLiteral("name"));
-    tab.setFlags(QCommandLineOption::HiddenFromHelp);
-    parser.addOption(tab);
+    QCommandLineOption panel(QStringLiteral("panel"),
+                             QStringLiteral("Panel to bring to the front (object name)."),
+                             QStringLiteral("name"));
+    panel.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOption(panel);
     parser.process(app);
     return Options{parser.value(screenshot), parser.value(decode), stationUrl(parser, station, simulated),
-                   parser.value(tab)};
+                   parser.value(panel)};
 }
 
 void grabAndQuit(QWidget& window, const QString& file) {
@@ -138,8 +138,8 @@ int main(int argc, char* argv[]) {
         }
         window.workspace()->showPanel(window.frameDecoder()); // show what was asked for
     }
-    if (!options.tab.isEmpty() && !window.workspace()->showPanel(options.tab)) {
-        std::fprintf(stderr, "stellwerk: there is no panel \"%s\"\n", qPrintable(options.tab));
+    if (!options.panel.isEmpty() && !window.workspace()->showPanel(options.panel)) {
+        std::fprintf(stderr, "stellwerk: there is no panel \"%s\"\n", qPrintable(options.panel));
         return 1;
     }
     window.show();
