@@ -96,4 +96,15 @@ TEST_F(DeviceSettingsTest, AValueTheDeviceCannotTakeIsRefusedAndTheOldOneShown) 
     EXPECT_EQ(demo.station().statusChannels().setting(CurrentLimitChannel), 4000);
 }
 
+TEST_F(DeviceSettingsTest, AWriteWithoutAnswerSaysSoAndShowsTheOldValue) {
+    demo.stop();
+    editor(CurrentLimitChannel).slider()->setValue(1500);
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return editor(CurrentLimitChannel).state() == DeviceSettingEditor::State::NoAnswer; },
+        test::CommandMs));
+    EXPECT_EQ(editor(CurrentLimitChannel).stateText(), QStringLiteral("no answer ✗"));
+    EXPECT_EQ(editor(CurrentLimitChannel).slider()->value(), 4000);
+    EXPECT_EQ(setting(CurrentLimitChannel).value(), 4000);
+}
+
 } // namespace

@@ -90,6 +90,13 @@ TEST_F(TurnoutPanelTest, ClickingATurnoutSwitchesItOnTheStation) {
         << "another controller sees the new position";
 }
 
+TEST_F(TurnoutPanelTest, SpaceSwitchesTheFocusedKey) {
+    key(3).setFocus();
+    QTest::keyClick(&key(3), Qt::Key_Space);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return stationPosition(3) == 0 && key(3).face().position == 0; },
+                                test::CommandMs));
+}
+
 TEST_F(TurnoutPanelTest, AThreeWayTurnoutOffersItsPositions) {
     QTest::mouseClick(key(4).positionButtons().at(2), Qt::LeftButton);
     ASSERT_TRUE(QTest::qWaitFor([&] { return controller.railway()->accessory(4)->position() == 2; },
