@@ -61,8 +61,8 @@ void DeviceSettingEditor::buildNumber(const model::DeviceSetting& setting) {
 }
 
 void DeviceSettingEditor::choose(std::uint16_t value) {
-    if (value == m_reported && m_state != State::Refused && m_state != State::NoAnswer)
-        return;
+    if (value == m_reported)
+        return; // e.g. the number field losing the focus unchanged
     m_chosen = value;
     setState(State::Writing);
     emit valueChosen(m_channel, value);

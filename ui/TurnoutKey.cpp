@@ -180,6 +180,7 @@ void TurnoutKey::updateToolTip() {
                    .arg(m_face.owner);
         break;
     }
+    setAccessibleName(text);
     if (m_pending)
         text += QLatin1Char('\n') + tr("Switching: waiting for the station to confirm");
     else if (m_unconfirmed)

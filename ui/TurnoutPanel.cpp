@@ -35,15 +35,22 @@ TurnoutPanel::TurnoutPanel(QWidget* parent) : QWidget(parent) {
     setFocusPolicy(Qt::StrongFocus);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(buildNavigation());
-    auto* grid = new QGridLayout;
+    m_emptyText = new QLabel(this);
+    m_emptyText->setObjectName(QStringLiteral("turnoutPanelEmpty"));
+    m_emptyText->setAlignment(Qt::AlignCenter);
+    m_emptyText->setEnabled(false);
+    layout->addWidget(m_emptyText);
+    m_keyboard = new QWidget(this);
+    auto* grid = new QGridLayout(m_keyboard);
+    grid->setContentsMargins(0, 0, 0, 0);
     grid->setSpacing(8);
     for (int i = 0; i < KeysPerPage; ++i) {
-        auto* key = new TurnoutKey(this);
+        auto* key = new TurnoutKey(m_keyboard);
         connect(key, &TurnoutKey::switchRequested, this, &TurnoutPanel::requestSwitch);
         grid->addWidget(key, i / KeysPerRow, i % KeysPerRow);
         m_keys.push_back(key);
     }
-    layout->addLayout(grid);
+    layout->addWidget(m_keyboard);
     layout->addStretch(1);
     // Page Up/Down wherever the focus is inside the panel (keys, page picker).
     auto* down = new QShortcut(QKeySequence(Qt::Key_PageDown), this, this, &TurnoutPanel::nextPage);
@@ -108,7 +115,10 @@ void TurnoutPanel::rebuild() {
     m_pageCount = std::max<int>(MinimumPages, int((last + KeysPerPage - 1) / KeysPerPage));
     m_page = std::clamp(m_page, 0, m_pageCount - 1);
     int articles = m_railway ? int(m_railway->state().accessories().size()) : 0;
-    m_summary->setText(m_railway ? tr("Articles on the keyboard: %1").arg(articles) : tr("Not connected"));
+    m_summary->setText(m_railway ? tr("Articles on the keyboard: %1").arg(articles) : QString());
+    m_keyboard->setVisible(m_railway != nullptr);
+    m_emptyText->setVisible(m_railway == nullptr);
+    m_pagePicker->setEnabled(m_railway != nullptr);
     updatePagePicker();
     refreshKeys();
 }
@@ -142,8 +152,8 @@ void TurnoutPanel::refreshKeys() {
     const std::int64_t first = std::int64_t(m_page) * KeysPerPage + 1;
     for (qsizetype i = 0; i < m_keys.size(); ++i)
         refresh(m_keys[i], first + i);
-    m_previous->setEnabled(m_page > 0);
-    m_next->setEnabled(m_page + 1 < m_pageCount);
+    m_previous->setEnabled(m_railway && m_page > 0);
+    m_next->setEnabled(m_railway && m_page + 1 < m_pageCount);
 }
 
 void TurnoutPanel::refresh(TurnoutKey* key, std::int64_t address) {
@@ -233,6 +243,7 @@ void TurnoutPanel::keyPressEvent(QKeyEvent* event) {
 }
 
 void TurnoutPanel::retranslate() {
+    m_emptyText->setText(tr("The keyboard appears when a station is connected."));
     m_previous->setToolTip(tr("Previous page (Page Up)"));
     m_next->setToolTip(tr("Next page (Page Down)"));
     m_pagePicker->setToolTip(tr("Keyboard page: 16 addresses each, as on the Central Station"));

@@ -73,6 +73,8 @@ private:
     QToolButton* m_next = nullptr;
     QComboBox* m_pagePicker = nullptr;
     QLabel* m_summary = nullptr;
+    QLabel* m_emptyText = nullptr;
+    QWidget* m_keyboard = nullptr; // the grid of keys, hidden without a railway
     QList<TurnoutKey*> m_keys;
     int m_page = 0;
     int m_pageCount = MinimumPages;

@@ -8,6 +8,7 @@
 #include "TurnoutKey.h"
 
 #include <QComboBox>
+#include <QLabel>
 #include <QToolButton>
 #include <gtest/gtest.h>
 
@@ -73,6 +74,16 @@ TEST_F(TurnoutPanelTest, TheDemoArticlesAppearOnPageOneWithNamesAndAddresses) {
     EXPECT_EQ(key(13).face().kind, AccessoryIcon::Kind::ShuntSignal);
     EXPECT_EQ(key(15).face().role, KeyFace::Role::Address);
     EXPECT_EQ(buttonTexts(key(15)), (QStringList{"Red", "Green"}));
+}
+
+TEST(TurnoutPanel, WithoutAStationItSaysSoInsteadOfShowingKeys) {
+    TurnoutPanel empty;
+    empty.show();
+    auto* text = empty.findChild<QLabel*>(QStringLiteral("turnoutPanelEmpty"));
+    ASSERT_NE(text, nullptr);
+    EXPECT_TRUE(text->isVisible());
+    EXPECT_FALSE(empty.keys().first()->isVisible());
+    EXPECT_FALSE(empty.findChild<QToolButton*>(QStringLiteral("nextPage"))->isEnabled());
 }
 
 TEST_F(TurnoutPanelTest, ClickingATurnoutSwitchesItOnTheStation) {
