@@ -35,7 +35,10 @@ void Railway::switchAccessory(std::int64_t id, int position) {
 void Railway::switchAddress(std::int64_t address, int position) {
     const auto wire = cs2::LocId::fromAddress(cs2::Protocol::Mm2Accessory,
                                               std::uint32_t(std::max<std::int64_t>(address, 0)));
-    const QString what = QStringLiteral("Address %1: %2").arg(address).arg(position == 0 ? "red" : "green");
+    const QString output = position == 0   ? QStringLiteral("red")
+                           : position == 1 ? QStringLiteral("green")
+                                           : QStringLiteral("output %1").arg(position);
+    const QString what = QStringLiteral("Address %1: %2").arg(address).arg(output);
     if (!wire || address < 1 || position < 0 || position > 1) {
         emit problem(
             QStringLiteral("%1 cannot be switched: there is no such MM2 address or output").arg(what));

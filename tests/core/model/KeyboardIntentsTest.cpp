@@ -39,7 +39,9 @@ TEST_F(KeyboardIntents, AnAddressOutsideTheMm2RangeIsAProblem) {
     QSignalSpy ended(&bench.railway, &Railway::switchingEnded);
     bench.railway.switchAddress(0, 1);
     bench.railway.switchAddress(20, 2);
-    EXPECT_EQ(problems.count(), 2);
+    ASSERT_EQ(problems.count(), 2);
+    EXPECT_TRUE(problems.at(1).at(0).toString().contains("Address 20: output 2"))
+        << problems.at(1).at(0).toString().toStdString();
     ASSERT_EQ(ended.count(), 2);
     EXPECT_FALSE(ended.at(1).at(2).toBool());
 }
