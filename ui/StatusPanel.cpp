@@ -1,9 +1,11 @@
 #include "StatusPanel.h"
 
+#include "DeviceSettingEditor.h"
 #include "GaugeWidget.h"
 #include "model/Railway.h"
 
 #include <QEvent>
+#include <QFormLayout>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QLabel>
@@ -60,6 +62,10 @@ void StatusPanel::setRailway(model::Railway* railway) {
         connect(m_railway, &model::Railway::devicesChanged, this, &StatusPanel::devicesChanged);
         connect(m_railway, &model::Railway::loaded, this, &StatusPanel::rebuild);
         connect(m_railway, &model::Railway::overloaded, this, &StatusPanel::showOverload);
+        connect(m_railway, &model::Railway::deviceConfigured, this,
+                [this](quint32 uid, quint8 channel, model::SettingResult result) {
+                    showSettingResult(uid, channel, int(result));
+                });
         connect(m_railway, &model::Railway::powerChanged, this, [this](station::PowerState state) {
             if (state == station::PowerState::Running)
                 clearOverload();
@@ -78,6 +84,15 @@ QList<GaugeWidget*> StatusPanel::gauges(std::uint32_t device) const {
 QGroupBox* StatusPanel::deviceGroup(std::uint32_t device) const {
     const auto it = m_devices.find(device);
     return it == m_devices.end() ? nullptr : it->second.group;
+}
+
+QList<DeviceSettingEditor*> StatusPanel::settingEditors(std::uint32_t device) const {
+    const auto it = m_devices.find(device);
+    return it == m_devices.end() ? QList<DeviceSettingEditor*>() : it->second.settings;
+}
+
+bool StatusPanel::shows(const model::Device* device) {
+    return device && (!device->channels().empty() || !device->settings().empty());
 }
 
 QString StatusPanel::overloadText() const {
@@ -110,7 +125,7 @@ void StatusPanel::rebuild() {
 
 void StatusPanel::addDevice(std::uint32_t uid) {
     const model::Device* device = m_railway->device(uid);
-    if (!device || device->channels().empty())
+    if (!shows(device))
         return;
     DeviceGauges entry;
     entry.group = new QGroupBox(device->name(), m_devicesLayout->parentWidget());
@@ -128,9 +143,45 @@ void StatusPanel::addDevice(std::uint32_t uid) {
         entry.gauges.push_back(gauge);
         entry.channels.push_back(channel.channel());
     }
+    addSettings(*device, entry);
     // Before the stretch, in the order the devices answered.
     m_devicesLayout->insertWidget(m_devicesLayout->count() - 1, entry.group);
     m_devices.emplace(uid, std::move(entry));
+}
+
+// Below the gauges: one row per configuration channel, its title and its editor.
+void StatusPanel::addSettings(const model::Device& device, DeviceGauges& entry) {
+    if (device.settings().empty())
+        return;
+    auto* grid = static_cast<QGridLayout*>(entry.group->layout());
+    entry.settingsTitle = new QLabel(entry.group);
+    QFont bold = entry.settingsTitle->font();
+    bold.setBold(true);
+    entry.settingsTitle->setFont(bold);
+    auto* form = new QFormLayout;
+    form->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
+    for (const model::DeviceSetting& setting : device.settings()) {
+        auto* label = new QLabel(setting.title(), entry.group);
+        auto* editor = new DeviceSettingEditor(setting, entry.group);
+        connect(editor, &DeviceSettingEditor::valueChosen, this,
+                [this, uid = device.uid()](quint8 channel, quint16 value) {
+                    if (m_railway)
+                        m_railway->configureDevice(uid, channel, value);
+                });
+        form->addRow(label, editor);
+        entry.settingLabels.push_back(label);
+        entry.settings.push_back(editor);
+    }
+    const int row = grid->rowCount();
+    grid->addWidget(entry.settingsTitle, row, 0, 1, GaugesPerRow);
+    grid->addLayout(form, row + 1, 0, 1, GaugesPerRow);
+    entry.settingsTitle->setText(tr("Settings"));
+}
+
+void StatusPanel::showSettingResult(quint32 uid, quint8 channel, int result) {
+    for (DeviceSettingEditor* editor : settingEditors(uid))
+        if (editor->channel() == channel)
+            editor->showResult(model::SettingResult(result));
 }
 
 void StatusPanel::devicesChanged(const QList<quint32>& uids) {
@@ -140,7 +191,7 @@ void StatusPanel::devicesChanged(const QList<quint32>& uids) {
     for (const quint32 uid : uids) {
         if (m_devices.contains(uid))
             updateDevice(uid);
-        else if (const model::Device* device = m_railway->device(uid); device && !device->channels().empty())
+        else if (shows(m_railway->device(uid)))
             added = true;
     }
     if (added)
@@ -150,10 +201,14 @@ void StatusPanel::devicesChanged(const QList<quint32>& uids) {
 void StatusPanel::updateDevice(std::uint32_t uid) {
     const model::Device* device = m_railway->device(uid);
     DeviceGauges& entry = m_devices.at(uid);
-    if (!device || device->channels().size() != entry.channels.size()) {
+    if (!device || device->channels().size() != entry.channels.size() ||
+        device->settings().size() != std::size_t(entry.settings.size())) {
         rebuild();
         return;
     }
+    for (DeviceSettingEditor* editor : entry.settings)
+        if (const model::DeviceSetting* setting = device->setting(editor->channel()))
+            editor->setSetting(*setting);
     for (qsizetype i = 0; i < entry.gauges.size(); ++i)
         if (const model::StatusChannel* channel = device->channel(entry.channels[std::size_t(i)]))
             entry.gauges[i]->setChannel(*channel);
@@ -181,6 +236,8 @@ void StatusPanel::clearOverload() {
 void StatusPanel::retranslate() {
     m_emptyText->setText(tr("No device has described its readings yet."));
     for (auto& [uid, entry] : m_devices) {
+        if (entry.settingsTitle)
+            entry.settingsTitle->setText(tr("Settings"));
         const model::Device* device = m_railway ? m_railway->device(uid) : nullptr;
         for (qsizetype i = 0; i < entry.gauges.size() && device; ++i)
             if (const model::StatusChannel* channel = device->channel(entry.channels[std::size_t(i)]))

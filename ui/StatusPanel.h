@@ -13,11 +13,13 @@ class QLabel;
 class QVBoxLayout;
 
 namespace stellwerk::model {
+class Device;
 class Railway;
-}
+} // namespace stellwerk::model
 
 namespace stellwerk::ui {
 
+class DeviceSettingEditor;
 class GaugeWidget;
 
 // The Status page: a group per device that describes its readings, one gauge per reading, and a red
@@ -36,6 +38,8 @@ public:
     // The gauges of a device in the description's order; empty for an unknown device.
     QList<GaugeWidget*> gauges(std::uint32_t device) const;
     QGroupBox* deviceGroup(std::uint32_t device) const;
+    // The editors of a device's configuration channels in the description's order.
+    QList<DeviceSettingEditor*> settingEditors(std::uint32_t device) const;
     // The overload banner's text; empty while it is hidden.
     QString overloadText() const;
 
@@ -52,12 +56,18 @@ private:
         QGroupBox* group = nullptr;
         std::vector<std::uint8_t> channels;
         QList<GaugeWidget*> gauges;
+        QLabel* settingsTitle = nullptr;
+        QList<QLabel*> settingLabels;
+        QList<DeviceSettingEditor*> settings;
     };
 
     void rebuild();
     void devicesChanged(const QList<quint32>& uids);
     void updateDevice(std::uint32_t uid);
     void addDevice(std::uint32_t uid);
+    void addSettings(const model::Device& device, DeviceGauges& entry);
+    void showSettingResult(quint32 uid, quint8 channel, int result);
+    static bool shows(const model::Device* device);
     void showOverload(quint32 device, quint8 channel);
     void clearOverload();
     void retranslate();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 
 namespace stellwerk::model {
 namespace {
@@ -75,6 +76,9 @@ Device::Device(const station::DeviceDescription& description)
       described_(description.summary.has_value()) {
     for (const station::ReadingChannel& reading : description.readings)
         channels_.emplace_back(reading);
+    for (const station::ConfigChannel& config : description.configs)
+        if (config.kind != station::ConfigChannel::Kind::Unknown)
+            settings_.emplace_back(config);
 }
 
 QString Device::typeName() const {
@@ -103,6 +107,65 @@ StatusChannel* Device::channel(std::uint8_t number) {
 
 const StatusChannel* Device::channel(std::uint8_t number) const {
     return const_cast<Device*>(this)->channel(number);
+}
+
+DeviceSetting* Device::setting(std::uint8_t number) {
+    const auto it = std::ranges::find(settings_, number, &DeviceSetting::channel);
+    return it == settings_.end() ? nullptr : &*it;
+}
+
+const DeviceSetting* Device::setting(std::uint8_t number) const {
+    return const_cast<Device*>(this)->setting(number);
+}
+
+DeviceSetting::DeviceSetting(station::ConfigChannel description)
+    : description_(std::move(description)), value_(isList() ? description_.current : description_.value) {}
+
+QStringList DeviceSetting::options() const {
+    QStringList list;
+    for (const std::string& option : description_.options)
+        list << QString::fromStdString(option);
+    return list;
+}
+
+std::uint16_t DeviceSetting::minimum() const {
+    return isList() ? 0 : description_.minimum;
+}
+
+std::uint16_t DeviceSetting::maximum() const {
+    if (isList())
+        return std::uint16_t(description_.options.empty() ? 0 : description_.options.size() - 1);
+    return std::max(description_.minimum, description_.maximum);
+}
+
+double DeviceSetting::scaled(std::uint16_t raw) const {
+    const double start = labelValue(description_.startLabel);
+    const double end = labelValue(description_.endLabel);
+    if (maximum() == minimum() || (start == 0 && end == 0))
+        return raw;
+    return start + (double(raw) - minimum()) * (end - start) / (maximum() - minimum());
+}
+
+std::uint16_t DeviceSetting::rawFor(double scaledValue) const {
+    const double start = labelValue(description_.startLabel);
+    const double end = labelValue(description_.endLabel);
+    double raw = scaledValue;
+    if (maximum() != minimum() && end != start)
+        raw = minimum() + (scaledValue - start) * (maximum() - minimum()) / (end - start);
+    return std::uint16_t(std::clamp(std::lround(raw), long(minimum()), long(maximum())));
+}
+
+int DeviceSetting::decimals() const {
+    const std::string& label = description_.startLabel;
+    const auto dot = label.find('.');
+    return dot == std::string::npos ? 0 : int(label.size() - dot - 1);
+}
+
+bool DeviceSetting::confirm(std::uint16_t value) {
+    if (value == value_)
+        return false;
+    value_ = value;
+    return true;
 }
 
 } // namespace stellwerk::model

@@ -4,6 +4,7 @@
 
 #include <QDateTime>
 #include <QString>
+#include <QStringList>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -55,7 +56,43 @@ private:
     bool stale_ = false;
 };
 
-// A device on the bus (the station, a Gleisbox, an MS2, a Link S88): what it is and its gauges.
+// One configuration channel of a device (status data R+1..R+C: a list of options or a number with a
+// range), and the value the device last reported for it, so that a settings page can show and write it.
+class DeviceSetting {
+public:
+    explicit DeviceSetting(station::ConfigChannel description);
+
+    std::uint8_t channel() const { return description_.channel; }
+    bool isList() const { return description_.kind == station::ConfigChannel::Kind::List; }
+    bool isNumber() const { return description_.kind == station::ConfigChannel::Kind::Number; }
+    QString title() const { return QString::fromStdString(description_.title); }
+    QStringList options() const;
+    // The raw range of a number channel (a list's: 0 .. options - 1).
+    std::uint16_t minimum() const;
+    std::uint16_t maximum() const;
+    bool accepts(std::uint16_t value) const { return value >= minimum() && value <= maximum(); }
+    // A number channel's value in its unit: the labels' range spread over the raw range ("0.500" ..
+    // "4.500" A over 500 .. 4500), with the labels' decimals.
+    double scaled(std::uint16_t raw) const;
+    std::uint16_t rawFor(double scaledValue) const;
+    int decimals() const;
+    QString unit() const { return QString::fromStdString(description_.unit); }
+    const station::ConfigChannel& description() const { return description_; }
+
+    // The list index or raw number the device last reported.
+    std::uint16_t value() const { return value_; }
+    bool confirm(std::uint16_t value);
+
+private:
+    station::ConfigChannel description_;
+    std::uint16_t value_ = 0;
+};
+
+// How a device answered a configuration write.
+enum class SettingResult : std::uint8_t { Accepted, Refused, NoAnswer };
+
+// A device on the bus (the station, a Gleisbox, an MS2, a Link S88): what it is, its gauges and its
+// settings.
 class Device {
 public:
     explicit Device(const cs2::DeviceIdentity& identity);
@@ -71,12 +108,16 @@ public:
     const std::vector<StatusChannel>& channels() const { return channels_; }
     StatusChannel* channel(std::uint8_t number);
     const StatusChannel* channel(std::uint8_t number) const;
+    const std::vector<DeviceSetting>& settings() const { return settings_; }
+    DeviceSetting* setting(std::uint8_t number);
+    const DeviceSetting* setting(std::uint8_t number) const;
 
 private:
     cs2::DeviceIdentity identity_;
     std::optional<station::DeviceSummary> summary_;
     bool described_ = false;
     std::vector<StatusChannel> channels_;
+    std::vector<DeviceSetting> settings_;
 };
 
 } // namespace stellwerk::model

@@ -62,6 +62,8 @@ void Railway::announce(const RailwayChanges& changes) {
         emit locomotivesChanged(toList<std::uint32_t, quint32>(changes.locomotives));
     if (!changes.accessories.empty())
         emit accessoriesChanged(toList<std::int64_t, qint64>(changes.accessories));
+    if (!changes.addresses.empty())
+        emit addressesChanged(toList<std::int64_t, qint64>(changes.addresses));
     if (!changes.contacts.empty())
         emit contactsChanged(toList<ContactKey, quint32>(changes.contacts));
     announceTiles(changes);
@@ -161,6 +163,42 @@ void Railway::toggleFunction(std::uint32_t loco, int function) {
 void Railway::emergencyStop(std::uint32_t loco) {
     command({0, false, 0, cs2::LocoEmergencyStop{cs2::LocId(loco)}},
             QStringLiteral("%1: emergency stop").arg(locoName(loco)));
+}
+
+void Railway::configureDevice(std::uint32_t uid, std::uint8_t channel, std::uint16_t value) {
+    const Device* found = device(uid);
+    const DeviceSetting* setting = found ? found->setting(channel) : nullptr;
+    if (!setting || !setting->accepts(value)) {
+        emit problem(QStringLiteral("%1: setting %2 cannot take the value %3")
+                         .arg(found ? found->name() : QString::number(uid, 16))
+                         .arg(channel)
+                         .arg(value));
+        emit deviceConfigured(uid, channel, SettingResult::Refused);
+        return;
+    }
+    const QString what = QStringLiteral("%1: %2 = %3").arg(found->name(), setting->title()).arg(value);
+    QPointer<Railway> self(this);
+    session_.request({0, false, 0, cs2::SystemStatus{uid, channel, value, std::nullopt}},
+                     [self, uid, channel, what](const station::CommandResult& result) {
+                         if (!self)
+                             return;
+                         using Status = station::CommandResult::Status;
+                         const SettingResult outcome = result.succeeded() ? SettingResult::Accepted
+                                                       : result.status == Status::Rejected
+                                                           ? SettingResult::Refused
+                                                           : SettingResult::NoAnswer;
+                         if (outcome != SettingResult::Accepted)
+                             emit self->problem(commandProblem(what, result));
+                         else
+                             self->readSetting(uid, channel);
+                         emit self->deviceConfigured(uid, channel, outcome);
+                     });
+}
+
+// Asks the device for the value it now uses; the answer reaches the setting as a reading (0x0B, DLC 8).
+void Railway::readSetting(std::uint32_t uid, std::uint8_t channel) {
+    session_.request({0, false, 0, cs2::SystemStatus{uid, channel, std::nullopt, std::nullopt}},
+                     [](const station::CommandResult&) {});
 }
 
 void Railway::stop() {

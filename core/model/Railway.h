@@ -41,6 +41,8 @@ public:
     const FeedbackContact* contact(ContactKey key) const { return state_.contacts().find(key); }
     const Route* route(std::int64_t id) const { return state_.routes().find(id); }
     const Device* device(std::uint32_t uid) const { return state_.devices().find(uid); }
+    // The position the bus last showed for an MM2 keyboard number without an article.
+    std::optional<int> addressPosition(std::int64_t address) const { return state_.addressPosition(address); }
     const TrackLayout& layout() const { return state_.layout(); }
     // Unknown until the station reported its power state.
     std::optional<station::PowerState> power() const { return state_.power(); }
@@ -54,6 +56,10 @@ public:
     void toggleFunction(std::uint32_t loco, int function);
     void emergencyStop(std::uint32_t loco);
     void switchAccessory(std::int64_t accessory, int position);
+    // Switches a keyboard number that no article uses, as an MM2 address: 0 red (round), 1 green (straight).
+    void switchAddress(std::int64_t address, int position);
+    // Writes a device's configuration channel; deviceConfigured reports how the device answered.
+    void configureDevice(std::uint32_t uid, std::uint8_t channel, std::uint16_t value);
     // Starts a route; false (and a problem) when it is unknown, already running or cannot run.
     bool runRoute(std::int64_t route);
     void cancelRoute(std::int64_t route);
@@ -64,6 +70,12 @@ signals:
     void loaded();
     void locomotivesChanged(const QList<quint32>& ids);
     void accessoriesChanged(const QList<qint64>& ids);
+    // Keyboard numbers without an article whose position changed (see addressPosition).
+    void addressesChanged(const QList<qint64>& addresses);
+    // A switchAccessory or switchAddress ended: acknowledged by the station, or not (then also a problem).
+    void switchingEnded(qint64 address, int position, bool acknowledged);
+    // A configureDevice ended; on Accepted the value is read back and arrives with devicesChanged.
+    void deviceConfigured(quint32 uid, quint8 channel, stellwerk::model::SettingResult result);
     void contactsChanged(const QList<quint32>& keys);
     // Tiles whose accessory or contact changed, for the track plan view.
     void tilesChanged(const QList<stellwerk::model::TileRef>& tiles);
@@ -90,6 +102,8 @@ private:
     void command(const cs2::Message& message, const QString& what, std::function<void()> done = {});
     void switchForRoute(std::int64_t accessory, int position, std::function<void(const QString&)> done);
     void routeEnded(std::int64_t route);
+    void sendSwitching(std::int64_t address, int position, const cs2::Message& command, const QString& what);
+    void readSetting(std::uint32_t uid, std::uint8_t channel);
     QString locoName(std::uint32_t loco) const;
 
     station::StationSession& session_;

@@ -25,9 +25,39 @@ QString accessoryName(const Accessory& accessory) {
 } // namespace
 
 void Railway::switchAccessory(std::int64_t id, int position) {
-    switchForRoute(id, position, [this](const QString& failure) {
+    switchForRoute(id, position, [this, id, position](const QString& failure) {
         if (!failure.isEmpty())
             emit problem(failure);
+        emit switchingEnded(id, position, failure.isEmpty());
+    });
+}
+
+void Railway::switchAddress(std::int64_t address, int position) {
+    const auto wire = cs2::LocId::fromAddress(cs2::Protocol::Mm2Accessory,
+                                              std::uint32_t(std::max<std::int64_t>(address, 0)));
+    const QString output = position == 0   ? QStringLiteral("red")
+                           : position == 1 ? QStringLiteral("green")
+                                           : QStringLiteral("output %1").arg(position);
+    const QString what = QStringLiteral("Address %1: %2").arg(address).arg(output);
+    if (!wire || address < 1 || position < 0 || position > 1) {
+        emit problem(
+            QStringLiteral("%1 cannot be switched: there is no such MM2 address or output").arg(what));
+        emit switchingEnded(address, position, false);
+        return;
+    }
+    const cs2::AccessorySwitch body{*wire, std::uint8_t(position), 1, std::nullopt};
+    sendSwitching(address, position, {0, false, 0, body}, what);
+}
+
+void Railway::sendSwitching(std::int64_t address, int position, const cs2::Message& command,
+                            const QString& what) {
+    QPointer<Railway> self(this);
+    session_.request(command, [self, address, position, what](const station::CommandResult& result) {
+        if (!self)
+            return;
+        if (!result.succeeded())
+            emit self->problem(commandProblem(what, result));
+        emit self->switchingEnded(address, position, result.succeeded());
     });
 }
 

@@ -104,12 +104,31 @@ void RailwayState::applyAccessories(const station::StationUpdates& updates, Rail
         if (change.current == 0)
             continue; // switching the output off keeps the position
         const auto owner = addressOwners_.find(change.article.value());
-        if (owner == addressOwners_.end())
-            continue; // not on this station's keyboard
+        if (owner == addressOwners_.end()) {
+            applyLooseAddress(change, changes);
+            continue;
+        }
         Accessory* accessory = accessories_.find(owner->second.accessory);
         if (accessory->confirmPosition(accessory->positionOf(owner->second.addressIndex, change.position)))
             changes.accessories.add(accessory->id());
     }
+}
+
+// A keyboard address without an article: its position is kept for the keyboard's plain buttons.
+void RailwayState::applyLooseAddress(const station::AccessoryChange& change, RailwayChanges& changes) {
+    if (change.article.protocol() != cs2::Protocol::Mm2Accessory)
+        return;
+    const auto address = std::int64_t(change.article.address());
+    auto [it, added] = addressPositions_.try_emplace(address, change.position);
+    if (added || it->second != change.position) {
+        it->second = change.position;
+        changes.addresses.add(address);
+    }
+}
+
+std::optional<int> RailwayState::addressPosition(std::int64_t address) const {
+    const auto it = addressPositions_.find(address);
+    return it == addressPositions_.end() ? std::nullopt : std::optional<int>(it->second);
 }
 
 void RailwayState::applyContacts(const station::StationUpdates& updates, const QDateTime& now,
@@ -135,6 +154,9 @@ void RailwayState::applyDevices(const station::StationUpdates& updates, const QD
         Device* device = devices_.find(reading.device);
         StatusChannel* channel = device ? device->channel(reading.channel) : nullptr;
         if (channel && channel->confirm(reading.raw, now))
+            changes.devices.add(reading.device);
+        DeviceSetting* setting = device && !channel ? device->setting(reading.channel) : nullptr;
+        if (setting && setting->confirm(reading.raw))
             changes.devices.add(reading.device);
     }
 }

@@ -24,6 +24,8 @@ namespace stellwerk::model {
 struct RailwayChanges {
     ChangedKeys<std::uint32_t> locomotives;
     ChangedKeys<std::int64_t> accessories;
+    // Keyboard numbers (MM2) without an article whose position the bus showed.
+    ChangedKeys<std::int64_t> addresses;
     ChangedKeys<ContactKey> contacts;
     ChangedKeys<std::uint32_t> devices;
     std::optional<station::PowerState> power;
@@ -51,6 +53,8 @@ public:
     Registry<std::uint32_t, Device>& devices() { return devices_; }
     const TrackLayout& layout() const { return layout_; }
     std::optional<station::PowerState> power() const { return power_; }
+    // The position last seen on the bus for an MM2 keyboard number that no article uses.
+    std::optional<int> addressPosition(std::int64_t address) const;
 
 private:
     void loadLocomotives(const station::StartupResult& startup);
@@ -59,6 +63,7 @@ private:
     void loadDevices(const station::StartupResult& startup);
     void applyLocomotives(const station::StationUpdates& updates, RailwayChanges& changes);
     void applyAccessories(const station::StationUpdates& updates, RailwayChanges& changes);
+    void applyLooseAddress(const station::AccessoryChange& change, RailwayChanges& changes);
     void applyContacts(const station::StationUpdates& updates, const QDateTime& now, RailwayChanges& changes);
     void applyDevices(const station::StationUpdates& updates, const QDateTime& now, RailwayChanges& changes);
     Locomotive& locomotive(cs2::LocId id);
@@ -72,6 +77,7 @@ private:
     Registry<std::uint32_t, Locomotive> locomotives_;
     Registry<std::int64_t, Accessory> accessories_;
     std::unordered_map<std::uint32_t, AddressOwner> addressOwners_;
+    std::unordered_map<std::int64_t, int> addressPositions_;
     Registry<ContactKey, FeedbackContact> contacts_;
     Registry<std::int64_t, Route> routes_;
     cs2config::RouteFile routeFile_;
