@@ -16,6 +16,7 @@
 #include "StopGoButton.h"
 #include "TrafficStatus.h"
 #include "Translations.h"
+#include "TurnoutPanel.h"
 #include "Workspace.h"
 #include "connection/StationConnection.h"
 
@@ -62,6 +63,8 @@ void MainWindow::createPanels() {
     m_workspace = new Workspace(*this);
     m_layoutOverview = new LayoutOverview(this);
     setCentralWidget(m_layoutOverview);
+    m_turnoutPanel = new TurnoutPanel(this);
+    m_workspace->addPanel(m_turnoutPanel, Qt::LeftDockWidgetArea);
     m_statusPanel = new StatusPanel(this);
     m_workspace->addPanel(m_statusPanel, Qt::RightDockWidgetArea);
     m_busMonitor = new BusMonitorPanel(this);
@@ -124,6 +127,7 @@ void MainWindow::setConnection(connection::StationConnection* station) {
 void MainWindow::setRailway(model::Railway* railway) {
     m_layoutOverview->setRailway(railway);
     m_statusPanel->setRailway(railway);
+    m_turnoutPanel->setRailway(railway);
     m_stopGo->setRailway(railway);
     m_power->setRailway(railway);
 }
@@ -217,6 +221,7 @@ void MainWindow::retranslateDocks() {
         if (QDockWidget* dock = m_workspace->dockOf(panel))
             dock->setWindowTitle(text);
     };
+    title(m_turnoutPanel, tr("Keyboard"));
     title(m_statusPanel, tr("Status"));
     title(m_busMonitor, tr("Bus monitor"));
     title(m_frameDecoder, tr("Frame decoder"));

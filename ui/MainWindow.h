@@ -27,6 +27,7 @@ class StatusPanel;
 class StopGoButton;
 class TrafficStatus;
 class Translations;
+class TurnoutPanel;
 class Workspace;
 
 // The station's main window: menus, the toolbar with the big STOP / GO, the panels of a running session
@@ -44,6 +45,7 @@ public:
     LayoutOverview* layoutOverview() const { return m_layoutOverview; }
     StatusPanel* statusPanel() const { return m_statusPanel; }
     BusMonitorPanel* busMonitor() const { return m_busMonitor; }
+    TurnoutPanel* turnoutPanel() const { return m_turnoutPanel; }
     StopGoButton* stopGoButton() const { return m_stopGo; }
 
     // The railway the panels show and STOP / GO acts on (null: none); see RailwayBinding.
@@ -80,6 +82,7 @@ private:
     FrameDecoderPanel* m_frameDecoder = nullptr;
     StatusPanel* m_statusPanel = nullptr;
     BusMonitorPanel* m_busMonitor = nullptr;
+    TurnoutPanel* m_turnoutPanel = nullptr;
     QToolBar* m_toolBar = nullptr;
     StopGoButton* m_stopGo = nullptr;
     EmergencyStopKeys* m_stopKeys = nullptr;

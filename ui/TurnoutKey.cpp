@@ -266,9 +266,9 @@ void TurnoutKey::mouseReleaseEvent(QMouseEvent* event) {
     QWidget::mouseReleaseEvent(event);
 }
 
+// Enter switches a focused key; Space is not used: in the main window it stops the whole layout.
 void TurnoutKey::keyPressEvent(QKeyEvent* event) {
-    if (toggles() &&
-        (event->key() == Qt::Key_Space || event->key() == Qt::Key_Return || event->key() == Qt::Key_Enter)) {
+    if (toggles() && (event->key() == Qt::Key_Return || event->key() == Qt::Key_Enter)) {
         emit switchRequested(m_face.address, nextPosition());
         return;
     }

@@ -101,9 +101,9 @@ TEST_F(TurnoutPanelTest, ClickingATurnoutSwitchesItOnTheStation) {
         << "another controller sees the new position";
 }
 
-TEST_F(TurnoutPanelTest, SpaceSwitchesTheFocusedKey) {
+TEST_F(TurnoutPanelTest, EnterSwitchesTheFocusedKey) {
     key(3).setFocus();
-    QTest::keyClick(&key(3), Qt::Key_Space);
+    QTest::keyClick(&key(3), Qt::Key_Return);
     EXPECT_TRUE(QTest::qWaitFor([&] { return stationPosition(3) == 0 && key(3).face().position == 0; },
                                 test::CommandMs));
 }
