@@ -6,12 +6,14 @@
 #include <QFile>
 #include <QString>
 #include <functional>
+#include <optional>
 #include <span>
 
 namespace stellwerk::ui {
 
-// Keeps what the bus monitor saw in a candump log file ("(1700000000.123000) can0 00084711#0000C0030120",
-// as SocketCAN's candump -l writes and canplayer reads), so a session can be shared and looked at again.
+// Keeps what the bus monitor saw in a candump log file ("(1700000000.123000) can0 00084711#0000C0030120 T",
+// as SocketCAN's candump -l writes and canplayer reads, with candump -x's R/T mark for received and sent
+// frames), so a session can be shared and looked at again.
 class BusMonitorLogWriter final {
     Q_DISABLE_COPY_MOVE(BusMonitorLogWriter)
 
@@ -23,11 +25,44 @@ public:
     void close();
     bool isOpen() const { return m_file.isOpen(); }
     QString fileName() const { return m_file.fileName(); }
-    // Appends one line per frame, all with the time `time`; returns false when the disk refused them.
-    bool write(std::span<const cs2::CanFrame> frames, const QDateTime& time);
+    // Appends one line per frame, all with the time `time` and the direction mark; returns false when
+    // the disk refused them.
+    bool write(std::span<const cs2::CanFrame> frames, const QDateTime& time, bool outgoing);
 
 private:
     QFile m_file;
+};
+
+// One line of a log that was not blank and not a # comment.
+struct BusMonitorLogLine {
+    int number = 0;                     // 1-based
+    std::optional<cs2::CanFrame> frame; // empty when the line held no frame
+    std::optional<qint64> timeUs;       // the "(seconds.micros)" stamp as microseconds, if the line had one
+    bool sent = false;                  // the line ends with candump -x's "T" mark (transmitted)
+    QString problem;                    // why the line held no frame
+};
+
+// Reads a candump log one line at a time, so that a large file never has to be read at once. Lines in
+// the other notations cs2::parseFrame reads work too (without a time stamp).
+class BusMonitorLogReader final {
+    Q_DISABLE_COPY_MOVE(BusMonitorLogReader)
+
+public:
+    BusMonitorLogReader() = default;
+
+    // Returns an error text, empty on success.
+    QString open(const QString& path);
+    QString fileName() const { return m_file.fileName(); }
+    // The next line with content; nullopt at the end of the file.
+    std::optional<BusMonitorLogLine> next();
+    // How far reading has come, in bytes of the file.
+    qint64 position() const { return m_file.pos(); }
+    qint64 size() const { return m_file.size(); }
+
+private:
+    QFile m_file;
+    QString m_line;
+    int m_number = 0;
 };
 
 // What reading a candump log found.
@@ -38,8 +73,8 @@ struct BusMonitorLogSummary {
     QString error;            // the file could not be read at all
 };
 
-// Reads a candump log line by line and hands each frame with its time to `frame` (frames without a
-// time get the time of the previous one). Lines in the other notations cs2::parseFrame reads work too.
+// Reads a whole candump log and hands each frame with its time to `frame` (frames without a time get
+// the time of the previous one).
 BusMonitorLogSummary readCandumpLog(const QString& path,
                                     const std::function<void(const cs2::CanFrame&, const QDateTime&)>& frame);
 

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -29,7 +30,9 @@ public:
     enum Role {
         // name, details and frame text in one string, for the filter (decodes the frame once)
         SearchTextRole = Qt::UserRole + 1,
-        GroupRole, // the row's Group as int
+        GroupRole,   // the row's Group as int
+        CommandRole, // the command's vocabulary name ("loco.speed"), also for frames that did not decode
+        LocIdRole,   // the Loc-ID the frame addresses as uint, or invalid when it names none
     };
 
     static constexpr int DefaultHistory = 100000;
@@ -61,6 +64,8 @@ public:
     cs2::CanFrame frameAt(int row) const;
     QDateTime timeAt(int row) const;
     Direction directionAt(int row) const;
+    // The Loc-ID field of the frame in `row`, read by the core's decoder; nullopt when it has none.
+    std::optional<std::uint32_t> locIdAt(int row) const;
 
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
