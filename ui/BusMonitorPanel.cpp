@@ -88,10 +88,12 @@ QLayout* BusMonitorPanel::createFilterBar() {
     for (const std::string_view name : cs2::messageNames())
         m_commandBox->addItem(QString::fromLatin1(name.data(), qsizetype(name.size())));
     m_commandBox->setMaxVisibleItems(20);
+    m_commandBox->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_commandBox->setMinimumContentsLength(16);
     m_locIdEdit = new QLineEdit(this);
     m_locIdEdit->setObjectName(QStringLiteral("busMonitorLocId"));
     m_locIdEdit->setClearButtonEnabled(true);
-    m_locIdEdit->setMaximumWidth(fontMetrics().horizontalAdvance(QLatin1Char('0')) * 16);
+    m_locIdEdit->setMaximumWidth(fontMetrics().horizontalAdvance(QStringLiteral("0xC003 or dcc 3")));
     m_filterTimer = new QTimer(this);
     m_filterTimer->setSingleShot(true);
     m_filterTimer->setInterval(FilterDelayMs);
@@ -197,7 +199,9 @@ void BusMonitorPanel::createTable() {
     header->resizeSection(BusMonitorModel::DirectionColumn, digit * 12);
     header->resizeSection(BusMonitorModel::MessageColumn, digit * 26);
     header->setSectionResizeMode(BusMonitorModel::DetailsColumn, QHeaderView::Stretch);
-    header->resizeSection(BusMonitorModel::FrameColumn, digit * 32);
+    const QString longestFrame = QStringLiteral("00000000 8 00 00 00 00 00 00 00 00");
+    header->resizeSection(BusMonitorModel::FrameColumn,
+                          m_table->fontMetrics().horizontalAdvance(longestFrame) + digit * 2);
     QScrollBar* scroll = m_table->verticalScrollBar();
     connect(scroll, &QScrollBar::valueChanged, this,
             [this, scroll](int value) { m_followNewest = value >= scroll->maximum(); });
@@ -387,7 +391,7 @@ void BusMonitorPanel::changeEvent(QEvent* event) {
 }
 
 void BusMonitorPanel::retranslate() {
-    m_filterEdit->setPlaceholderText(tr("Filter by text, e.g. speed=0 or 00 C0 03"));
+    m_filterEdit->setPlaceholderText(tr("Find text, e.g. speed=0"));
     m_commandBox->setItemText(0, tr("All commands"));
     m_commandBox->setToolTip(tr("Show only frames of one command"));
     m_locIdEdit->setPlaceholderText(tr("Loc-ID"));

@@ -20,6 +20,8 @@ QString BusMonitorReplay::start(const QString& path) {
     if (!error.isEmpty())
         return error;
     m_pending.reset();
+    m_pendingEnd = 0;
+    m_playedEnd = 0;
     m_haveLogTime = false;
     m_lastLogUs = 0;
     m_anchorLogUs = 0;
@@ -106,6 +108,7 @@ bool BusMonitorReplay::readPending() {
             m_clock.start();
         }
         m_pending = std::move(line);
+        m_pendingEnd = m_reader.position();
     }
     return true;
 }
@@ -124,28 +127,34 @@ void BusMonitorReplay::playDue() {
         std::vector<cs2::CanFrame> batch{*m_pending->frame};
         const bool outgoing = m_pending->sent;
         m_lastLogUs = due;
+        m_playedEnd = m_pendingEnd;
         m_pending.reset();
         while (budget-- > 0 && readPending() && m_pending->timeUs.value_or(m_lastLogUs) == due &&
                m_pending->sent == outgoing) {
             batch.push_back(*m_pending->frame);
+            m_playedEnd = m_pendingEnd;
             m_pending.reset();
         }
         m_played += qsizetype(batch.size());
         emit framesReplayed(batch, time, outgoing);
     }
-    const int now = m_reader.size() > 0 ? int(m_reader.position() * 100 / m_reader.size()) : 100;
-    if (now != m_percent) {
-        m_percent = now;
-        emit progressChanged(now);
-    }
-    if (m_state != State::Playing)
-        return;
-    if (!m_pending && !readPending()) {
-        m_percent = 100;
-        emit progressChanged(100);
+    if (m_state == State::Playing && !m_pending && !readPending()) {
+        m_playedEnd = m_reader.size();
+        reportProgress();
         return setState(State::Finished);
     }
-    scheduleNext();
+    reportProgress();
+    if (m_state == State::Playing)
+        scheduleNext();
+}
+
+// The share of the file up to the end of the last line played.
+void BusMonitorReplay::reportProgress() {
+    const int now = m_reader.size() > 0 ? int(m_playedEnd * 100 / m_reader.size()) : 100;
+    if (now == m_percent)
+        return;
+    m_percent = now;
+    emit progressChanged(now);
 }
 
 void BusMonitorReplay::scheduleNext() {

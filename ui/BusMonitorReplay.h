@@ -66,12 +66,15 @@ private:
     qint64 logNowUs() const;
     void rebase();
     void scheduleNext();
+    void reportProgress();
 
     BusMonitorLogReader m_reader;
     QTimer* m_timer = nullptr;
     State m_state = State::Idle;
     double m_speed = 1.0;
     std::optional<BusMonitorLogLine> m_pending; // the next frame, read but not yet due
+    qint64 m_pendingEnd = 0;                    // where in the file the pending frame's line ends
+    qint64 m_playedEnd = 0;                     // where the last played line ends
     qint64 m_lastLogUs = 0;                     // the time of the last stamped line
     bool m_haveLogTime = false;
     qint64 m_anchorLogUs = 0; // log time when m_clock was last started
