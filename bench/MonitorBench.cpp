@@ -4,7 +4,8 @@
 //   2. another 1,000,000 with the history full (the oldest dropped per flush): frames per second and
 //      whether memory still grows,
 //   3. rows formatted per second for display (the text is written lazily, only for rows shown),
-//   4. the same flood with BusMonitorFilter attached (command loco.speed), as when the user filters,
+//   4. the same flood with BusMonitorFilter attached (command loco.speed), as when the user filters, then
+//      the whole history filtered again by Loc-ID and by text (in slices between events),
 //   5. the whole panel shown (offscreen) with its table following the newest row: frames per second and
 //      the longest flush, events processed after each flush as the window would.
 // A plain harness printing figures. Run: build/bench/stellwerk-monitor-bench [frame count]
@@ -129,6 +130,24 @@ void benchFiltered(const std::vector<cs2::CanFrame>& frames) {
     const double fill = feed(*model, frames);
     report("4. insert through the command filter", fill, start, residentKb());
     std::printf("   %d of %d rows pass the filter\n", filter.rowCount(), model->rowCount());
+    const auto scan = [&](const char* what) {
+        QElapsedTimer clock;
+        QElapsedTimer turn;
+        clock.start();
+        qint64 longestTurnNs = 0;
+        while (filter.isScanning()) {
+            turn.start();
+            QCoreApplication::processEvents();
+            longestTurnNs = std::max(longestTurnNs, turn.nsecsElapsed());
+        }
+        std::printf("   %-24s over %d rows: %6.0f ms in all, longest turn %5.1f ms; %d rows pass\n", what,
+                    model->rowCount(), double(clock.nsecsElapsed()) / 1e6, double(longestTurnNs) / 1e6,
+                    filter.rowCount());
+    };
+    filter.setLocId(0x4003);
+    scan("Loc-ID added");
+    filter.setFilters(QString(), std::nullopt, QStringLiteral("contact=5"));
+    scan("text alone");
 }
 
 void benchPanel(const std::vector<cs2::CanFrame>& frames) {

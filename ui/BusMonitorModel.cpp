@@ -8,6 +8,7 @@
 #include <QPalette>
 #include <QTimer>
 #include <algorithm>
+#include <cctype>
 #include <string_view>
 
 namespace stellwerk::ui {
@@ -127,6 +128,7 @@ void BusMonitorModel::dropOldest(std::size_t count) {
         return;
     beginRemoveRows({}, 0, int(count) - 1);
     m_rows.erase(m_rows.begin(), m_rows.begin() + std::ptrdiff_t(count));
+    m_dropped += count;
     endRemoveRows();
 }
 
@@ -154,6 +156,7 @@ void BusMonitorModel::clear() {
     m_rows.clear();
     m_rows.shrink_to_fit();
     m_queued.clear();
+    m_dropped = 0;
     endResetModel();
     m_total = 0;
     m_heldBack = 0;
@@ -171,6 +174,22 @@ QDateTime BusMonitorModel::timeAt(int row) const {
 
 BusMonitorModel::Direction BusMonitorModel::directionAt(int row) const {
     return m_rows.at(std::size_t(row)).direction;
+}
+
+std::string_view BusMonitorModel::commandAt(int row) const {
+    const Record& r = m_rows.at(std::size_t(row));
+    return cs2::intendedName(frameOf(r.id, r.dlc, r.data));
+}
+
+bool BusMonitorModel::containsText(int row, std::string_view lowerNeedle) const {
+    const Record& r = m_rows.at(std::size_t(row));
+    const cs2::FrameReport report(frameOf(r.id, r.dlc, r.data));
+    const auto contains = [lowerNeedle](std::string_view text) {
+        const auto equal = [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; };
+        return std::search(text.begin(), text.end(), lowerNeedle.begin(), lowerNeedle.end(), equal) !=
+               text.end();
+    };
+    return contains(report.name()) || contains(report.detailText()) || contains(report.frameText());
 }
 
 std::optional<std::uint32_t> BusMonitorModel::locIdAt(int row) const {

@@ -9,6 +9,7 @@
 #include <deque>
 #include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 class QTimer;
@@ -66,6 +67,14 @@ public:
     Direction directionAt(int row) const;
     // The Loc-ID field of the frame in `row`, read by the core's decoder; nullopt when it has none.
     std::optional<std::uint32_t> locIdAt(int row) const;
+    // The command's vocabulary name ("loco.speed"), also for a frame that did not decode.
+    std::string_view commandAt(int row) const;
+    // Whether the message name, details or frame text of `row` contain `lowerNeedle` (ASCII, lower case),
+    // ignoring case; cheaper than SearchTextRole for scanning many rows.
+    bool containsText(int row, std::string_view lowerNeedle) const;
+    // How many rows went from the front since the last clear(). Row r has the number firstSequence() + r,
+    // which it keeps while older rows go.
+    std::uint64_t firstSequence() const { return m_dropped; }
 
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
@@ -97,6 +106,7 @@ private:
     bool m_paused = false;
     std::uint64_t m_heldBack = 0;
     std::uint64_t m_total = 0;
+    std::uint64_t m_dropped = 0;
 };
 
 } // namespace stellwerk::ui

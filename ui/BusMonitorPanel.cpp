@@ -73,6 +73,7 @@ BusMonitorPanel::BusMonitorPanel(QWidget* parent)
     layout->addWidget(m_table, 1);
     layout->addWidget(m_counter);
     connect(m_model, &BusMonitorModel::countsChanged, this, &BusMonitorPanel::updateCounter);
+    connect(m_filter, &BusMonitorFilter::scanProgress, this, &BusMonitorPanel::updateCounter);
     retranslate();
 }
 
@@ -341,9 +342,8 @@ void BusMonitorPanel::applyFilter() {
     const auto locId = BusMonitorFilter::parseLocId(locIdText);
     m_locIdValid = locIdText.isEmpty() || locId.has_value();
     showLocIdValidity();
-    m_filter->setCommand(m_commandBox->currentIndex() > 0 ? m_commandBox->currentText() : QString());
-    m_filter->setLocId(locId);
-    m_filter->setText(m_filterEdit->text().trimmed());
+    m_filter->setFilters(m_commandBox->currentIndex() > 0 ? m_commandBox->currentText() : QString(), locId,
+                         m_filterEdit->text().trimmed());
     updateCounter();
 }
 
@@ -365,6 +365,8 @@ void BusMonitorPanel::followNewest() {
 
 void BusMonitorPanel::updateCounter() {
     QString text = tr("%Ln frame(s) seen", nullptr, plural(m_model->totalFrames()));
+    if (m_filter->isScanning())
+        text += QStringLiteral(" · ") + tr("filtering, %1 % done").arg(m_filter->scanPercent());
     if (m_filter->isFiltering())
         text += QStringLiteral(" · ") + tr("%Ln row(s) match the filter", nullptr, m_filter->rowCount());
     if (!m_locIdValid)

@@ -1,4 +1,5 @@
-// The bus monitor's filters by command, Loc-ID and text, alone and together, and the history bound.
+// The bus monitor's filters by command, Loc-ID and text, alone and together, over many rows in slices,
+// and the history bound.
 
 #include "BusMonitorFilter.h"
 
@@ -9,8 +10,10 @@
 #include "cs2/FrameText.h"
 
 #include <QLabel>
+#include <QSignalSpy>
 #include <QSpinBox>
 #include <QTableView>
+#include <QTest>
 #include <gtest/gtest.h>
 #include <vector>
 
@@ -149,4 +152,88 @@ TEST(BusMonitorHistory, AMillionFramesCanBeKept) {
     }
     EXPECT_EQ(model.rowCount(), 1000000);
     EXPECT_EQ(model.totalFrames(), 1000100u);
+}
+
+namespace {
+
+// Frame n of a numbered run: loco.speed for DCC 3 when n is even (speed n % 1000), system.stop when odd.
+cs2::CanFrame numbered(int n) {
+    if (n % 2 == 1)
+        return frame("00004711 5 00 00 00 00 00");
+    cs2::CanFrame speed = frame("00084711 6 00 00 C0 03 00 00");
+    speed.data[4] = std::uint8_t((n % 1000) >> 8);
+    speed.data[5] = std::uint8_t(n % 1000);
+    return speed;
+}
+
+std::vector<cs2::CanFrame> numberedRun(int first, int count) {
+    std::vector<cs2::CanFrame> frames;
+    for (int n = first; n < first + count; ++n)
+        frames.push_back(numbered(n));
+    return frames;
+}
+
+// Every shown row is the source row it maps to, and they come in the source's order.
+void expectConsistent(const BusMonitorFilter& filter, const BusMonitorModel& model) {
+    int previous = -1;
+    for (int row = 0; row < filter.rowCount(); ++row) {
+        const QModelIndex source = filter.mapToSource(filter.index(row, 0));
+        ASSERT_TRUE(source.isValid()) << row;
+        EXPECT_GT(source.row(), previous);
+        previous = source.row();
+        EXPECT_EQ(filter.mapFromSource(source).row(), row);
+        EXPECT_EQ(filter.index(row, BusMonitorModel::MessageColumn).data().toString(),
+                  model.index(source.row(), BusMonitorModel::MessageColumn).data().toString());
+    }
+}
+
+} // namespace
+
+// A text filter over many rows is tested in slices between events; rows that come and go meanwhile are
+// accounted for, and the result is the same as testing them all at once.
+TEST(BusMonitorFilterScan, ManyRowsAreFilteredInSlicesWhileFramesComeAndGo) {
+    BusMonitorModel model;
+    model.setHistoryLimit(100000);
+    BusMonitorFilter filter;
+    filter.setSourceModel(&model);
+    model.addFrames(numberedRun(0, 60000), Direction::Received);
+    model.flush();
+    QSignalSpy progress(&filter, &BusMonitorFilter::scanProgress);
+    filter.setText(QStringLiteral("SPEED="));                        // every even frame
+    model.addFrames(numberedRun(60000, 50000), Direction::Received); // 10,000 of the oldest go
+    model.flush();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !filter.isScanning(); }, 60000));
+    EXPECT_EQ(model.rowCount(), 100000);
+    EXPECT_EQ(filter.rowCount(), 50000);
+    EXPECT_EQ(filter.scanPercent(), 100);
+    ASSERT_FALSE(progress.isEmpty());
+    EXPECT_EQ(progress.last().at(0).toInt(), 100);
+    expectConsistent(filter, model);
+    EXPECT_EQ(model.frameAt(filter.mapToSource(filter.index(0, 0)).row()), numbered(10000));
+}
+
+TEST(BusMonitorFilterScan, DroppingTheOldestRowsDropsTheirFilteredRows) {
+    BusMonitorModel model;
+    model.setHistoryLimit(1000);
+    BusMonitorFilter filter;
+    filter.setSourceModel(&model);
+    filter.setCommand(QStringLiteral("loco.speed"));
+    QSignalSpy removed(&filter, &QAbstractItemModel::rowsRemoved);
+    for (int first = 0; first < 1500; first += 300) {
+        model.addFrames(numberedRun(first, 300), Direction::Received);
+        model.flush();
+    }
+    ASSERT_FALSE(filter.isScanning());
+    EXPECT_EQ(model.rowCount(), 1000);
+    EXPECT_EQ(filter.rowCount(), 500);
+    EXPECT_GE(removed.count(), 1);
+    expectConsistent(filter, model);
+    EXPECT_EQ(model.frameAt(filter.mapToSource(filter.index(0, 0)).row()), numbered(500));
+    EXPECT_EQ(model.frameAt(filter.mapToSource(filter.index(499, 0)).row()), numbered(1498));
+
+    model.clear();
+    EXPECT_EQ(filter.rowCount(), 0);
+    model.addFrames(numberedRun(0, 4), Direction::Received);
+    model.flush();
+    EXPECT_EQ(filter.rowCount(), 2);
 }
