@@ -35,6 +35,7 @@ namespace stellwerk::ui {
 namespace {
 
 constexpr int FilterDelayMs = 200;
+constexpr qsizetype MaxSkippedShown = 20; // lines without a frame listed in the replay's tooltip
 constexpr double Speeds[] = {1.0, 2.0, 10.0, BusMonitorReplay::AsFastAsPossible};
 
 // tr()'s %n takes an int; counters beyond that are shown as the largest int.
@@ -165,6 +166,7 @@ QWidget* BusMonitorPanel::createReplayBar() {
     m_replayProgress->setObjectName(QStringLiteral("busMonitorReplayProgress"));
     m_replayProgress->setRange(0, 100);
     connect(m_replay, &BusMonitorReplay::progressChanged, m_replayProgress, &QProgressBar::setValue);
+    connect(m_replay, &BusMonitorReplay::progressChanged, this, &BusMonitorPanel::updateReplayStatus);
     m_liveButton = button(m_replayBar, "busMonitorBackToLive");
     connect(m_liveButton, &QPushButton::clicked, this, &BusMonitorPanel::backToLive);
     m_replayStatus = new QLabel(m_replayBar);
@@ -238,11 +240,8 @@ void BusMonitorPanel::replayed(const std::vector<cs2::CanFrame>& frames, const Q
 }
 
 void BusMonitorPanel::lineSkipped(int line, const QString& reason) {
-    if (m_firstSkippedLine == 0) {
-        m_firstSkippedLine = line;
-        m_firstSkippedReason = reason;
-    }
-    updateReplayStatus();
+    if (m_skippedLines.size() < MaxSkippedShown)
+        m_skippedLines << tr("line %1: %2").arg(line).arg(reason);
 }
 
 QString BusMonitorPanel::startRecording(const QString& path) {
@@ -281,8 +280,7 @@ void BusMonitorPanel::chooseRecording(bool start) {
 QString BusMonitorPanel::openLog(const QString& path) {
     m_replay->stop();
     m_model->clear();
-    m_firstSkippedLine = 0;
-    m_firstSkippedReason.clear();
+    m_skippedLines.clear();
     m_replayPauseButton->setChecked(false);
     m_replay->setSpeed(m_speedBox->currentData().toDouble());
     const QString error = m_replay->start(path);
@@ -380,10 +378,10 @@ void BusMonitorPanel::updateCounter() {
 void BusMonitorPanel::updateReplayStatus() {
     if (m_replay->linesSkipped() == 0)
         return m_replayStatus->clear();
-    m_replayStatus->setText(tr("%Ln line(s) skipped; line %1: %2", nullptr, int(m_replay->linesSkipped()))
-                                .arg(m_firstSkippedLine)
-                                .arg(m_firstSkippedReason));
-    m_replayStatus->setToolTip(m_replayStatus->text());
+    const QString first = m_replayStatus->fontMetrics().elidedText(
+        m_skippedLines.value(0), Qt::ElideRight, m_replayStatus->fontMetrics().averageCharWidth() * 50);
+    m_replayStatus->setText(tr("%Ln line(s) skipped; %1", nullptr, int(m_replay->linesSkipped())).arg(first));
+    m_replayStatus->setToolTip(m_skippedLines.join(QLatin1Char('\n')));
 }
 
 void BusMonitorPanel::changeEvent(QEvent* event) {

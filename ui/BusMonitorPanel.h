@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QPointer>
+#include <QStringList>
 #include <QWidget>
 #include <memory>
 #include <vector>
@@ -113,8 +114,7 @@ private:
     QLabel* m_replayStatus = nullptr;
     QPointer<connection::StationConnection> m_connection;
     std::unique_ptr<BusMonitorLogWriter> m_recorder;
-    int m_firstSkippedLine = 0;
-    QString m_firstSkippedReason;
+    QStringList m_skippedLines; // "line 3: why", the first MaxSkippedShown of them
     bool m_locIdValid = true;
     bool m_followNewest = true;
 };

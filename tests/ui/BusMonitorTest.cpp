@@ -225,6 +225,8 @@ TEST(BusMonitorPanel, OpeningALogReportsLinesWithoutAFrame) {
     EXPECT_TRUE(status->text().startsWith(QStringLiteral("1 line"))) << status->text().toStdString();
     EXPECT_TRUE(status->text().contains(QStringLiteral(" skipped; line 3: 'not' is not")))
         << status->text().toStdString();
+    EXPECT_TRUE(status->toolTip().startsWith(QStringLiteral("line 3: 'not' is not")))
+        << status->toolTip().toStdString();
     EXPECT_FALSE(replay.findChild<QWidget*>(QStringLiteral("busMonitorReplayBar"))->isHidden());
 
     replay.backToLive();
