@@ -12,8 +12,9 @@
 namespace stellwerk::ui {
 
 // Keeps what the bus monitor saw in a candump log file ("(1700000000.123000) can0 00084711#0000C0030120 T",
-// as SocketCAN's candump -l writes and canplayer reads, with candump -x's R/T mark for received and sent
-// frames), so a session can be shared and looked at again.
+// as SocketCAN's candump -l writes and canplayer reads; the R or T after the data marks a received or a
+// transmitted frame, and readers that expect three fields skip it), so a session can be shared and
+// looked at again.
 class BusMonitorLogWriter final {
     Q_DISABLE_COPY_MOVE(BusMonitorLogWriter)
 
@@ -38,7 +39,7 @@ struct BusMonitorLogLine {
     int number = 0;                     // 1-based
     std::optional<cs2::CanFrame> frame; // empty when the line held no frame
     std::optional<qint64> timeUs;       // the "(seconds.micros)" stamp as microseconds, if the line had one
-    bool sent = false;                  // the line ends with candump -x's "T" mark (transmitted)
+    bool sent = false;                  // the line ends with the "T" mark (transmitted)
     QString problem;                    // why the line held no frame
 };
 
