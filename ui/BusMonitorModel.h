@@ -29,7 +29,8 @@ public:
     // What kind of command a row carries; each has its own colour.
     enum class Group : std::uint8_t { System, Loco, Accessory, Feedback, Stream, Other };
     enum Role {
-        // name, details and frame text in one string, for the filter (decodes the frame once)
+        // name, details and frame text in one string (decodes the frame once); BusMonitorFilter uses the
+        // cheaper containsText()
         SearchTextRole = Qt::UserRole + 1,
         GroupRole,   // the row's Group as int
         CommandRole, // the command's vocabulary name ("loco.speed"), also for frames that did not decode

@@ -122,8 +122,8 @@ void BusMonitorReplay::playDue() {
             break;
         if (m_speed == AsFastAsPossible)
             m_anchorLogUs = std::max(m_anchorLogUs, due);
-        const QDateTime time = m_pending->timeUs ? QDateTime::fromMSecsSinceEpoch((due + 500) / 1000)
-                                                 : QDateTime::currentDateTime();
+        const QDateTime time =
+            m_haveLogTime ? QDateTime::fromMSecsSinceEpoch((due + 500) / 1000) : QDateTime::currentDateTime();
         std::vector<cs2::CanFrame> batch{*m_pending->frame};
         const bool outgoing = m_pending->sent;
         m_lastLogUs = due;

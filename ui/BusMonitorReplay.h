@@ -50,8 +50,8 @@ public:
     qsizetype linesSkipped() const { return m_skipped; }
 
 signals:
-    // Frames of the log that are due now, all stamped `time` in the log (or now, for lines without one),
-    // and all marked sent (`outgoing`) or not.
+    // Frames of the log that are due now, all stamped `time` in the log (a line without a stamp has the
+    // time of the stamped line before it, or now when there is none), and all sent (`outgoing`) or not.
     void framesReplayed(const std::vector<stellwerk::cs2::CanFrame>& frames, const QDateTime& time,
                         bool outgoing);
     // A line that held no frame was skipped; `reason` says why.

@@ -8,6 +8,7 @@
 #include "connection/StationConnection.h"
 #include "cs2/FrameText.h"
 
+#include <QDateTime>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QSignalSpy>
@@ -169,6 +170,31 @@ TEST_F(BusMonitorReplayTest, PauseHoldsTheRestBackUntilResumeAndStopEndsIt) {
     EXPECT_EQ(arrivals.texts.size(), stopped);
     EXPECT_EQ(replay.state(), State::Idle);
     EXPECT_GE(states.count(), 5); // playing, paused, playing, finished, playing, idle
+}
+
+// candump writes six digits after the point; fewer are read as a decimal fraction, none as whole seconds.
+TEST_F(BusMonitorReplayTest, TimeStampsWithFewerDigitsAreReadAsFractions) {
+    BusMonitorReplay replay;
+    Arrivals arrivals(replay);
+    replay.setSpeed(BusMonitorReplay::AsFastAsPossible);
+    ASSERT_EQ(replay.start(write("(1700000000.5) can0 00004711#0000000000\n"
+                                 "(1700000001) vcan0 00004711#0000000001\n"
+                                 "00004711 5 00 00 00 00 00\n")),
+              QString());
+    ASSERT_TRUE(waitUntilFinished(replay));
+    ASSERT_EQ(arrivals.times.size(), 3u);
+    EXPECT_EQ(arrivals.times[0], 1700000000500);
+    EXPECT_EQ(arrivals.times[1], 1700000001000);
+    EXPECT_EQ(arrivals.times[2], 1700000001000) << "a line without a stamp has the time of the one before";
+    EXPECT_TRUE(arrivals.skippedLines.empty());
+
+    BusMonitorReplay unstamped;
+    Arrivals now(unstamped);
+    const qint64 started = QDateTime::currentMSecsSinceEpoch();
+    ASSERT_EQ(unstamped.start(write("00004711 5 00 00 00 00 00\n")), QString());
+    ASSERT_TRUE(waitUntilFinished(unstamped));
+    ASSERT_EQ(now.times.size(), 1u);
+    EXPECT_GE(now.times[0], started) << "without any stamp, frames show when they were played";
 }
 
 TEST_F(BusMonitorReplayTest, AMissingFileIsAnErrorAndNothingPlays) {
