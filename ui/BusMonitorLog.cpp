@@ -88,28 +88,4 @@ std::optional<BusMonitorLogLine> BusMonitorLogReader::next() {
     return std::nullopt;
 }
 
-BusMonitorLogSummary
-readCandumpLog(const QString& path,
-               const std::function<void(const cs2::CanFrame&, const QDateTime&)>& frame) {
-    BusMonitorLogSummary summary;
-    BusMonitorLogReader reader;
-    summary.error = reader.open(path);
-    if (!summary.error.isEmpty())
-        return summary;
-    QDateTime time = QDateTime::currentDateTime();
-    while (const auto line = reader.next()) {
-        if (!line->frame) {
-            ++summary.skipped;
-            if (summary.firstSkippedLine == 0)
-                summary.firstSkippedLine = line->number;
-            continue;
-        }
-        if (line->timeUs)
-            time = QDateTime::fromMSecsSinceEpoch((*line->timeUs + 500) / 1000);
-        frame(*line->frame, time);
-        ++summary.frames;
-    }
-    return summary;
-}
-
 } // namespace stellwerk::ui

@@ -5,7 +5,6 @@
 #include <QDateTime>
 #include <QFile>
 #include <QString>
-#include <functional>
 #include <optional>
 #include <span>
 
@@ -62,21 +61,7 @@ public:
 
 private:
     QFile m_file;
-    QString m_line;
     int m_number = 0;
 };
-
-// What reading a candump log found.
-struct BusMonitorLogSummary {
-    qsizetype frames = 0;
-    qsizetype skipped = 0;    // lines that held no frame (other than blank lines and # comments)
-    int firstSkippedLine = 0; // 1-based, 0 when none was skipped
-    QString error;            // the file could not be read at all
-};
-
-// Reads a whole candump log and hands each frame with its time to `frame` (frames without a time get
-// the time of the previous one).
-BusMonitorLogSummary readCandumpLog(const QString& path,
-                                    const std::function<void(const cs2::CanFrame&, const QDateTime&)>& frame);
 
 } // namespace stellwerk::ui
