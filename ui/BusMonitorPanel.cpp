@@ -277,15 +277,17 @@ void BusMonitorPanel::chooseRecording(bool start) {
                              tr("%1 cannot be written: %2").arg(path, error));
 }
 
+// A log that cannot be read changes nothing: the table keeps what it shows.
 QString BusMonitorPanel::openLog(const QString& path) {
-    m_replay->stop();
-    m_model->clear();
-    m_skippedLines.clear();
-    m_replayPauseButton->setChecked(false);
     m_replay->setSpeed(m_speedBox->currentData().toDouble());
     const QString error = m_replay->start(path);
+    if (!error.isEmpty())
+        return error;
+    m_model->clear(); // the first frames come on the next turn of the event loop
+    m_skippedLines.clear();
+    m_replayPauseButton->setChecked(false);
     replayStateChanged();
-    return error;
+    return {};
 }
 
 void BusMonitorPanel::setReplaySpeed(double factor) {

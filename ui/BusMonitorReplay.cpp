@@ -1,5 +1,6 @@
 #include "BusMonitorReplay.h"
 
+#include <QFile>
 #include <QTimer>
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,10 @@ BusMonitorReplay::BusMonitorReplay(QObject* parent) : QObject(parent), m_timer(n
 BusMonitorReplay::~BusMonitorReplay() = default;
 
 QString BusMonitorReplay::start(const QString& path) {
+    QFile probe(path); // a file that cannot be read leaves a running replay alone
+    if (!probe.open(QIODevice::ReadOnly))
+        return probe.errorString();
+    probe.close();
     stop();
     const QString error = m_reader.open(path);
     if (!error.isEmpty())

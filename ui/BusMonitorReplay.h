@@ -32,7 +32,8 @@ public:
     explicit BusMonitorReplay(QObject* parent = nullptr);
     ~BusMonitorReplay() override;
 
-    // Starts playing the log at `path` from its first frame; returns an error text, empty on success.
+    // Starts playing the log at `path` from its first frame (ending the one that played); returns an
+    // error text, empty on success, and then changes nothing.
     QString start(const QString& path);
     // 1 = original timing, 2 = twice as fast, ...; AsFastAsPossible = no waiting. Applies at once.
     void setSpeed(double factor);

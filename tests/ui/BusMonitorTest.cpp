@@ -238,13 +238,18 @@ TEST(BusMonitorPanel, AMissingLogIsReportedAndTheLiveViewStays) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     BusMonitorPanel panel;
-    EXPECT_FALSE(panel.openLog(dir.filePath(QStringLiteral("none.log"))).isEmpty());
-    EXPECT_EQ(panel.replay()->state(), BusMonitorReplay::State::Idle);
     connection::StationConnection station;
     panel.setConnection(&station);
     emit station.framesSeen({systemStop()}, false);
     panel.model()->flush();
-    EXPECT_EQ(panel.model()->rowCount(), 1);
+    ASSERT_EQ(panel.model()->rowCount(), 1);
+    EXPECT_FALSE(panel.openLog(dir.filePath(QStringLiteral("none.log"))).isEmpty());
+    EXPECT_EQ(panel.replay()->state(), BusMonitorReplay::State::Idle);
+    EXPECT_EQ(panel.model()->rowCount(), 1) << "nothing shown is lost";
+    EXPECT_TRUE(panel.findChild<QWidget*>(QStringLiteral("busMonitorReplayBar"))->isHidden());
+    emit station.framesSeen({locoSpeed()}, true);
+    panel.model()->flush();
+    EXPECT_EQ(panel.model()->rowCount(), 2);
 }
 
 // The app's own command on the bus: a speed set through the railway shows as a sent loco.speed for that
