@@ -2,26 +2,30 @@
 
 #include "cs2/FrameText.h"
 
-#include <QTextStream>
-#include <optional>
-
 namespace stellwerk::ui {
 namespace {
 
 const QByteArray interfaceName = QByteArrayLiteral("can0");
 
-// The "(seconds.micros)" a candump log line starts with, if it has one.
-std::optional<QDateTime> lineTime(const QString& line) {
-    if (!line.startsWith(QLatin1Char('(')))
+// The "(seconds.micros)" a candump log line starts with, as microseconds, if it has one.
+std::optional<qint64> lineTimeUs(const QByteArray& line) {
+    if (!line.startsWith('('))
         return std::nullopt;
-    const qsizetype end = line.indexOf(QLatin1Char(')'));
+    const qsizetype end = line.indexOf(')');
+    const qsizetype dot = line.indexOf('.');
     if (end < 0)
         return std::nullopt;
     bool ok = false;
-    const double seconds = line.mid(1, end - 1).toDouble(&ok);
+    if (dot < 0 || dot > end) {
+        const qint64 seconds = line.mid(1, end - 1).toLongLong(&ok);
+        return ok ? std::optional<qint64>(seconds * 1000000) : std::nullopt;
+    }
+    const qint64 seconds = line.mid(1, dot - 1).toLongLong(&ok);
     if (!ok)
         return std::nullopt;
-    return QDateTime::fromMSecsSinceEpoch(qint64(seconds * 1000.0 + 0.5));
+    const QByteArray fraction = line.mid(dot + 1, end - dot - 1).leftJustified(6, '0').left(6);
+    const qint64 micros = fraction.toLongLong(&ok);
+    return ok ? std::optional<qint64>(seconds * 1000000 + micros) : std::nullopt;
 }
 
 } // namespace
@@ -39,51 +43,49 @@ void BusMonitorLogWriter::close() {
         m_file.close();
 }
 
-bool BusMonitorLogWriter::write(std::span<const cs2::CanFrame> frames, const QDateTime& time) {
+bool BusMonitorLogWriter::write(std::span<const cs2::CanFrame> frames, const QDateTime& time, bool outgoing) {
     if (!m_file.isOpen())
         return false;
     const qint64 ms = time.toMSecsSinceEpoch();
     const QByteArray prefix = QByteArray("(") + QByteArray::number(ms / 1000) + '.' +
                               QByteArray::number((ms % 1000) * 1000).rightJustified(6, '0') + ") " +
                               interfaceName + ' ';
+    const QByteArray mark = outgoing ? QByteArrayLiteral(" T\n") : QByteArrayLiteral(" R\n");
     QByteArray lines;
     lines.reserve(qsizetype(frames.size()) * 48);
     for (const cs2::CanFrame& frame : frames)
-        lines += prefix + QByteArray::fromStdString(cs2::formatCandump(frame)) + '\n';
+        lines += prefix + QByteArray::fromStdString(cs2::formatCandump(frame)) + mark;
     return m_file.write(lines) == lines.size();
 }
 
-BusMonitorLogSummary
-readCandumpLog(const QString& path,
-               const std::function<void(const cs2::CanFrame&, const QDateTime&)>& frame) {
-    BusMonitorLogSummary summary;
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
-        summary.error = file.errorString();
-        return summary;
-    }
-    QTextStream in(&file);
-    QDateTime time = QDateTime::currentDateTime();
-    int number = 0;
-    QString line;
-    while (in.readLineInto(&line)) {
-        ++number;
-        const QString trimmed = line.trimmed();
-        if (trimmed.isEmpty() || trimmed.startsWith(QLatin1Char('#')))
+QString BusMonitorLogReader::open(const QString& path) {
+    m_file.close();
+    m_number = 0;
+    m_file.setFileName(path);
+    if (!m_file.open(QIODevice::ReadOnly))
+        return m_file.errorString();
+    return {};
+}
+
+std::optional<BusMonitorLogLine> BusMonitorLogReader::next() {
+    while (m_file.isOpen() && !m_file.atEnd()) {
+        const QByteArray line = m_file.readLine().trimmed();
+        ++m_number;
+        if (line.isEmpty() || line.startsWith('#'))
             continue;
-        const auto parsed = cs2::parseFrame(trimmed.toStdString());
+        BusMonitorLogLine result;
+        result.number = m_number;
+        const auto parsed = cs2::parseFrame(std::string_view(line.constData(), std::size_t(line.size())));
         if (!parsed) {
-            ++summary.skipped;
-            if (summary.firstSkippedLine == 0)
-                summary.firstSkippedLine = number;
-            continue;
+            result.problem = QString::fromStdString(parsed.error());
+            return result;
         }
-        if (const auto stamped = lineTime(trimmed))
-            time = *stamped;
-        frame(parsed.value().frame, time);
-        ++summary.frames;
+        result.frame = parsed.value().frame;
+        result.timeUs = lineTimeUs(line);
+        result.sent = line.endsWith(" T");
+        return result;
     }
-    return summary;
+    return std::nullopt;
 }
 
 } // namespace stellwerk::ui

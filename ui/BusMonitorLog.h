@@ -5,13 +5,15 @@
 #include <QDateTime>
 #include <QFile>
 #include <QString>
-#include <functional>
+#include <optional>
 #include <span>
 
 namespace stellwerk::ui {
 
-// Keeps what the bus monitor saw in a candump log file ("(1700000000.123000) can0 00084711#0000C0030120",
-// as SocketCAN's candump -l writes and canplayer reads), so a session can be shared and looked at again.
+// Keeps what the bus monitor saw in a candump log file ("(1700000000.123000) can0 00084711#0000C0030120 T",
+// as SocketCAN's candump -l writes and canplayer reads; the R or T after the data marks a received or a
+// transmitted frame, and readers that expect three fields skip it), so a session can be shared and
+// looked at again.
 class BusMonitorLogWriter final {
     Q_DISABLE_COPY_MOVE(BusMonitorLogWriter)
 
@@ -23,24 +25,43 @@ public:
     void close();
     bool isOpen() const { return m_file.isOpen(); }
     QString fileName() const { return m_file.fileName(); }
-    // Appends one line per frame, all with the time `time`; returns false when the disk refused them.
-    bool write(std::span<const cs2::CanFrame> frames, const QDateTime& time);
+    // Appends one line per frame, all with the time `time` and the direction mark; returns false when
+    // the disk refused them.
+    bool write(std::span<const cs2::CanFrame> frames, const QDateTime& time, bool outgoing);
 
 private:
     QFile m_file;
 };
 
-// What reading a candump log found.
-struct BusMonitorLogSummary {
-    qsizetype frames = 0;
-    qsizetype skipped = 0;    // lines that held no frame (other than blank lines and # comments)
-    int firstSkippedLine = 0; // 1-based, 0 when none was skipped
-    QString error;            // the file could not be read at all
+// One line of a log that was not blank and not a # comment.
+struct BusMonitorLogLine {
+    int number = 0;                     // 1-based
+    std::optional<cs2::CanFrame> frame; // empty when the line held no frame
+    std::optional<qint64> timeUs;       // the "(seconds.micros)" stamp as microseconds, if the line had one
+    bool sent = false;                  // the line ends with the "T" mark (transmitted)
+    QString problem;                    // why the line held no frame
 };
 
-// Reads a candump log line by line and hands each frame with its time to `frame` (frames without a
-// time get the time of the previous one). Lines in the other notations cs2::parseFrame reads work too.
-BusMonitorLogSummary readCandumpLog(const QString& path,
-                                    const std::function<void(const cs2::CanFrame&, const QDateTime&)>& frame);
+// Reads a candump log one line at a time, so that a large file never has to be read at once. Lines in
+// the other notations cs2::parseFrame reads work too (without a time stamp).
+class BusMonitorLogReader final {
+    Q_DISABLE_COPY_MOVE(BusMonitorLogReader)
+
+public:
+    BusMonitorLogReader() = default;
+
+    // Returns an error text, empty on success.
+    QString open(const QString& path);
+    QString fileName() const { return m_file.fileName(); }
+    // The next line with content; nullopt at the end of the file.
+    std::optional<BusMonitorLogLine> next();
+    // How far reading has come, in bytes of the file.
+    qint64 position() const { return m_file.pos(); }
+    qint64 size() const { return m_file.size(); }
+
+private:
+    QFile m_file;
+    int m_number = 0;
+};
 
 } // namespace stellwerk::ui

@@ -1,5 +1,6 @@
 #include "BusMonitorModel.h"
 
+#include "cs2/Fields.h"
 #include "cs2/FrameReport.h"
 
 #include <QColor>
@@ -7,6 +8,7 @@
 #include <QPalette>
 #include <QTimer>
 #include <algorithm>
+#include <cctype>
 #include <string_view>
 
 namespace stellwerk::ui {
@@ -42,6 +44,18 @@ QColor tint(BusMonitorModel::Group group) {
     return QColor::fromRgbF(float(base.redF() * (1 - share) + colour.redF() * share),
                             float(base.greenF() * (1 - share) + colour.greenF() * share),
                             float(base.blueF() * (1 - share) + colour.blueF() * share));
+}
+
+bool darkPalette() {
+    return QGuiApplication::palette().color(QPalette::Base).lightness() < 128;
+}
+
+// Sent rows in orange, received ones in blue, dark on light themes and light on dark ones.
+QColor directionColour(BusMonitorModel::Direction direction) {
+    const bool sent = direction == BusMonitorModel::Direction::Sent;
+    if (darkPalette())
+        return sent ? QColor::fromHsv(28, 150, 255) : QColor::fromHsv(205, 110, 255);
+    return sent ? QColor::fromHsv(24, 255, 180) : QColor::fromHsv(210, 255, 160);
 }
 
 cs2::CanFrame frameOf(std::uint32_t id, std::uint8_t dlc, const std::array<std::uint8_t, 8>& data) {
@@ -114,6 +128,7 @@ void BusMonitorModel::dropOldest(std::size_t count) {
         return;
     beginRemoveRows({}, 0, int(count) - 1);
     m_rows.erase(m_rows.begin(), m_rows.begin() + std::ptrdiff_t(count));
+    m_dropped += count;
     endRemoveRows();
 }
 
@@ -141,6 +156,7 @@ void BusMonitorModel::clear() {
     m_rows.clear();
     m_rows.shrink_to_fit();
     m_queued.clear();
+    m_dropped = 0;
     endResetModel();
     m_total = 0;
     m_heldBack = 0;
@@ -160,6 +176,33 @@ BusMonitorModel::Direction BusMonitorModel::directionAt(int row) const {
     return m_rows.at(std::size_t(row)).direction;
 }
 
+std::string_view BusMonitorModel::commandAt(int row) const {
+    const Record& r = m_rows.at(std::size_t(row));
+    return cs2::intendedName(frameOf(r.id, r.dlc, r.data));
+}
+
+bool BusMonitorModel::containsText(int row, std::string_view lowerNeedle) const {
+    const Record& r = m_rows.at(std::size_t(row));
+    const cs2::FrameReport report(frameOf(r.id, r.dlc, r.data));
+    const auto contains = [lowerNeedle](std::string_view text) {
+        const auto equal = [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; };
+        return std::search(text.begin(), text.end(), lowerNeedle.begin(), lowerNeedle.end(), equal) !=
+               text.end();
+    };
+    return contains(report.name()) || contains(report.detailText()) || contains(report.frameText());
+}
+
+std::optional<std::uint32_t> BusMonitorModel::locIdAt(int row) const {
+    const Record& r = m_rows.at(std::size_t(row));
+    const cs2::DecodeResult decoded = cs2::decode(frameOf(r.id, r.dlc, r.data));
+    if (!decoded)
+        return std::nullopt;
+    for (const cs2::Field& field : cs2::describe(decoded.value()))
+        if (field.key == "locId")
+            return std::uint32_t(field.number);
+    return std::nullopt;
+}
+
 int BusMonitorModel::rowCount(const QModelIndex& parent) const {
     return parent.isValid() ? 0 : int(m_rows.size());
 }
@@ -177,10 +220,20 @@ QVariant BusMonitorModel::data(const QModelIndex& index, int role) const {
         return display(r, index.column());
     case Qt::ToolTipRole:
         return index.column() == DetailsColumn ? display(r, index.column()) : QVariant();
+    case Qt::ForegroundRole:
+        return index.column() == DirectionColumn ? directionColour(r.direction) : QVariant();
     case Qt::BackgroundRole:
         return tint(groupOf(cs2::intendedName(frameOf(r.id, r.dlc, r.data))));
     case GroupRole:
         return int(groupOf(cs2::intendedName(frameOf(r.id, r.dlc, r.data))));
+    case CommandRole: {
+        const std::string_view name = cs2::intendedName(frameOf(r.id, r.dlc, r.data));
+        return QString::fromLatin1(name.data(), qsizetype(name.size()));
+    }
+    case LocIdRole: {
+        const auto locId = locIdAt(index.row());
+        return locId ? QVariant::fromValue(uint(*locId)) : QVariant();
+    }
     case SearchTextRole: {
         const cs2::FrameReport report(frameOf(r.id, r.dlc, r.data));
         return QString::fromStdString(std::string(report.name()) + ' ' + report.detailText() + ' ' +
@@ -196,7 +249,7 @@ QVariant BusMonitorModel::display(const Record& r, int column) const {
     case TimeColumn:
         return QDateTime::fromMSecsSinceEpoch(r.timeMs).toString(QStringLiteral("HH:mm:ss.zzz"));
     case DirectionColumn:
-        return r.direction == Direction::Received ? tr("received") : tr("sent");
+        return r.direction == Direction::Received ? tr("← received") : tr("→ sent");
     case MessageColumn: {
         const cs2::FrameReport report(frameOf(r.id, r.dlc, r.data));
         return QString::fromUtf8(report.name().data(), qsizetype(report.name().size()));

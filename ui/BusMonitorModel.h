@@ -7,7 +7,9 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 class QTimer;
@@ -27,9 +29,12 @@ public:
     // What kind of command a row carries; each has its own colour.
     enum class Group : std::uint8_t { System, Loco, Accessory, Feedback, Stream, Other };
     enum Role {
-        // name, details and frame text in one string, for the filter (decodes the frame once)
+        // name, details and frame text in one string (decodes the frame once); BusMonitorFilter uses the
+        // cheaper containsText()
         SearchTextRole = Qt::UserRole + 1,
-        GroupRole, // the row's Group as int
+        GroupRole,   // the row's Group as int
+        CommandRole, // the command's vocabulary name ("loco.speed"), also for frames that did not decode
+        LocIdRole,   // the Loc-ID the frame addresses as uint, or invalid when it names none
     };
 
     static constexpr int DefaultHistory = 100000;
@@ -61,6 +66,16 @@ public:
     cs2::CanFrame frameAt(int row) const;
     QDateTime timeAt(int row) const;
     Direction directionAt(int row) const;
+    // The Loc-ID field of the frame in `row`, read by the core's decoder; nullopt when it has none.
+    std::optional<std::uint32_t> locIdAt(int row) const;
+    // The command's vocabulary name ("loco.speed"), also for a frame that did not decode.
+    std::string_view commandAt(int row) const;
+    // Whether the message name, details or frame text of `row` contain `lowerNeedle` (ASCII, lower case),
+    // ignoring case; cheaper than SearchTextRole for scanning many rows.
+    bool containsText(int row, std::string_view lowerNeedle) const;
+    // How many rows went from the front since the last clear(). Row r has the number firstSequence() + r,
+    // which it keeps while older rows go.
+    std::uint64_t firstSequence() const { return m_dropped; }
 
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
@@ -92,6 +107,7 @@ private:
     bool m_paused = false;
     std::uint64_t m_heldBack = 0;
     std::uint64_t m_total = 0;
+    std::uint64_t m_dropped = 0;
 };
 
 } // namespace stellwerk::ui

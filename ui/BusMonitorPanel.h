@@ -1,12 +1,16 @@
 #pragma once
 
 #include <QPointer>
+#include <QStringList>
 #include <QWidget>
 #include <memory>
 #include <vector>
 
+class QComboBox;
+class QDateTime;
 class QLabel;
 class QLineEdit;
+class QProgressBar;
 class QPushButton;
 class QSpinBox;
 class QTableView;
@@ -21,12 +25,13 @@ class StationConnection;
 
 namespace stellwerk::ui {
 
-class BusMonitorLogWriter;
 class BusMonitorFilter;
+class BusMonitorLogWriter;
 class BusMonitorModel;
+class BusMonitorReplay;
 
-// A workspace tab that shows every frame on the station's bus as it passes, decoded by the core,
-// so that a user can see what the station and other controllers say without a CAN adapter.
+// A workspace tab that shows every frame on the station's bus as it passes, both ways, decoded by the
+// core, so that a user can see what the app, the station and other controllers say without a CAN adapter.
 class BusMonitorPanel final : public QWidget {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(BusMonitorPanel)
@@ -35,38 +40,63 @@ public:
     explicit BusMonitorPanel(QWidget* parent = nullptr);
     ~BusMonitorPanel() override;
 
-    // Shows the frames of `station` from now on (null: none). It must outlive the panel or be
-    // replaced before it goes.
+    // Shows the frames of `station` (received and sent) from now on (null: none). It must outlive the
+    // panel or be replaced before it goes.
     void setConnection(connection::StationConnection* station);
 
     BusMonitorModel* model() const { return m_model; }
+    BusMonitorFilter* filter() const { return m_filter; }
+    BusMonitorReplay* replay() const { return m_replay; }
     QTableView* table() const { return m_table; }
     // Shows only rows whose message, details or frame contain `text` (case-insensitive); applied at once.
     void setFilterText(const QString& text);
+    // Shows only rows of the command `name` ("loco.speed"); empty = all. Returns false for a name the
+    // list does not hold.
+    bool setCommandFilter(const QString& name);
+    // Shows only rows addressing the Loc-ID written in `text` ("0xC003", "dcc 3"); empty = all. Returns
+    // false (and filters nothing by Loc-ID) when the text is not a Loc-ID.
+    bool setLocIdFilter(const QString& text);
     // Writes every frame seen from now on to a candump log at `path`; returns an error text, empty on
     // success. stopRecording() closes the file.
     QString startRecording(const QString& path);
     void stopRecording();
     bool isRecording() const;
-    // Replaces the table's rows with the frames of a candump log; returns an error text, empty on success.
+    // Clears the table and plays the frames of a candump log into it with their original timing (at the
+    // chosen speed) instead of the live ones; returns an error text, empty on success. backToLive() ends it.
     QString openLog(const QString& path);
+    // 1, 2, 10 or BusMonitorReplay::AsFastAsPossible.
+    void setReplaySpeed(double factor);
+    void backToLive();
 
 protected:
     void changeEvent(QEvent* event) override;
 
 private:
+    QLayout* createFilterBar();
+    QLayout* createFileBar();
+    QWidget* createReplayBar();
+    void createTable();
     void receive(const std::vector<cs2::CanFrame>& frames, bool outgoing);
+    void replayed(const std::vector<cs2::CanFrame>& frames, const QDateTime& time, bool outgoing);
+    void lineSkipped(int line, const QString& reason);
+    void replayStateChanged();
     void chooseRecording(bool start);
     void chooseLog();
     void applyFilter();
+    void showLocIdValidity();
     void followNewest();
     void updateCounter();
+    void updateReplayStatus();
     void retranslate();
+    void retranslateReplay();
 
     BusMonitorModel* m_model = nullptr;
     BusMonitorFilter* m_filter = nullptr;
+    BusMonitorReplay* m_replay = nullptr;
     QTableView* m_table = nullptr;
     QLineEdit* m_filterEdit = nullptr;
+    QComboBox* m_commandBox = nullptr;
+    QLineEdit* m_locIdEdit = nullptr;
     QTimer* m_filterTimer = nullptr;
     QPushButton* m_pauseButton = nullptr;
     QPushButton* m_clearButton = nullptr;
@@ -75,8 +105,17 @@ private:
     QLabel* m_historyLabel = nullptr;
     QSpinBox* m_history = nullptr;
     QLabel* m_counter = nullptr;
+    QWidget* m_replayBar = nullptr;
+    QLabel* m_replayTitle = nullptr;
+    QComboBox* m_speedBox = nullptr;
+    QPushButton* m_replayPauseButton = nullptr;
+    QPushButton* m_liveButton = nullptr;
+    QProgressBar* m_replayProgress = nullptr;
+    QLabel* m_replayStatus = nullptr;
     QPointer<connection::StationConnection> m_connection;
     std::unique_ptr<BusMonitorLogWriter> m_recorder;
+    QStringList m_skippedLines; // "line 3: why", the first MaxSkippedShown of them
+    bool m_locIdValid = true;
     bool m_followNewest = true;
 };
 

@@ -1,6 +1,7 @@
 #include "can/Transport.h"
 
 #include <QLoggingCategory>
+#include <QMetaMethod>
 
 namespace stellwerk::can {
 
@@ -59,6 +60,15 @@ void Transport::write(std::span<const CanFrame> frames) {
     const std::size_t written = writeFrames(frames);
     counters_.framesOut += written;
     counters_.dropped += frames.size() - written;
+    reportSent(frames.first(written));
+}
+
+// Copies the frames only when someone listens: a flood of writes costs nothing without a bus monitor.
+void Transport::reportSent(std::span<const CanFrame> frames) {
+    static const QMetaMethod sent = QMetaMethod::fromSignal(&Transport::framesSent);
+    if (frames.empty() || !isSignalConnected(sent))
+        return;
+    emit framesSent(std::vector<CanFrame>(frames.begin(), frames.end()));
 }
 
 void Transport::reportConnectionLost(const QString& reason, std::chrono::milliseconds retryIn) {

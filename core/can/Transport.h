@@ -62,6 +62,9 @@ public:
 signals:
     // Frames that arrived, in order; one signal per read, never one per frame of a burst.
     void framesReceived(const std::vector<stellwerk::cs2::CanFrame>& frames);
+    // Frames the wire took, in order, after pacing: one signal per block written (one frame at a time
+    // while pacing spaces them out). Frames refused or still waiting are not in it.
+    void framesSent(const std::vector<stellwerk::cs2::CanFrame>& frames);
     void stateChanged(stellwerk::can::Transport::State state);
     // Something a person should see (connection refused, interface vanished, ...).
     void problem(const QString& message);
@@ -85,6 +88,7 @@ protected:
 
 private:
     void write(std::span<const cs2::CanFrame> frames);
+    void reportSent(std::span<const cs2::CanFrame> frames);
     void discardWaiting();
 
     State state_ = State::Closed;

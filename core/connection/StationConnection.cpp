@@ -163,6 +163,8 @@ void StationConnection::watchTransport() {
     connect(link_->transport.get(), &can::Transport::problem, this, &StationConnection::report);
     connect(link_->transport.get(), &can::Transport::framesReceived, this,
             [this](const std::vector<cs2::CanFrame>& frames) { emit framesSeen(frames, false); });
+    connect(link_->transport.get(), &can::Transport::framesSent, this,
+            [this](const std::vector<cs2::CanFrame>& frames) { emit framesSeen(frames, true); });
     station::Liveness& liveness = link_->session->liveness();
     connect(&liveness, &station::Liveness::stationSilent, this, &StationConnection::stationSilent);
     connect(&liveness, &station::Liveness::stationRecovered, this, &StationConnection::stationRecovered);

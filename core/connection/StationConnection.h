@@ -102,8 +102,8 @@ signals:
     void sessionStarted(stellwerk::station::StationSession* session);
     // A start-up finished (the first one, and again after each reload): the moment to load the model.
     void configurationLoaded(const stellwerk::station::StartupResult& result);
-    // Frames on the wire, one signal per batch the transport read, for a bus monitor. Only received
-    // frames for now (`outgoing` is false): the transport does not report what it writes yet.
+    // Frames on the wire, for a bus monitor: one signal per batch the transport read (`outgoing` false)
+    // and per block it wrote after pacing (`outgoing` true), in the order they passed.
     void framesSeen(const std::vector<stellwerk::cs2::CanFrame>& frames, bool outgoing);
 
 private:

@@ -1,8 +1,11 @@
 #include "BusMonitorModel.h"
 #include "BusMonitorPanel.h"
+#include "BusMonitorReplay.h"
+#include "RailwayBinding.h"
 #include "StationTestSupport.h"
 #include "Translations.h"
 #include "cs2/FrameText.h"
+#include "model/Railway.h"
 
 #include <QAbstractItemModel>
 #include <QColor>
@@ -25,6 +28,8 @@ namespace {
 
 // The demo trains pass a contact every second or two; generous for a loaded machine.
 constexpr int FramesMs = 10000;
+
+constexpr quint32 V100 = 0x18; // V 100 2023, MM2 address 24: stands still in the demo
 
 cs2::CanFrame frame(const char* text) {
     const auto parsed = cs2::parseFrame(text);
@@ -56,7 +61,7 @@ TEST(BusMonitorModel, TenThousandFramesInOneBatchAreOneInsertion) {
     EXPECT_EQ(inserted.count(), 1);
     EXPECT_EQ(model.totalFrames(), 10000u);
     EXPECT_EQ(cell(model, 9999, BusMonitorModel::MessageColumn), QStringLiteral("loco.speed"));
-    EXPECT_EQ(cell(model, 0, BusMonitorModel::DirectionColumn), QStringLiteral("received"));
+    EXPECT_EQ(cell(model, 0, BusMonitorModel::DirectionColumn), QStringLiteral("← received"));
     EXPECT_EQ(cell(model, 0, BusMonitorModel::FrameColumn), QStringLiteral("00084711 6 00 00 C0 03 01 20"));
     EXPECT_TRUE(cell(model, 0, BusMonitorModel::DetailsColumn).contains(QStringLiteral("locId=0xC003")));
 }
@@ -81,7 +86,7 @@ TEST(BusMonitorModel, HistoryLimitDropsTheOldestInOneRemoval) {
     EXPECT_EQ(cell(model, 0, BusMonitorModel::MessageColumn), QStringLiteral("system.stop"));
     EXPECT_EQ(cell(model, 49, BusMonitorModel::MessageColumn), QStringLiteral("system.stop"));
     EXPECT_EQ(cell(model, 50, BusMonitorModel::MessageColumn), QStringLiteral("loco.speed"));
-    EXPECT_EQ(cell(model, 50, BusMonitorModel::DirectionColumn), QStringLiteral("sent"));
+    EXPECT_EQ(cell(model, 50, BusMonitorModel::DirectionColumn), QStringLiteral("→ sent"));
     EXPECT_EQ(model.totalFrames(), 130u);
 
     model.setHistoryLimit(10);
@@ -173,22 +178,27 @@ TEST(BusMonitorPanel, RecordsACandumpLogAndOpensItAgain) {
     recorder.setConnection(&station);
     ASSERT_EQ(recorder.startRecording(path), QString());
     emit station.framesSeen({systemStop(), locoSpeed()}, false);
+    emit station.framesSeen({locoSpeed()}, true);
     recorder.stopRecording();
     emit station.framesSeen({systemStop()}, false); // not recorded any more
 
     QFile file(path);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
     const QList<QByteArray> lines = file.readAll().split('\n');
-    ASSERT_EQ(lines.size(), 3); // two lines and the empty rest after the last newline
+    ASSERT_EQ(lines.size(), 4); // three lines and the empty rest after the last newline
     EXPECT_TRUE(lines[1].startsWith('(')) << lines[1].toStdString();
-    EXPECT_TRUE(lines[1].endsWith(") can0 00084711#0000C0030120")) << lines[1].toStdString();
+    EXPECT_TRUE(lines[1].endsWith(") can0 00084711#0000C0030120 R")) << lines[1].toStdString();
+    EXPECT_TRUE(lines[2].endsWith(") can0 00084711#0000C0030120 T")) << lines[2].toStdString();
 
     BusMonitorPanel replay;
+    replay.setReplaySpeed(BusMonitorReplay::AsFastAsPossible);
     ASSERT_EQ(replay.openLog(path), QString());
     const BusMonitorModel& model = *replay.model();
-    ASSERT_EQ(model.rowCount(), 2);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return model.rowCount() == 3; }, FramesMs));
     EXPECT_EQ(cell(model, 0, BusMonitorModel::MessageColumn), QStringLiteral("system.stop"));
     EXPECT_EQ(cell(model, 1, BusMonitorModel::MessageColumn), QStringLiteral("loco.speed"));
+    EXPECT_EQ(model.directionAt(1), Direction::Received);
+    EXPECT_EQ(model.directionAt(2), Direction::Sent);
     EXPECT_LE(std::abs(model.timeAt(1).msecsTo(QDateTime::currentDateTime())), 60000);
 }
 
@@ -203,7 +213,75 @@ TEST(BusMonitorPanel, OpeningALogReportsLinesWithoutAFrame) {
     Translations translations;
     ASSERT_TRUE(translations.select(Language::English));
     BusMonitorPanel replay;
-    EXPECT_EQ(replay.openLog(path), QStringLiteral("1 line held no frame, it is line 3."));
+    ASSERT_EQ(replay.openLog(path), QString());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return replay.replay()->state() == BusMonitorReplay::State::Finished; },
+                                FramesMs));
+    replay.model()->flush();
     ASSERT_EQ(replay.model()->rowCount(), 1);
     EXPECT_EQ(replay.model()->timeAt(0).toMSecsSinceEpoch(), 1700000000250);
+    auto* status = replay.findChild<QLabel*>(QStringLiteral("busMonitorReplayStatus"));
+    ASSERT_NE(status, nullptr);
+    // "1 line skipped; line 3: ..." once the English plural forms are in translations/stellwerk_en.ts
+    EXPECT_TRUE(status->text().startsWith(QStringLiteral("1 line"))) << status->text().toStdString();
+    EXPECT_TRUE(status->text().contains(QStringLiteral(" skipped; line 3: 'not' is not")))
+        << status->text().toStdString();
+    EXPECT_TRUE(status->toolTip().startsWith(QStringLiteral("line 3: 'not' is not")))
+        << status->toolTip().toStdString();
+    EXPECT_FALSE(replay.findChild<QWidget*>(QStringLiteral("busMonitorReplayBar"))->isHidden());
+
+    replay.backToLive();
+    EXPECT_EQ(replay.model()->rowCount(), 0);
+    EXPECT_TRUE(replay.findChild<QWidget*>(QStringLiteral("busMonitorReplayBar"))->isHidden());
+}
+
+TEST(BusMonitorPanel, AMissingLogIsReportedAndTheLiveViewStays) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    BusMonitorPanel panel;
+    connection::StationConnection station;
+    panel.setConnection(&station);
+    emit station.framesSeen({systemStop()}, false);
+    panel.model()->flush();
+    ASSERT_EQ(panel.model()->rowCount(), 1);
+    EXPECT_FALSE(panel.openLog(dir.filePath(QStringLiteral("none.log"))).isEmpty());
+    EXPECT_EQ(panel.replay()->state(), BusMonitorReplay::State::Idle);
+    EXPECT_EQ(panel.model()->rowCount(), 1) << "nothing shown is lost";
+    EXPECT_TRUE(panel.findChild<QWidget*>(QStringLiteral("busMonitorReplayBar"))->isHidden());
+    emit station.framesSeen({locoSpeed()}, true);
+    panel.model()->flush();
+    EXPECT_EQ(panel.model()->rowCount(), 2);
+}
+
+// The app's own command on the bus: a speed set through the railway shows as a sent loco.speed for that
+// Loc-ID, and the station's answer as a received one; the three filters together find both.
+TEST(BusMonitorPanel, ShowsTheCommandsTheAppSendsAndTheAnswers) {
+    Translations translations;
+    ASSERT_TRUE(translations.select(Language::English));
+    test::TestStation simulated;
+    ASSERT_TRUE(simulated.start());
+    connection::StationConnection station;
+    RailwayBinding railways{station};
+    BusMonitorPanel panel;
+    panel.setConnection(&station);
+    station.connectTo(simulated.url());
+    ASSERT_TRUE(test::waitForState(station, connection::StationConnection::State::Ready));
+    ASSERT_NE(railways.railway(), nullptr);
+    ASSERT_TRUE(panel.setCommandFilter(QStringLiteral("loco.speed")));
+    ASSERT_TRUE(panel.setLocIdFilter(QStringLiteral("mm2 24"))); // V 100 2023, standing in the demo
+    panel.setFilterText(QStringLiteral("speed=500"));
+    railways.railway()->setSpeed(V100, 500);
+    const QAbstractItemModel& shown = *panel.table()->model();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return shown.rowCount() >= 2; }, FramesMs));
+    EXPECT_EQ(cell(shown, 0, BusMonitorModel::DirectionColumn), QStringLiteral("→ sent"));
+    EXPECT_EQ(cell(shown, 1, BusMonitorModel::DirectionColumn), QStringLiteral("← received"));
+    for (int row = 0; row < 2; ++row) {
+        EXPECT_EQ(cell(shown, row, BusMonitorModel::MessageColumn), QStringLiteral("loco.speed"));
+        EXPECT_TRUE(cell(shown, row, BusMonitorModel::DetailsColumn).contains(QStringLiteral("locId=0x0018")))
+            << cell(shown, row, BusMonitorModel::DetailsColumn).toStdString();
+    }
+    const QColor sent =
+        shown.index(0, BusMonitorModel::DirectionColumn).data(Qt::ForegroundRole).value<QColor>();
+    const QColor received =
+        shown.index(1, BusMonitorModel::DirectionColumn).data(Qt::ForegroundRole).value<QColor>();
+    EXPECT_NE(sent, received);
 }

@@ -140,5 +140,55 @@ TEST(LoopbackTransport, PacingSpacesFramesAndKeepsTheirOrder) {
     EXPECT_GE(span, std::chrono::nanoseconds(gap).count() * qint64(count - 1) * 8 / 10);
 }
 
+// What the app wrote, as the wire took it: one report per block, none for frames still waiting.
+TEST(LoopbackTransport, FramesSentReportsEachBlockTheWireTook) {
+    Pair pair;
+    std::vector<std::vector<CanFrame>> sent;
+    QObject::connect(&pair.app, &Transport::framesSent,
+                     [&sent](const std::vector<CanFrame>& frames) { sent.push_back(frames); });
+    pair.app.open();
+    EXPECT_EQ(pair.app.sendBatch(numberedFrames(3)), 3u); // waits for the peer
+    EXPECT_TRUE(sent.empty());
+    pair.station.open();
+    ASSERT_EQ(sent.size(), 1u);
+    EXPECT_EQ(sent[0], numberedFrames(3));
+    EXPECT_EQ(pair.app.sendBatch(numberedFrames(4, 3)), 4u);
+    ASSERT_EQ(sent.size(), 2u);
+    EXPECT_EQ(sent[1], numberedFrames(4, 3));
+}
+
+TEST(LoopbackTransport, FramesSentFollowsPacingOneFrameAtATime) {
+    constexpr std::size_t count = 5;
+    Pair pair;
+    pair.app.setPacing(5ms);
+    pair.open();
+    std::vector<std::vector<CanFrame>> sent;
+    QObject::connect(&pair.app, &Transport::framesSent,
+                     [&sent](const std::vector<CanFrame>& frames) { sent.push_back(frames); });
+    EXPECT_EQ(pair.app.sendBatch(numberedFrames(count)), count);
+    EXPECT_LT(sent.size(), count) << "paced frames wait for their gap";
+    ASSERT_TRUE(waitFor([&] { return sent.size() == count; }));
+    std::vector<CanFrame> all;
+    for (const auto& block : sent) {
+        EXPECT_EQ(block.size(), 1u);
+        all.insert(all.end(), block.begin(), block.end());
+    }
+    EXPECT_EQ(all, numberedFrames(count));
+    EXPECT_EQ(pair.app.counters().framesOut, count);
+}
+
+TEST(LoopbackTransport, RefusedFramesAreNotReportedAsSent) {
+    Pair pair;
+    int reports = 0;
+    QObject::connect(&pair.app, &Transport::framesSent,
+                     [&reports](const std::vector<CanFrame>&) { ++reports; });
+    EXPECT_FALSE(pair.app.send(numbered(1))); // closed
+    pair.app.open();
+    pair.app.setQueueLimit(2);
+    EXPECT_EQ(pair.app.sendBatch(numberedFrames(3)), 2u); // no peer yet: two wait, one is refused
+    pair.app.close();
+    EXPECT_EQ(reports, 0);
+}
+
 } // namespace
 } // namespace stellwerk::can::test

@@ -8,8 +8,10 @@
 #include <QSignalSpy>
 #include <QTimer>
 #include <QUdpSocket>
+#include <algorithm>
 #include <gtest/gtest.h>
 #include <memory>
+#include <utility>
 #include <vector>
 
 using namespace stellwerk;
@@ -214,6 +216,30 @@ TEST(StationConnection, TcpAddressOfAStationServerBecomesReady) {
     EXPECT_EQ(connection.embeddedPort(), 0);
     ASSERT_TRUE(waitForState(connection, State::Ready)) << connection.lastProblem().toStdString();
     EXPECT_EQ(connection.counts().locomotives, 12);
+}
+
+// The bus monitor's view: the start-up's ping goes out as an outgoing frame before its answer comes in.
+TEST(StationConnection, FramesSeenReportsWhatWasSentAndWhatCameBack) {
+    TestStation station;
+    ASSERT_TRUE(station.start());
+    StationConnection connection;
+    std::vector<std::pair<bool, cs2::CanFrame>> seen;
+    QObject::connect(&connection, &StationConnection::framesSeen,
+                     [&seen](const std::vector<cs2::CanFrame>& frames, bool outgoing) {
+                         for (const cs2::CanFrame& frame : frames)
+                             seen.emplace_back(outgoing, frame);
+                     });
+    connection.connectTo(QStringLiteral("tcp://127.0.0.1:%1").arg(station.tcpPort()));
+    ASSERT_TRUE(waitForState(connection, State::Ready)) << connection.lastProblem().toStdString();
+    const auto firstOut = std::find_if(seen.begin(), seen.end(), [](const auto& s) { return s.first; });
+    ASSERT_NE(firstOut, seen.end());
+    EXPECT_FALSE(firstOut->second.isResponse());
+    const auto answer = std::find_if(firstOut, seen.end(), [&](const auto& s) {
+        return !s.first && s.second.isResponse() && s.second.command() == firstOut->second.command();
+    });
+    EXPECT_NE(answer, seen.end()) << "the station answers what we sent";
+    const auto outgoing = std::count_if(seen.begin(), seen.end(), [](const auto& s) { return s.first; });
+    EXPECT_GT(outgoing, 5) << "the start-up asks for devices, files and states";
 }
 
 TEST(StationConnection, NoServerListeningStaysConnectingAndSaysWhy) {
