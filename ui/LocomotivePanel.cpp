@@ -14,6 +14,7 @@
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QShortcut>
 #include <QSplitter>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -39,11 +40,33 @@ LocomotivePanel::LocomotivePanel(QWidget* parent)
       m_remove(button(this, "deleteLocomotive")), m_apply(button(this, "applyLocomotive")),
       m_revert(button(this, "revertLocomotive")), m_save(button(this, "saveLocomotives")) {
     setObjectName(QStringLiteral("locomotivePanel"));
-    m_table->setObjectName(QStringLiteral("locomotiveList"));
     m_message->setObjectName(QStringLiteral("locomotiveMessage"));
     m_message->setWordWrap(true);
     m_emptyText->setAlignment(Qt::AlignCenter);
     m_emptyText->setEnabled(false);
+    setUpTable();
+    auto* tools = new QHBoxLayout;
+    tools->addWidget(m_title, 1);
+    tools->addWidget(m_add);
+    tools->addWidget(m_remove);
+    tools->addWidget(m_save);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->addWidget(m_table);
+    split->addWidget(editorSide());
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(tools);
+    layout->addWidget(m_emptyText);
+    layout->addWidget(split, 1);
+    connectActions();
+    retranslate();
+    load();
+}
+
+// A list that is read, not edited: one locomotive selected at a time, the name takes the spare width.
+void LocomotivePanel::setUpTable() {
+    m_table->setObjectName(QStringLiteral("locomotiveList"));
     m_table->setModel(m_model);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
@@ -53,42 +76,37 @@ LocomotivePanel::LocomotivePanel(QWidget* parent)
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setSectionResizeMode(LocomotiveFileModel::Name, QHeaderView::Stretch);
+}
 
-    auto* tools = new QHBoxLayout;
-    tools->addWidget(m_title, 1);
-    tools->addWidget(m_add);
-    tools->addWidget(m_remove);
-    tools->addWidget(m_save);
-    auto* editorButtons = new QHBoxLayout;
-    editorButtons->addStretch(1);
-    editorButtons->addWidget(m_revert);
-    editorButtons->addWidget(m_apply);
-    auto* editorSide = new QWidget(this);
-    auto* editorLayout = new QVBoxLayout(editorSide);
-    editorLayout->setContentsMargins(0, 0, 0, 0);
-    editorLayout->addWidget(m_form, 1);
-    editorLayout->addWidget(m_message);
-    editorLayout->addLayout(editorButtons);
-    auto* split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(m_table);
-    split->addWidget(editorSide);
-    split->setStretchFactor(0, 3);
-    split->setStretchFactor(1, 2);
-    auto* layout = new QVBoxLayout(this);
-    layout->addLayout(tools);
-    layout->addWidget(m_emptyText);
-    layout->addWidget(split, 1);
+QWidget* LocomotivePanel::editorSide() {
+    auto* buttons = new QHBoxLayout;
+    buttons->addStretch(1);
+    buttons->addWidget(m_revert);
+    buttons->addWidget(m_apply);
+    auto* side = new QWidget(this);
+    auto* layout = new QVBoxLayout(side);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_form, 1);
+    layout->addWidget(m_message);
+    layout->addLayout(buttons);
+    return side;
+}
 
+// Buttons, and their keys: Enter in the name applies, Ctrl+S saves, Delete in the list deletes.
+void LocomotivePanel::connectActions() {
     connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this,
             &LocomotivePanel::selectionChanged);
     connect(m_form, &LocomotiveForm::edited, this, &LocomotivePanel::edited);
+    connect(m_form->nameEdit(), &QLineEdit::returnPressed, this, &LocomotivePanel::applyForm);
     connect(m_apply, &QPushButton::clicked, this, &LocomotivePanel::applyForm);
     connect(m_revert, &QPushButton::clicked, this, &LocomotivePanel::showSelected);
     connect(m_add, &QPushButton::clicked, this, &LocomotivePanel::startNewLocomotive);
     connect(m_remove, &QPushButton::clicked, this, &LocomotivePanel::askAndRemove);
     connect(m_save, &QPushButton::clicked, this, &LocomotivePanel::chooseFolderAndSave);
-    retranslate();
-    load();
+    auto* save = new QShortcut(QKeySequence::Save, this, this, &LocomotivePanel::chooseFolderAndSave);
+    save->setContext(Qt::WidgetWithChildrenShortcut);
+    auto* remove = new QShortcut(QKeySequence::Delete, m_table, this, &LocomotivePanel::askAndRemove);
+    remove->setContext(Qt::WidgetShortcut);
 }
 
 void LocomotivePanel::setRailway(model::Railway* railway) {
@@ -237,6 +255,8 @@ void LocomotivePanel::changed(std::optional<std::size_t> select) {
 }
 
 void LocomotivePanel::chooseFolderAndSave() {
+    if (!m_save->isEnabled())
+        return;
     const QString folder = QFileDialog::getExistingDirectory(
         this, tr("Save lokomotive.cs2 into a CS2 configuration folder"), m_lastFolder);
     if (!folder.isEmpty())

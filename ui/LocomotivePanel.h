@@ -56,6 +56,9 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
+    void setUpTable();
+    QWidget* editorSide();
+    void connectActions();
     void load();
     void railwayLoaded();
     void selectionChanged();

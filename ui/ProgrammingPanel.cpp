@@ -99,8 +99,8 @@ QGroupBox* ProgrammingPanel::buildRegistration() {
     return m_registration;
 }
 
-QGroupBox* ProgrammingPanel::buildCvProgramming() {
-    m_programming = named(new QGroupBox(this), "cvProgramming");
+// The fields of a CV request; the labels are named in retranslate().
+void ProgrammingPanel::createCvFields() {
     QWidget* box = m_programming;
     m_locomotive = named(new QComboBox(box), "cvLocomotive");
     m_protocol = named(new QComboBox(box), "cvProtocol");
@@ -132,6 +132,9 @@ QGroupBox* ProgrammingPanel::buildCvProgramming() {
     m_result->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     for (int i = 0; i < LabelCount; ++i)
         m_labels << new QLabel(box);
+}
+
+QGridLayout* ProgrammingPanel::cvGrid() {
     auto* grid = new QGridLayout;
     const auto row = [&](int line, Label label, QWidget* first, QWidget* second = nullptr,
                          Label secondLabel = LabelCount) {
@@ -156,12 +159,18 @@ QGroupBox* ProgrammingPanel::buildCvProgramming() {
     grid->addWidget(m_bitOn, 5, 4);
     grid->setColumnStretch(1, 1);
     grid->setColumnStretch(3, 1);
+    return grid;
+}
+
+QGroupBox* ProgrammingPanel::buildCvProgramming() {
+    m_programming = named(new QGroupBox(this), "cvProgramming");
+    createCvFields();
     auto* buttons = new QHBoxLayout;
     buttons->addStretch(1);
     buttons->addWidget(m_read);
     buttons->addWidget(m_write);
-    auto* layout = new QVBoxLayout(box);
-    layout->addLayout(grid);
+    auto* layout = new QVBoxLayout(m_programming);
+    layout->addLayout(cvGrid());
     layout->addWidget(m_protocolNote);
     layout->addLayout(buttons);
     layout->addWidget(m_result);

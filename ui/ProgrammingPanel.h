@@ -9,6 +9,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QGridLayout;
 class QGroupBox;
 class QLabel;
 class QProgressBar;
@@ -66,6 +67,8 @@ protected:
 private:
     QGroupBox* buildRegistration();
     QGroupBox* buildCvProgramming();
+    void createCvFields();
+    QGridLayout* cvGrid();
     void fillLocomotives();
     void locomotiveChosen();
     void protocolChosen();

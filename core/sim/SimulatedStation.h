@@ -30,7 +30,7 @@ public:
         std::uint16_t hash = 0;                 // 0: derived from uid as the document says
         Power power = Power::Stopped;           // track power at start (a CS2 starts in STOP)
         // mfx decoders on the track that no station registered yet: discovery finds them (UIDs).
-        std::vector<std::uint32_t> newMfxDecoders;
+        std::vector<std::uint32_t> newMfxDecoders{};
     };
 
     explicit SimulatedStation(StationLayout layout, QObject* parent = nullptr);

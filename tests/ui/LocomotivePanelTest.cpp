@@ -136,3 +136,11 @@ TEST_F(LocomotivePanelTest, ADeletedLocomotiveLeavesTheListAndTheRailway) {
     EXPECT_EQ(panel.model()->rowCount(), 11);
     EXPECT_EQ(railway().locomotive(V100), nullptr);
 }
+
+TEST_F(LocomotivePanelTest, EnterInTheNameFieldAppliesTheEdit) {
+    ASSERT_TRUE(panel.selectLocomotive(QStringLiteral("E 44 043")));
+    panel.form()->nameEdit()->setText(QStringLiteral("E 44 Bw Freilassing"));
+    QTest::keyClick(panel.form()->nameEdit(), Qt::Key_Return);
+    EXPECT_EQ(railway().locomotive(0x2C)->name(), QStringLiteral("E 44 Bw Freilassing"));
+    EXPECT_TRUE(panel.editor().modified());
+}
