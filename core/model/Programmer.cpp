@@ -17,6 +17,7 @@ constexpr int MaxCv = 1023; // the 10-bit CV field; the document's "1024" cannot
 constexpr int MaxMm2Cv = 256;
 constexpr int Sx1Cvs = 5;
 constexpr int MaxIndex = 63;
+constexpr int MainTrackRange = 64;
 
 ProgrammingResult invalid(Task task, const CvTarget& target, Problem problem, int minimum = 0,
                           int maximum = 0) {
@@ -258,9 +259,10 @@ void Programmer::discoveryAnswer(const cs2::LocoDiscovery& answer) {
         finish(result);
         return;
     }
-    const int range = answer.range.value_or(0);
+    // Main-track requests count from 64 ("Range = Wert mod 64"); 33..39 answer MM2/DCC/SX1 recognition.
+    const int range = answer.range.value_or(0) % MainTrackRange;
     if (range < 1 || range > DiscoverySteps)
-        return; // an MM2/DCC/SX1 recognition answer, not part of the mfx search
+        return;
     discoveryTimer_->start(settings_.discoveryTimeout);
     emit discoveryProgress(range, *answer.uid);
     if (range < DiscoverySteps)
