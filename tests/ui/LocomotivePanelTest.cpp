@@ -12,11 +12,14 @@
 #include <QComboBox>
 #include <QFile>
 #include <QItemSelectionModel>
+#include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QSpinBox>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
+#include <algorithm>
 #include <gtest/gtest.h>
 
 using namespace stellwerk;
@@ -143,4 +146,19 @@ TEST_F(LocomotivePanelTest, EnterInTheNameFieldAppliesTheEdit) {
     QTest::keyClick(panel.form()->nameEdit(), Qt::Key_Return);
     EXPECT_EQ(railway().locomotive(0x2C)->name(), QStringLiteral("E 44 Bw Freilassing"));
     EXPECT_TRUE(panel.editor().modified());
+}
+
+TEST(LocomotivePanelWithoutStation, SaysSoAndOffersNothingToSave) {
+    Translations translations;
+    ASSERT_TRUE(translations.select(Language::English));
+    LocomotivePanel panel;
+    EXPECT_EQ(panel.model()->rowCount(), 0);
+    EXPECT_FALSE(panel.findChild<QPushButton*>(QStringLiteral("saveLocomotives"))->isEnabled());
+    EXPECT_FALSE(panel.findChild<QPushButton*>(QStringLiteral("newLocomotive"))->isEnabled());
+    EXPECT_FALSE(panel.form()->isEnabled());
+    EXPECT_FALSE(panel.applyForm());
+    const QList<QLabel*> labels = panel.findChildren<QLabel*>();
+    EXPECT_TRUE(std::any_of(labels.begin(), labels.end(), [](const QLabel* label) {
+        return label->text() == QStringLiteral("No station connected.");
+    }));
 }
