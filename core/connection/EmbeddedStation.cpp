@@ -67,6 +67,7 @@ bool EmbeddedStation::start() {
     }
     sim::SimulatedStation::Options options;
     options.power = sim::SimulatedStation::Power::Running; // the demo is alive; a real CS2 starts in STOP
+    options.newMfxDecoders = {NewMfxDecoder};              // a new mfx loco waits to be discovered
     station_ = std::make_unique<sim::SimulatedStation>(std::move(layout), options);
     startDemoTrains(*station_);
     sim::StationServerSettings settings;

@@ -18,6 +18,9 @@ namespace stellwerk::connection {
 // shortcut inside the app).
 class EmbeddedStation final {
 public:
+    // The UID of an mfx decoder on the demo's track that is not registered yet, for trying discovery.
+    static constexpr std::uint32_t NewMfxDecoder = 0x7a3c1e10;
+
     EmbeddedStation();
     ~EmbeddedStation();
     EmbeddedStation(const EmbeddedStation&) = delete;

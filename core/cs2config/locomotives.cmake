@@ -4,6 +4,7 @@
 target_sources(stellwerk-core PRIVATE
     cs2config/Locomotive.cpp
     cs2config/LocomotiveFieldWriter.cpp
+    cs2config/LocomotiveEditor.cpp
     cs2config/LocomotiveFile.cpp
     cs2config/LocomotiveJson.cpp
     cs2config/LocomotiveRecord.cpp

@@ -21,7 +21,8 @@ QList<Out> toList(const ChangedKeys<Key>& keys) {
 } // namespace
 
 Railway::Railway(station::StationSession& session, QObject* parent)
-    : QObject(parent), session_(session), poller_(new ReadingPoller(session, this)) {
+    : QObject(parent), session_(session), poller_(new ReadingPoller(session, this)),
+      programmer_(new Programmer(session, this)) {
     connect(&session_, &station::StationSession::updated, this, &Railway::apply);
     connect(poller_, &ReadingPoller::readingMissed, this, &Railway::readingMissed);
 }
@@ -41,6 +42,11 @@ void Railway::load(const station::StartupResult& startup) {
     updatePollerSources();
     if (!poller_->sources().empty())
         poller_->start();
+    emit loaded();
+}
+
+void Railway::replaceLocomotiveFile(const cs2config::LocomotiveFile& file) {
+    state_.replaceLocomotiveFile(file);
     emit loaded();
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "model/Programmer.h"
 #include "model/RailwayState.h"
 #include "model/ReadingPoller.h"
 #include "model/RouteRunner.h"
@@ -47,6 +48,13 @@ public:
     // Unknown until the station reported its power state.
     std::optional<station::PowerState> power() const { return state_.power(); }
     ReadingPoller& readings() { return *poller_; }
+    // Decoder programming on this station: mfx discovery, bind, verify, CV read and write.
+    Programmer& programmer() { return *programmer_; }
+    // lokomotive.cs2 as loaded (or last replaced); null when the station sent none.
+    const cs2config::LocomotiveFile* locomotiveFile() const { return state_.locomotiveFile(); }
+    // An edited lokomotive.cs2 (see cs2config::LocomotiveEditor): the locomotives follow it, and every view
+    // reloads (loaded()). The station itself is not changed.
+    void replaceLocomotiveFile(const cs2config::LocomotiveFile& file);
 
     // Intents, in railway words. Each reports a problem signal when the station does not carry it out.
     void setSpeed(std::uint32_t loco, int speed); // 0..1000
@@ -109,6 +117,7 @@ private:
     station::StationSession& session_;
     RailwayState state_;
     ReadingPoller* poller_;
+    Programmer* programmer_;
     std::map<std::int64_t, RouteRunner*> runners_;
 };
 

@@ -3,7 +3,7 @@
 namespace stellwerk::model {
 
 void RailwayState::load(const station::StartupResult& startup) {
-    loadLocomotives(startup);
+    loadLocomotives(startup.locomotives);
     loadAccessories(startup);
     routeFile_ = startup.routes.value_or(cs2config::RouteFile{});
     routes_.clear();
@@ -14,11 +14,22 @@ void RailwayState::load(const station::StartupResult& startup) {
     loadDevices(startup);
 }
 
-void RailwayState::loadLocomotives(const station::StartupResult& startup) {
+void RailwayState::replaceLocomotiveFile(const cs2config::LocomotiveFile& file) {
+    // A locomotive that left the file goes; one only the bus showed stays, as after a start-up.
+    Registry<std::uint32_t, Locomotive> kept;
+    for (const Locomotive& loco : locomotives_.items())
+        if (!loco.inLayout() || file.find(loco.id().value()))
+            kept.put(loco.id().value(), loco);
+    locomotives_ = std::move(kept);
+    loadLocomotives(file);
+}
+
+void RailwayState::loadLocomotives(const std::optional<cs2config::LocomotiveFile>& file) {
+    locomotiveFile_ = file;
     Registry<std::uint32_t, Locomotive> seen = std::move(locomotives_);
     locomotives_.clear();
-    if (startup.locomotives)
-        for (const cs2config::Locomotive& record : startup.locomotives->locomotives) {
+    if (file)
+        for (const cs2config::Locomotive& record : file->locomotives) {
             if (record.isEmpty())
                 continue;
             Locomotive& loco = locomotives_.put(record.uid, Locomotive::fromFile(record));

@@ -49,6 +49,12 @@ public:
     const Registry<std::int64_t, Route>& routes() const { return routes_; }
     Registry<std::int64_t, Route>& routes() { return routes_; }
     const cs2config::RouteFile& routeFile() const { return routeFile_; }
+    // lokomotive.cs2 as the station sent it (or as last edited), null when the station sent none.
+    const cs2config::LocomotiveFile* locomotiveFile() const {
+        return locomotiveFile_ ? &*locomotiveFile_ : nullptr;
+    }
+    // Takes an edited lokomotive.cs2: the locomotives follow it, keeping the states the bus confirmed.
+    void replaceLocomotiveFile(const cs2config::LocomotiveFile& file);
     const Registry<std::uint32_t, Device>& devices() const { return devices_; }
     Registry<std::uint32_t, Device>& devices() { return devices_; }
     const TrackLayout& layout() const { return layout_; }
@@ -57,7 +63,7 @@ public:
     std::optional<int> addressPosition(std::int64_t address) const;
 
 private:
-    void loadLocomotives(const station::StartupResult& startup);
+    void loadLocomotives(const std::optional<cs2config::LocomotiveFile>& file);
     void loadAccessories(const station::StartupResult& startup);
     void loadContacts();
     void loadDevices(const station::StartupResult& startup);
@@ -81,6 +87,7 @@ private:
     Registry<ContactKey, FeedbackContact> contacts_;
     Registry<std::int64_t, Route> routes_;
     cs2config::RouteFile routeFile_;
+    std::optional<cs2config::LocomotiveFile> locomotiveFile_;
     Registry<std::uint32_t, Device> devices_;
     TrackLayout layout_;
     std::optional<station::PowerState> power_;

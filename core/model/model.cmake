@@ -5,6 +5,8 @@ target_sources(stellwerk-core PRIVATE
     model/Device.cpp
     model/FeedbackContact.cpp
     model/Locomotive.cpp
+    model/Programmer.cpp
+    model/Programmer.h
     model/Railway.cpp
     model/Railway.h
     model/RailwayRoutes.cpp

@@ -11,11 +11,15 @@ bool isMfxRange(std::uint8_t range) {
 
 } // namespace
 
-MfxRegistry::MfxRegistry(const StationLayout& layout, const StationState& state) : state_(state) {
+MfxRegistry::MfxRegistry(const StationLayout& layout, const StationState& state,
+                         const std::vector<std::uint32_t>& newDecoders)
+    : state_(state) {
     for (const cs2config::Locomotive& loco : layout.locomotives().locomotives)
         if (loco.decoder == cs2config::LocomotiveDecoder::Mfx && loco.mfxUid != 0 &&
             loco.mfxUid != 0xFFFFFFFF)
             decoders_[loco.mfxUid] = std::uint16_t(loco.sid);
+    for (const std::uint32_t uid : newDecoders)
+        decoders_.try_emplace(uid, std::uint16_t(0));
 }
 
 bool MfxRegistry::handle(const cs2::Message& m, Outbox& out) {
@@ -33,14 +37,19 @@ bool MfxRegistry::handle(const cs2::Message& m, Outbox& out) {
     return false;
 }
 
-// Forms 1 and 2 (DLC 0/1): a whole cycle; one decoder per run. The last step is sent with and
-// without the ASK ratio; no decoder found: DLC 0.
+// Forms 1 and 2 (DLC 0/1): a whole cycle; one decoder per run. The steps are reported in form 3 (DLC 5:
+// the UID bits found so far and the range, "zur Anzeige der MFX Erkennung"); the last step (range 32)
+// is sent with and without the ASK ratio; no decoder found: DLC 0.
 void MfxRegistry::discover(const cs2::LocoDiscovery& request, const cs2::Message& m, Outbox& out) {
     const bool mfxAsked = !request.range || *request.range == FullRange || *request.range == 0;
     const auto found = mfxAsked && mfxEnabled() ? firstUnbound() : std::nullopt;
     if (!found) {
         out.respond(cs2::LocoDiscovery{}, m.prio);
         return;
+    }
+    for (std::uint8_t range = 1; range < FullRange; ++range) {
+        const std::uint32_t known = *found & (~std::uint32_t(0) << (32 - range));
+        out.respond(cs2::LocoDiscovery{known, range, std::nullopt}, m.prio);
     }
     out.respond(cs2::LocoDiscovery{*found, FullRange, AskRatio}, m.prio);
     out.respond(cs2::LocoDiscovery{*found, FullRange, std::nullopt}, m.prio);

@@ -12,14 +12,16 @@ namespace stellwerk::sim {
 
 // The mfx decoders on the simulated track (the layout's mfx locomotives) and which session id
 // each is bound to: answers discovery (3.1), bind (3.2) and verify (3.3). Locomotives with a
-// `.sid` in lokomotive.cs2 start bound, as on a station that registered them before; the others
-// wait to be discovered.
+// `.sid` in lokomotive.cs2 start bound, as on a station that registered them before; the others, and
+// the decoders `newDecoders` puts on the track (locomotives no station has seen yet), wait to be
+// discovered.
 class MfxRegistry {
 public:
     static constexpr std::uint8_t AskRatio = 0xD1; // the document's example value
     static constexpr std::uint8_t FullRange = 32;
 
-    MfxRegistry(const StationLayout& layout, const StationState& state);
+    MfxRegistry(const StationLayout& layout, const StationState& state,
+                const std::vector<std::uint32_t>& newDecoders = {});
 
     bool handle(const cs2::Message& message, Outbox& out);
 

@@ -47,9 +47,9 @@ class SimulatedStation::Private {
 public:
     Private(StationLayout stationLayout, const Options& options)
         : layout(std::move(stationLayout)), identity(identityFrom(options)), hashGuard(options.uid),
-          system(state, identity), locos(state), mfx(layout, state), programming(layout, state, mfx),
-          accessories(layout, state), feedback(state, identity), devices(state, identity),
-          configData(layout, state) {
+          system(state, identity), locos(state), mfx(layout, state, options.newMfxDecoders),
+          programming(layout, state, mfx), accessories(layout, state), feedback(state, identity),
+          devices(state, identity), configData(layout, state) {
         state.power = options.power;
         restoreLocomotives(layout, state);
     }

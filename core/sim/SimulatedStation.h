@@ -29,6 +29,8 @@ public:
         std::uint32_t gleisboxUid = 0x47431001; // its UID
         std::uint16_t hash = 0;                 // 0: derived from uid as the document says
         Power power = Power::Stopped;           // track power at start (a CS2 starts in STOP)
+        // mfx decoders on the track that no station registered yet: discovery finds them (UIDs).
+        std::vector<std::uint32_t> newMfxDecoders{};
     };
 
     explicit SimulatedStation(StationLayout layout, QObject* parent = nullptr);

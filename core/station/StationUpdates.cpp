@@ -19,7 +19,7 @@ cs2::Direction directionOf(std::uint8_t value) {
 bool StationUpdates::empty() const {
     return speeds.empty() && directions.empty() && functions.empty() && accessories.empty() &&
            contacts.empty() && power.empty() && overloads.empty() && readings.empty() && devices.empty() &&
-           !configurationChanged;
+           discoveries.empty() && !configurationChanged;
 }
 
 void StationUpdates::clear() {
@@ -32,6 +32,7 @@ void StationUpdates::clear() {
     overloads.clear();
     readings.clear();
     devices.clear();
+    discoveries.clear();
     configurationChanged = false;
 }
 
@@ -63,6 +64,10 @@ void StationEventCollector::observe(const cs2::Message& message) {
                    [&](const cs2::Ping& m) {
                        if (answer && m.identity)
                            u.devices.push_back(*m.identity);
+                   },
+                   [&](const cs2::LocoDiscovery& m) {
+                       if (answer)
+                           u.discoveries.push_back(m);
                    },
                    [&](const cs2::ConfigDataStream& m) {
                        if (m.form == cs2::ConfigDataStream::Form::BroadcastHeader)

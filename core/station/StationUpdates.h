@@ -76,7 +76,9 @@ struct StationUpdates {
     std::vector<OverloadReport> overloads;
     std::vector<ReadingValue> readings;
     std::vector<cs2::DeviceIdentity> devices; // ping answers
-    bool configurationChanged = false;        // a broadcast config stream (DLC 7 header) began
+    // Discovery answers (3.1): steps of an mfx search, a found decoder (range 32), or none (no UID).
+    std::vector<cs2::LocoDiscovery> discoveries;
+    bool configurationChanged = false; // a broadcast config stream (DLC 7 header) began
 
     bool empty() const;
     void clear();

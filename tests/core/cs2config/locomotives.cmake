@@ -1,6 +1,7 @@
 # locomotives tests (tests/core/cs2config)
 target_sources(stellwerk-core-tests PRIVATE
     cs2config/LocomotiveDocumentExampleTest.cpp
+    cs2config/LocomotiveEditorTest.cpp
     cs2config/LocomotiveFileTest.cpp
     cs2config/LocomotiveFuzzTest.cpp
     cs2config/LocomotiveStateFileTest.cpp

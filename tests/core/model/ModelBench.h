@@ -173,8 +173,9 @@ inline sim::SimulatedStation::Options stationOptions() {
 // The simulated station, the session on the app's end of the pair and the railway, joined and open.
 class ModelBench {
 public:
-    explicit ModelBench(sim::StationLayout layout = inlineLayout())
-        : station(std::move(layout), stationOptions()), session(appEnd, fastSettings()), railway(session) {
+    explicit ModelBench(sim::StationLayout layout = inlineLayout(),
+                        sim::SimulatedStation::Options options = stationOptions())
+        : station(std::move(layout), options), session(appEnd, fastSettings()), railway(session) {
         can::LoopbackTransport::join(stationEnd, appEnd);
         QObject::connect(&station, &sim::SimulatedStation::framesEmitted, &stationEnd,
                          [this](const std::vector<cs2::CanFrame>& frames) { stationEnd.sendBatch(frames); });

@@ -9,9 +9,25 @@ using Frames = std::vector<CanFrame>;
 
 TEST(MfxRegistration, FullDiscoveryFindsTheUnboundDecoder) {
     StationProbe probe;
+    const Frames answers = probe.send("00024711 1 20");
+    ASSERT_EQ(answers.size(), 33u);
+    // The steps of the search (form 3, DLC 5): the UID bits known so far and the range.
+    EXPECT_EQ(answers[0], probe.answer("00024711 5 80 00 00 00 01"));
+    EXPECT_EQ(answers[15], probe.answer("00024711 5 FF FA 00 00 10"));
+    EXPECT_EQ(answers[30], probe.answer("00024711 5 FF FA 8C 42 1F"));
     // The last step comes with and without the ASK ratio.
-    EXPECT_EQ(probe.send("00024711 1 20"), (Frames{probe.answer("00024711 6 FF FA 8C 43 20 D1"),
-                                                   probe.answer("00024711 5 FF FA 8C 43 20")}));
+    EXPECT_EQ(answers[31], probe.answer("00024711 6 FF FA 8C 43 20 D1"));
+    EXPECT_EQ(answers[32], probe.answer("00024711 5 FF FA 8C 43 20"));
+}
+
+TEST(MfxRegistration, ANewDecoderOnTheTrackIsFoundAfterTheLayoutsOwn) {
+    SimulatedStation::Options options = StationProbe::defaultOptions();
+    options.newMfxDecoders = {0x7A3C1E10};
+    StationProbe probe(options);
+    probe.send("00044711 6 FF FA 8C 43 00 07"); // the layout's unbound decoder is registered
+    const Frames answers = probe.send("00024711 1 20");
+    ASSERT_FALSE(answers.empty());
+    EXPECT_EQ(answers.back(), probe.answer("00024711 5 7A 3C 1E 10 20"));
 }
 
 TEST(MfxRegistration, DiscoverBindVerifyThenDriveOnTheNewSid) {
