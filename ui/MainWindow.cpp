@@ -10,7 +10,9 @@
 #include "LanguageMenu.h"
 #include "LanguageSettings.h"
 #include "LayoutOverview.h"
+#include "LocomotivePanel.h"
 #include "PowerStatus.h"
+#include "ProgrammingPanel.h"
 #include "StartupProgress.h"
 #include "StatusPanel.h"
 #include "StopGoButton.h"
@@ -65,6 +67,13 @@ void MainWindow::createPanels() {
     setCentralWidget(m_layoutOverview);
     m_turnoutPanel = new TurnoutPanel(this);
     m_workspace->addPanel(m_turnoutPanel, Qt::LeftDockWidgetArea);
+    m_locomotivePanel = new LocomotivePanel(this);
+    m_workspace->addPanel(m_locomotivePanel, Qt::LeftDockWidgetArea, m_turnoutPanel);
+    m_programmingPanel = new ProgrammingPanel(this);
+    m_workspace->addPanel(m_programmingPanel, Qt::LeftDockWidgetArea, m_turnoutPanel);
+    // A decoder registered on the programming page becomes a locomotive of the list at once.
+    connect(m_programmingPanel, &ProgrammingPanel::decoderBound, m_locomotivePanel,
+            &LocomotivePanel::addBoundDecoder);
     m_statusPanel = new StatusPanel(this);
     m_workspace->addPanel(m_statusPanel, Qt::RightDockWidgetArea);
     m_busMonitor = new BusMonitorPanel(this);
@@ -72,6 +81,7 @@ void MainWindow::createPanels() {
     m_frameDecoder = new FrameDecoderPanel(this);
     m_workspace->addPanel(m_frameDecoder, Qt::BottomDockWidgetArea, m_busMonitor);
     m_workspace->showPanel(m_busMonitor);
+    m_workspace->showPanel(m_turnoutPanel);
 }
 
 // The STOP / GO key and the connection, always in reach; the toolbar cannot be hidden by accident.
@@ -128,6 +138,8 @@ void MainWindow::setRailway(model::Railway* railway) {
     m_layoutOverview->setRailway(railway);
     m_statusPanel->setRailway(railway);
     m_turnoutPanel->setRailway(railway);
+    m_locomotivePanel->setRailway(railway);
+    m_programmingPanel->setRailway(railway);
     m_stopGo->setRailway(railway);
     m_power->setRailway(railway);
 }
@@ -222,6 +234,8 @@ void MainWindow::retranslateDocks() {
             dock->setWindowTitle(text);
     };
     title(m_turnoutPanel, tr("Keyboard"));
+    title(m_locomotivePanel, tr("Locomotives"));
+    title(m_programmingPanel, tr("Programming"));
     title(m_statusPanel, tr("Status"));
     title(m_busMonitor, tr("Bus monitor"));
     title(m_frameDecoder, tr("Frame decoder"));

@@ -21,7 +21,9 @@ class EmergencyStopKeys;
 class FrameDecoderPanel;
 class LanguageMenu;
 class LayoutOverview;
+class LocomotivePanel;
 class PowerStatus;
+class ProgrammingPanel;
 class StartupProgress;
 class StatusPanel;
 class StopGoButton;
@@ -46,6 +48,8 @@ public:
     StatusPanel* statusPanel() const { return m_statusPanel; }
     BusMonitorPanel* busMonitor() const { return m_busMonitor; }
     TurnoutPanel* turnoutPanel() const { return m_turnoutPanel; }
+    LocomotivePanel* locomotivePanel() const { return m_locomotivePanel; }
+    ProgrammingPanel* programmingPanel() const { return m_programmingPanel; }
     StopGoButton* stopGoButton() const { return m_stopGo; }
 
     // The railway the panels show and STOP / GO acts on (null: none); see RailwayBinding.
@@ -83,6 +87,8 @@ private:
     StatusPanel* m_statusPanel = nullptr;
     BusMonitorPanel* m_busMonitor = nullptr;
     TurnoutPanel* m_turnoutPanel = nullptr;
+    LocomotivePanel* m_locomotivePanel = nullptr;
+    ProgrammingPanel* m_programmingPanel = nullptr;
     QToolBar* m_toolBar = nullptr;
     StopGoButton* m_stopGo = nullptr;
     EmergencyStopKeys* m_stopKeys = nullptr;
