@@ -9,6 +9,7 @@
 #include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLabel>
+#include <QScrollArea>
 #include <QShortcut>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -40,18 +41,24 @@ TurnoutPanel::TurnoutPanel(QWidget* parent) : QWidget(parent) {
     m_emptyText->setAlignment(Qt::AlignCenter);
     m_emptyText->setEnabled(false);
     layout->addWidget(m_emptyText);
-    m_keyboard = new QWidget(this);
-    auto* grid = new QGridLayout(m_keyboard);
+    // The keys keep their size; a short dock scrolls them instead of squeezing the names away.
+    m_keyboard = new QScrollArea(this);
+    m_keyboard->setWidgetResizable(true);
+    m_keyboard->setFrameShape(QFrame::NoFrame);
+    m_keyboard->installEventFilter(this);
+    auto* keys = new QWidget(m_keyboard);
+    m_keyboard->setWidget(keys);
+    auto* grid = new QGridLayout(keys);
     grid->setContentsMargins(0, 0, 0, 0);
     grid->setSpacing(8);
     for (int i = 0; i < KeysPerPage; ++i) {
-        auto* key = new TurnoutKey(m_keyboard);
+        auto* key = new TurnoutKey(keys);
         connect(key, &TurnoutKey::switchRequested, this, &TurnoutPanel::requestSwitch);
         grid->addWidget(key, i / KeysPerRow, i % KeysPerRow);
         m_keys.push_back(key);
     }
-    layout->addWidget(m_keyboard);
-    layout->addStretch(1);
+    grid->setRowStretch(KeysPerPage / KeysPerRow, 1);
+    layout->addWidget(m_keyboard, 1);
     // Page Up/Down wherever the focus is inside the panel (keys, page picker).
     auto* down = new QShortcut(QKeySequence(Qt::Key_PageDown), this, this, &TurnoutPanel::nextPage);
     auto* up = new QShortcut(QKeySequence(Qt::Key_PageUp), this, this, &TurnoutPanel::previousPage);
@@ -228,6 +235,18 @@ void TurnoutPanel::updatePagePicker() {
         m_pagePicker->addItem(
             tr("Page %1: %2–%3").arg(page + 1).arg(page * KeysPerPage + 1).arg((page + 1) * KeysPerPage));
     m_pagePicker->setCurrentIndex(m_page);
+}
+
+// The scroll area would use Page Up/Down to scroll; on the keyboard they turn pages.
+bool TurnoutPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == m_keyboard && event->type() == QEvent::KeyPress) {
+        const int key = static_cast<QKeyEvent*>(event)->key();
+        if (key == Qt::Key_PageDown || key == Qt::Key_PageUp) {
+            keyPressEvent(static_cast<QKeyEvent*>(event));
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 void TurnoutPanel::keyPressEvent(QKeyEvent* event) {

@@ -9,6 +9,7 @@
 
 class QComboBox;
 class QLabel;
+class QScrollArea;
 class QToolButton;
 
 namespace stellwerk::model {
@@ -54,6 +55,7 @@ signals:
 
 protected:
     void keyPressEvent(QKeyEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
     void changeEvent(QEvent* event) override;
 
 private:
@@ -74,7 +76,7 @@ private:
     QComboBox* m_pagePicker = nullptr;
     QLabel* m_summary = nullptr;
     QLabel* m_emptyText = nullptr;
-    QWidget* m_keyboard = nullptr; // the grid of keys, hidden without a railway
+    QScrollArea* m_keyboard = nullptr; // the grid of keys, hidden without a railway
     QList<TurnoutKey*> m_keys;
     int m_page = 0;
     int m_pageCount = MinimumPages;
