@@ -181,9 +181,15 @@ void Railway::toggleFunction(std::uint32_t loco, int function) {
 }
 
 void Railway::emergencyStop(std::uint32_t loco) {
+    QPointer<Railway> self(this);
     locoCommand(loco, LocomotiveControl::EmergencyStop, -1,
                 {0, false, 0, cs2::LocoEmergencyStop{cs2::LocId(loco)}},
-                QStringLiteral("%1: emergency stop").arg(locoName(loco)));
+                QStringLiteral("%1: emergency stop").arg(locoName(loco)), [self, loco] {
+                    // Document 2.4: the locomotive stands; the station does not announce its speed.
+                    Locomotive* found = self ? self->state_.locomotives().find(loco) : nullptr;
+                    if (found && found->confirmSpeed(0))
+                        emit self->locomotivesChanged({loco});
+                });
 }
 
 void Railway::stop() {

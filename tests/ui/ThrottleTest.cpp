@@ -137,6 +137,31 @@ TEST_F(ThrottleTest, AMomentaryFunctionIsOnOnlyWhileItsKeyIsHeld) {
     ASSERT_TRUE(waitFor([&] { return !key(Horn)->isChecked(); }));
 }
 
+TEST_F(ThrottleTest, ATimedFunctionSwitchesOffAgainByItself) {
+    constexpr quint32 Ice3 = 0x4002;
+    constexpr int TimedHorn = 3; // ICE 3's F3: the horn for 2 (..dauer=2)
+    throttle.setLocomotive(Ice3);
+    ASSERT_NE(key(TimedHorn), nullptr);
+    EXPECT_TRUE(key(TimedHorn)->toolTip().startsWith(QStringLiteral("F3: Horn (on for 2 s)")));
+    const model::Locomotive& ice3 = *otherRailways.railway()->locomotive(Ice3);
+    QTest::mouseClick(key(TimedHorn), Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return ice3.functionOn(TimedHorn); }));
+    ASSERT_TRUE(waitFor([&] { return !ice3.functionOn(TimedHorn); }));
+    ASSERT_TRUE(waitFor([&] { return !key(TimedHorn)->isChecked(); }));
+}
+
+TEST_F(ThrottleTest, StopLocoStopsOnlyThisLocomotive) {
+    throttle.speedSlider()->setValue(60);
+    ASSERT_TRUE(waitFor([&] { return mine().speed() == 600; }));
+    otherRailways.railway()->setSpeed(Br218, 400);
+    ASSERT_TRUE(waitFor([&] { return railways.railway()->locomotive(Br218)->speed() == 400; }));
+    QTest::mouseClick(throttle.emergencyStopButton(), Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return mine().speed() == 0 && throttle.speedSlider()->value() == 0; }));
+    EXPECT_EQ(throttle.speedText(), QStringLiteral("0 km/h"));
+    EXPECT_EQ(railways.railway()->locomotive(Br218)->speed(), 400);
+    EXPECT_EQ(otherRailways.railway()->locomotive(Br218)->speed(), 400);
+}
+
 TEST_F(ThrottleTest, WhatAnotherControllerDoesShowsInTheThrottle) {
     otherRailways.railway()->setSpeed(V100, 300);
     ASSERT_TRUE(waitFor([&] { return throttle.speedSlider()->value() == 30; }));

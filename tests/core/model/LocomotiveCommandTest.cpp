@@ -67,14 +67,19 @@ TEST(LocomotiveCommands, AnUnansweredCommandFailsWithTheReasonForItsControl) {
     EXPECT_FALSE(bench.railway.locomotive(Br86)->functionOn(0));
 }
 
-TEST(LocomotiveCommands, AnEmergencyStopIsAnnouncedForItsLocomotive) {
+// Document 2.4: an emergency stop stops the locomotive at once; the station does not announce speed 0.
+TEST(LocomotiveCommands, AnEmergencyStopIsAnnouncedAndLeavesTheLocomotiveStanding) {
     ModelBench bench;
     ASSERT_TRUE(bench.start());
+    bench.railway.setSpeed(Br86, 600);
+    ASSERT_TRUE(waitFor([&] { return bench.railway.locomotive(Br86)->speed() == 600; }));
     QSignalSpy acknowledged(&bench.railway, &Railway::locomotiveCommandAcknowledged);
-    bench.railway.emergencyStop(V100);
+    bench.railway.emergencyStop(Br86);
     ASSERT_TRUE(waitFor([&] { return acknowledged.count() == 1; }));
-    EXPECT_EQ(acknowledged.first().at(0).toUInt(), V100);
+    EXPECT_EQ(acknowledged.first().at(0).toUInt(), Br86);
     EXPECT_EQ(acknowledged.first().at(1).value<Control>(), Control::EmergencyStop);
+    EXPECT_EQ(bench.railway.locomotive(Br86)->speed(), 0);
+    EXPECT_EQ(bench.station.loco(Br86)->speed, 0);
 }
 
 // Chapter 8.1.3: `.tachomax` is the speedometer's full scale; `..typ` the function icon; a CS2 marks a
