@@ -1,11 +1,11 @@
 #include "FunctionPad.h"
 
 #include "FunctionIcons.h"
+#include "StyleSheetSupport.h"
 #include "model/Railway.h"
 
 #include <QEvent>
 #include <QGridLayout>
-#include <QStyle>
 #include <QTimer>
 #include <QToolButton>
 #include <algorithm>
@@ -20,27 +20,12 @@ const char* const UnacknowledgedProperty = "unacknowledged";
 
 QString padStyle() {
     return QStringLiteral(
-        "QToolButton { border: 1px solid palette(mid); border-radius: 4px; padding: 2px;"
-        " background: palette(button); min-width: 44px; min-height: 44px; }"
-        "QToolButton:checked { background: palette(highlight); color: palette(highlighted-text);"
-        " border-color: palette(highlight); }"
-        "QToolButton[unacknowledged=\"true\"] { border: 2px solid #e08a00; }");
-}
-
-// Sets the style sheet again after a palette change; setting it changes the palette once more.
-void restyle(QWidget* widget, const QString& sheet) {
-    static bool restyling = false;
-    if (restyling)
-        return;
-    restyling = true;
-    widget->setStyleSheet(QString());
-    widget->setStyleSheet(sheet);
-    restyling = false;
-}
-
-void repolish(QWidget* widget) {
-    widget->style()->unpolish(widget);
-    widget->style()->polish(widget);
+               "QToolButton { border: 1px solid palette(mid); border-radius: 4px; padding: 2px;"
+               " background: palette(button); min-width: 44px; min-height: 44px; }"
+               "QToolButton:checked { background: palette(highlight); color: palette(highlighted-text);"
+               " border-color: palette(highlight); }"
+               "QToolButton[unacknowledged=\"true\"] { border: 2px solid %1; }")
+        .arg(QLatin1String(WarningOutline));
 }
 
 } // namespace

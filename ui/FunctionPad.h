@@ -44,6 +44,8 @@ public:
     bool isMarked(int function) const { return m_marks.contains(function); }
 
     QToolButton* button(int function) const;
+    // No keys: no locomotive, or one the railway does not know (yet).
+    bool isEmpty() const { return m_keys.empty(); }
     void retranslate();
 
 protected:

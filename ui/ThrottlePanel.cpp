@@ -107,6 +107,10 @@ bool ThrottlePanel::focusThrottle(int number) {
     return true;
 }
 
+QString ThrottlePanel::emptyText() const {
+    return m_emptyText->isHidden() ? QString() : m_emptyText->text();
+}
+
 void ThrottlePanel::renumber() {
     for (qsizetype i = 0; i < m_throttles.size(); ++i)
         m_throttles[i]->setNumber(int(i) + 1);

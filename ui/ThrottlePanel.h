@@ -37,6 +37,8 @@ public:
     const QList<ThrottleWidget*>& throttles() const { return m_throttles; }
     // Puts the keyboard on throttle `number` (1-based); false if there is none.
     bool focusThrottle(int number);
+    // What the page says while it has nothing to drive; empty while throttles drive.
+    QString emptyText() const;
 
 protected:
     void changeEvent(QEvent* event) override;

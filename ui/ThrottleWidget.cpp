@@ -3,6 +3,7 @@
 #include "FunctionPad.h"
 #include "LocomotiveTableModel.h"
 #include "SpeedScale.h"
+#include "StyleSheetSupport.h"
 
 #include <QComboBox>
 #include <QEvent>
@@ -12,7 +13,6 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSlider>
-#include <QStyle>
 #include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -29,31 +29,16 @@ const char* const UnacknowledgedProperty = "unacknowledged";
 
 QString throttleStyle() {
     return QStringLiteral(
-        "QFrame#speedFrame { border: 2px solid transparent; border-radius: 4px; }"
-        "QFrame#speedFrame[unacknowledged=\"true\"] { border-color: #e08a00; }"
-        "QPushButton[unacknowledged=\"true\"] { border: 2px solid #e08a00; border-radius: 4px; padding: 5px; "
-        "}"
-        "QPushButton#emergencyStop { background: #c82c2c; color: white; font-weight: bold;"
-        " border-radius: 4px; padding: 6px; }"
-        "QPushButton#emergencyStop:pressed { background: #9e1f1f; }"
-        "QPushButton#emergencyStop:disabled { background: palette(mid); color: palette(window); }"
-        "QPushButton#emergencyStop[unacknowledged=\"true\"] { border: 3px solid #e08a00; }");
-}
-
-// Sets the style sheet again after a palette change; setting it changes the palette once more.
-void restyle(QWidget* widget, const QString& sheet) {
-    static bool restyling = false;
-    if (restyling)
-        return;
-    restyling = true;
-    widget->setStyleSheet(QString());
-    widget->setStyleSheet(sheet);
-    restyling = false;
-}
-
-void repolish(QWidget* widget) {
-    widget->style()->unpolish(widget);
-    widget->style()->polish(widget);
+               "QFrame#speedFrame { border: 2px solid transparent; border-radius: 4px; }"
+               "QFrame#speedFrame[unacknowledged=\"true\"] { border-color: %1; }"
+               "QPushButton[unacknowledged=\"true\"] { border: 2px solid %1; border-radius: 4px; padding: "
+               "5px; }"
+               "QPushButton#emergencyStop { background: #c82c2c; color: white; font-weight: bold;"
+               " border-radius: 4px; padding: 6px; }"
+               "QPushButton#emergencyStop:pressed { background: #9e1f1f; }"
+               "QPushButton#emergencyStop:disabled { background: palette(mid); color: palette(window); }"
+               "QPushButton#emergencyStop[unacknowledged=\"true\"] { border: 3px solid %1; }")
+        .arg(QLatin1String(WarningOutline));
 }
 
 int digitOf(const QKeyEvent* event) {
@@ -234,7 +219,7 @@ void ThrottleWidget::locomotivesChanged(const QList<quint32>& ids) {
     if (unknown)
         fillChoice(); // a locomotive another controller drives appeared on the bus
     if (ids.contains(m_loco)) {
-        if (m_functions->button(0) == nullptr && m_railway->locomotive(m_loco))
+        if (m_functions->isEmpty() && m_railway->locomotive(m_loco))
             showLocomotive();
         showState();
     }

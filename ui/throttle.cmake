@@ -4,6 +4,7 @@ target_sources(stellwerk-ui PRIVATE
     FunctionIcons.cpp FunctionIcons.h
     FunctionPad.cpp FunctionPad.h
     SpeedScale.cpp SpeedScale.h
+    StyleSheetSupport.cpp StyleSheetSupport.h
     ThrottlePanel.cpp ThrottlePanel.h
     ThrottleSettings.cpp ThrottleSettings.h
     ThrottleWidget.cpp ThrottleWidget.h

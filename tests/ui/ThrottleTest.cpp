@@ -269,6 +269,21 @@ TEST_F(ThrottlePanelTest, RemembersWhichLocomotivesWereOpen) {
     EXPECT_EQ(restored.throttles()[1]->locomotive(), Br218);
 }
 
+TEST_F(ThrottlePanelTest, SaysWhatToDoWhileThereIsNothingToDrive) {
+    ThrottlePanel panel;
+    EXPECT_TRUE(panel.emptyText().startsWith(QStringLiteral("No station connected")))
+        << panel.emptyText().toStdString();
+    panel.setRailway(railways.railway());
+    EXPECT_TRUE(panel.emptyText().startsWith(QStringLiteral("No throttle open")))
+        << panel.emptyText().toStdString();
+    ThrottleWidget* throttle = panel.addThrottle();
+    EXPECT_EQ(panel.emptyText(), QString());
+    EXPECT_EQ(throttle->locomotiveChoice()->currentText(), QStringLiteral("Choose a locomotive…"));
+    EXPECT_FALSE(throttle->speedSlider()->isEnabled()) << "nothing to drive yet";
+    panel.removeThrottle(throttle);
+    EXPECT_TRUE(panel.emptyText().startsWith(QStringLiteral("No throttle open")));
+}
+
 TEST_F(ThrottlePanelTest, AltAndANumberPutTheKeyboardOnThatThrottle) {
     ThrottlePanel panel;
     panel.setRailway(railways.railway());
