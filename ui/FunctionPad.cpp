@@ -80,6 +80,7 @@ void FunctionPad::addKey(const model::LocomotiveFunction& function) {
     auto* button = new QToolButton(this);
     button->setObjectName(QStringLiteral("function%1").arg(function.number));
     button->setCheckable(true);
+    button->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     button->setFocusPolicy(Qt::NoFocus); // Space stays the layout's STOP key
     button->setText(QStringLiteral("F%1").arg(function.number));
     const int index = int(m_keys.size());

@@ -37,7 +37,7 @@ ThrottlePanel::ThrottlePanel(QWidget* parent) : QWidget(parent) {
     m_emptyText->setObjectName(QStringLiteral("throttlesEmpty"));
     m_emptyText->setAlignment(Qt::AlignCenter);
     m_emptyText->setEnabled(false);
-    layout->addWidget(m_emptyText);
+    layout->addWidget(m_emptyText, 1);
 
     m_scroll = new QScrollArea(this);
     m_scroll->setWidgetResizable(true);
@@ -129,6 +129,8 @@ void ThrottlePanel::updateEmptyState() {
     m_add->setEnabled(m_throttles.size() < ThrottleSettings::MaximumThrottles);
     m_emptyText->setVisible(!m_railway || m_throttles.isEmpty());
     m_scroll->setVisible(!m_throttles.isEmpty());
+    // Alone, the text sits in the middle of the page; above throttles, it is one line.
+    static_cast<QBoxLayout*>(layout())->setStretchFactor(m_emptyText, m_throttles.isEmpty() ? 1 : 0);
     retranslate();
 }
 

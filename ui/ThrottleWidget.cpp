@@ -95,7 +95,7 @@ QWidget* ThrottleWidget::createHeader() {
     m_choice->setObjectName(QStringLiteral("locomotiveChoice"));
     m_choice->setFocusPolicy(Qt::ClickFocus);
     m_choice->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_choice->setMinimumContentsLength(14);
+    m_choice->setMinimumContentsLength(20);
     connect(m_choice, &QComboBox::activated, this, &ThrottleWidget::choose);
     m_close = new QToolButton(header);
     m_close->setObjectName(QStringLiteral("closeThrottle"));
@@ -188,8 +188,12 @@ void ThrottleWidget::fillChoice() {
                 QStringLiteral("%1 (%2)").arg(loco.displayName(), LocomotiveTableModel::addressText(loco)),
                 loco.id().value());
     const int index = m_choice->findData(m_loco);
-    if (index < 0 && m_loco != 0) // remembered, but not (yet) on this station
-        m_choice->addItem(tr("Locomotive 0x%1 (not on this station)").arg(m_loco, 0, 16), m_loco);
+    if (index < 0 && m_loco != 0) { // remembered, but not (yet) on this station
+        const bool loaded = m_railway && !m_railway->state().locomotives().items().empty();
+        m_choice->addItem(loaded ? tr("Locomotive 0x%1 (not on this station)").arg(m_loco, 0, 16)
+                                 : tr("Locomotive 0x%1 (waiting for the station)").arg(m_loco, 0, 16),
+                          m_loco);
+    }
     m_choice->setCurrentIndex(std::max(m_choice->findData(m_loco), 0));
 }
 

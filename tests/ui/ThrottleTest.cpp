@@ -267,6 +267,10 @@ TEST_F(ThrottlePanelTest, RemembersWhichLocomotivesWereOpen) {
     ASSERT_EQ(restored.throttles().size(), 2);
     EXPECT_EQ(restored.throttles()[0]->locomotive(), V100);
     EXPECT_EQ(restored.throttles()[1]->locomotive(), Br218);
+    QComboBox* first = restored.throttles()[0]->locomotiveChoice();
+    EXPECT_EQ(first->currentText(), QStringLiteral("Locomotive 0x18 (waiting for the station)"));
+    restored.setRailway(railways.railway());
+    EXPECT_EQ(first->currentText(), QStringLiteral("V 100 2023 (MM2 24)"));
 }
 
 TEST_F(ThrottlePanelTest, SaysWhatToDoWhileThereIsNothingToDrive) {
