@@ -1,5 +1,6 @@
 #include "SpeedScale.h"
 
+#include <QEvent>
 #include <QPainter>
 #include <algorithm>
 
@@ -65,6 +66,14 @@ void SpeedScale::paintEvent(QPaintEvent*) {
         painter.drawText(QRect(7, y - textHeight / 2, width() - 7, textHeight),
                          Qt::AlignLeft | Qt::AlignVCenter, texts[i]);
     }
+}
+
+void SpeedScale::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) { // "km/h" is translated when painted
+        updateGeometry();
+        update();
+    }
+    QWidget::changeEvent(event);
 }
 
 } // namespace stellwerk::ui

@@ -70,10 +70,7 @@ ThrottleWidget::ThrottleWidget(QWidget* parent) : QFrame(parent), m_sendTimer(ne
     m_stop = new QPushButton(this);
     m_stop->setObjectName(QStringLiteral("emergencyStop"));
     m_stop->setFocusPolicy(Qt::NoFocus);
-    connect(m_stop, &QPushButton::clicked, this, [this] {
-        if (m_railway && m_loco != 0)
-            m_railway->emergencyStop(m_loco);
-    });
+    connect(m_stop, &QPushButton::clicked, this, &ThrottleWidget::emergencyStop);
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(m_direction, 1);
     buttons->addWidget(m_stop, 1);
@@ -248,6 +245,13 @@ void ThrottleWidget::sliderMoved(int percent) {
     retranslate(); // the speed text follows the slider
 }
 
+void ThrottleWidget::emergencyStop() {
+    m_sendTimer->stop(); // a speed still waiting to be sent must not start the locomotive again
+    m_wantedSpeed = -1;
+    if (m_railway && m_loco != 0)
+        m_railway->emergencyStop(m_loco);
+}
+
 void ThrottleWidget::sendSpeed() {
     if (m_railway && m_loco != 0 && m_wantedSpeed >= 0)
         m_railway->setSpeed(m_loco, m_wantedSpeed);
@@ -382,7 +386,7 @@ void ThrottleWidget::keyPressEvent(QKeyEvent* event) {
             m_railway->reverse(m_loco);
         break;
     case Qt::Key_E:
-        m_railway->emergencyStop(m_loco);
+        emergencyStop();
         break;
     default:
         if (!event->isAutoRepeat())

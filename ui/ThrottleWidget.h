@@ -78,6 +78,7 @@ private:
     void locomotivesChanged(const QList<quint32>& ids);
     void sliderMoved(int percent);
     void sendSpeed();
+    void emergencyStop();
     void commandSent(quint32 loco, Control control, int function);
     void commandAcknowledged(quint32 loco, Control control, int function);
     void commandFailed(quint32 loco, Control control, int function, const QString& reason);

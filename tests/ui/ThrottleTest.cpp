@@ -223,6 +223,10 @@ TEST_F(ThrottleTest, KeysDriveSpeedDirectionAndFunctions) {
     ASSERT_TRUE(waitFor([&] { return !seenByOther().functionOn(Horn); }));
     QTest::keyClick(focus, Qt::Key_R);
     ASSERT_TRUE(waitFor([&] { return seenByOther().direction() == cs2::Direction::Backward; }));
+    QTest::keyClick(focus, Qt::Key_PageUp);
+    ASSERT_TRUE(waitFor([&] { return seenByOther().speed() == 250; })) << "a page is 25 %";
+    QTest::keyClick(focus, Qt::Key_E);
+    ASSERT_TRUE(waitFor([&] { return mine().speed() == 0 && throttle.speedSlider()->value() == 0; }));
 }
 
 TEST_F(ThrottleTest, SpaceAndEscapeStayWithTheWindow) {
