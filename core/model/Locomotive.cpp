@@ -3,6 +3,17 @@
 #include <algorithm>
 
 namespace stellwerk::model {
+namespace {
+
+// `..dauer` decides when it is written; without it, icon bit 7 marks a momentary key (CS2 files).
+cs2config::FunctionTrigger triggerOf(const cs2config::Function& f) {
+    const cs2config::FunctionTrigger trigger = f.trigger();
+    if (trigger == cs2config::FunctionTrigger::Latching && (f.icon & Locomotive::MomentaryIconBit) != 0)
+        return cs2config::FunctionTrigger::Momentary;
+    return trigger;
+}
+
+} // namespace
 
 Locomotive::Locomotive(cs2::LocId id) : id_(id) {}
 
@@ -11,13 +22,15 @@ Locomotive Locomotive::fromFile(const cs2config::Locomotive& record) {
     loco.name_ = QString::fromStdString(record.name);
     loco.decoder_ = record.decoder;
     loco.inLayout_ = true;
+    loco.tachoMax_ = std::max(record.tachoMax, 0);
+    loco.iconName_ = QString::fromStdString(record.icon);
     loco.speed_ = std::uint16_t(std::clamp(record.velocity, 0, int(MaxSpeed)));
     loco.direction_ = record.direction == cs2config::TravelDirection::Backward ? cs2::Direction::Backward
                                                                                : cs2::Direction::Forward;
     for (const cs2config::Function& f : record.functions) {
         if (f.number < 0 || f.number >= MaxFunctions)
             continue;
-        loco.functions_.push_back({f.number, f.icon, f.trigger(), f.value != 0});
+        loco.functions_.push_back({f.number, f.icon, triggerOf(f), f.value != 0, f.timedValue()});
     }
     std::ranges::sort(loco.functions_, {}, &LocomotiveFunction::number);
     return loco;
@@ -82,7 +95,7 @@ bool Locomotive::confirmFunction(int number, bool on) {
     if (it == functions_.end()) {
         // A function the file does not list (another controller switched it): keep it anyway.
         it = functions_.insert(std::ranges::upper_bound(functions_, number, {}, &LocomotiveFunction::number),
-                               LocomotiveFunction{number, 0, cs2config::FunctionTrigger::Latching, false});
+                               LocomotiveFunction{number, 0, cs2config::FunctionTrigger::Latching, false, 0});
     }
     functionsConfirmed_ |= 1U << number;
     if (it->on == on)

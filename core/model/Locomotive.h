@@ -13,9 +13,10 @@ namespace stellwerk::model {
 // One function key of a locomotive as a throttle shows it: its icon, how it triggers, whether it is on.
 struct LocomotiveFunction {
     int number = 0;
-    int icon = 0; // the CS2 icon number (`..typ`)
+    int icon = 0; // the CS2 icon number (`..typ`); bit 7 marks a momentary key (see momentaryIconBit)
     cs2config::FunctionTrigger trigger = cs2config::FunctionTrigger::Latching;
     bool on = false;
+    int duration = 0; // a timed key's `..dauer` as written (the document names no unit), else 0
 };
 
 // A locomotive as the throttles show it: what lokomotive.cs2 says about it, plus the speed, direction
@@ -24,6 +25,8 @@ class Locomotive {
 public:
     static constexpr std::uint16_t MaxSpeed = 1000;
     static constexpr int MaxFunctions = 32;
+    // A CS2 writes a momentary key as its icon number plus 128 when `..dauer` does not say otherwise.
+    static constexpr int MomentaryIconBit = 0x80;
 
     Locomotive() = default;
     // A locomotive seen on the bus but not in lokomotive.cs2 (another controller drives it).
@@ -36,6 +39,13 @@ public:
     // The name to show: the file's name, or "DCC 3" for a locomotive without one.
     QString displayName() const;
     cs2config::LocomotiveDecoder decoder() const { return decoder_; }
+    // The track address and protocol the station drives it with (from its Loc-ID).
+    std::uint32_t address() const { return id_.address(); }
+    cs2::Protocol protocol() const { return id_.protocol(); }
+    // The speedometer's full scale in km/h (`.tachomax`); 0 when the file gives none.
+    int tachoMax() const { return tachoMax_; }
+    // The station's picture of the locomotive (`.icon`, a file name without extension); may be empty.
+    const QString& iconName() const { return iconName_; }
     bool inLayout() const { return inLayout_; }
     const std::vector<LocomotiveFunction>& functions() const { return functions_; }
     const LocomotiveFunction* function(int number) const;
@@ -60,6 +70,8 @@ private:
     QString name_;
     cs2config::LocomotiveDecoder decoder_ = cs2config::LocomotiveDecoder::None;
     bool inLayout_ = false;
+    int tachoMax_ = 0;
+    QString iconName_;
     std::vector<LocomotiveFunction> functions_;
     std::uint16_t speed_ = 0;
     cs2::Direction direction_ = cs2::Direction::Forward;

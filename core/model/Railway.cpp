@@ -120,6 +120,25 @@ void Railway::command(const cs2::Message& message, const QString& what, std::fun
     });
 }
 
+void Railway::locoCommand(std::uint32_t loco, LocomotiveControl control, int function,
+                          const cs2::Message& message, const QString& what, std::function<void()> done) {
+    QPointer<Railway> self(this);
+    emit locomotiveCommandSent(loco, control, function);
+    session_.request(message, [self, loco, control, function, what,
+                               done = std::move(done)](const station::CommandResult& result) {
+        if (!self)
+            return;
+        if (!result.succeeded()) {
+            emit self->locomotiveCommandFailed(loco, control, function, failureReason(result));
+            emit self->problem(commandProblem(what, result));
+            return;
+        }
+        if (done)
+            done();
+        emit self->locomotiveCommandAcknowledged(loco, control, function);
+    });
+}
+
 QString Railway::locoName(std::uint32_t loco) const {
     const Locomotive* found = locomotive(loco);
     return found ? found->displayName() : Locomotive(cs2::LocId(loco)).displayName();
@@ -127,8 +146,8 @@ QString Railway::locoName(std::uint32_t loco) const {
 
 void Railway::setSpeed(std::uint32_t loco, int speed) {
     const auto value = std::uint16_t(std::clamp(speed, 0, int(Locomotive::MaxSpeed)));
-    command({0, false, 0, cs2::LocoSpeed{cs2::LocId(loco), value}},
-            QStringLiteral("%1: speed %2").arg(locoName(loco)).arg(value));
+    locoCommand(loco, LocomotiveControl::Speed, -1, {0, false, 0, cs2::LocoSpeed{cs2::LocId(loco), value}},
+                QStringLiteral("%1: speed %2").arg(locoName(loco)).arg(value));
 }
 
 void Railway::setDirection(std::uint32_t loco, cs2::Direction direction) {
@@ -137,13 +156,14 @@ void Railway::setDirection(std::uint32_t loco, cs2::Direction direction) {
             .arg(locoName(loco), direction == cs2::Direction::Backward ? QStringLiteral("backward")
                                                                        : QStringLiteral("forward"));
     QPointer<Railway> self(this);
-    command({0, false, 0, cs2::LocoDirection{cs2::LocId(loco), std::uint8_t(direction)}}, what,
-            [self, loco, direction] {
-                // The station stopped the locomotive and will not say so (field notes).
-                if (self && self->state_.locomotives().find(loco) &&
-                    self->state_.locomotives().find(loco)->directionSet(direction))
-                    emit self->locomotivesChanged({loco});
-            });
+    locoCommand(loco, LocomotiveControl::Direction, -1,
+                {0, false, 0, cs2::LocoDirection{cs2::LocId(loco), std::uint8_t(direction)}}, what,
+                [self, loco, direction] {
+                    // The station stopped the locomotive and will not say so (field notes).
+                    if (self && self->state_.locomotives().find(loco) &&
+                        self->state_.locomotives().find(loco)->directionSet(direction))
+                        emit self->locomotivesChanged({loco});
+                });
 }
 
 void Railway::reverse(std::uint32_t loco) {
@@ -157,8 +177,10 @@ void Railway::setFunction(std::uint32_t loco, int function, bool on) {
         emit problem(QStringLiteral("%1: there is no function F%2").arg(locoName(loco)).arg(function));
         return;
     }
-    command({0, false, 0, cs2::LocoFunction{cs2::LocId(loco), std::uint8_t(function), std::uint8_t(on), {}}},
-            QStringLiteral("%1: F%2 %3").arg(locoName(loco)).arg(function).arg(on ? "on" : "off"));
+    locoCommand(
+        loco, LocomotiveControl::Function, function,
+        {0, false, 0, cs2::LocoFunction{cs2::LocId(loco), std::uint8_t(function), std::uint8_t(on), {}}},
+        QStringLiteral("%1: F%2 %3").arg(locoName(loco)).arg(function).arg(on ? "on" : "off"));
 }
 
 void Railway::toggleFunction(std::uint32_t loco, int function) {
@@ -167,8 +189,15 @@ void Railway::toggleFunction(std::uint32_t loco, int function) {
 }
 
 void Railway::emergencyStop(std::uint32_t loco) {
-    command({0, false, 0, cs2::LocoEmergencyStop{cs2::LocId(loco)}},
-            QStringLiteral("%1: emergency stop").arg(locoName(loco)));
+    QPointer<Railway> self(this);
+    locoCommand(loco, LocomotiveControl::EmergencyStop, -1,
+                {0, false, 0, cs2::LocoEmergencyStop{cs2::LocId(loco)}},
+                QStringLiteral("%1: emergency stop").arg(locoName(loco)), [self, loco] {
+                    // Document 2.4: the locomotive stands; the station does not announce its speed.
+                    Locomotive* found = self ? self->state_.locomotives().find(loco) : nullptr;
+                    if (found && found->confirmSpeed(0))
+                        emit self->locomotivesChanged({loco});
+                });
 }
 
 void Railway::configureDevice(std::uint32_t uid, std::uint8_t channel, std::uint16_t value) {

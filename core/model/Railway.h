@@ -26,6 +26,10 @@ class Railway final : public QObject {
     Q_OBJECT
 
 public:
+    // The part of a locomotive a command changes, so that a throttle can mark the control it came from.
+    enum class LocomotiveControl : std::uint8_t { Speed, Direction, Function, EmergencyStop };
+    Q_ENUM(LocomotiveControl)
+
     // Create it before the start-up runs to keep the state answers the start-up asks for, then load().
     // The session must outlive the railway.
     explicit Railway(station::StationSession& session, QObject* parent = nullptr);
@@ -97,6 +101,16 @@ signals:
     void routeProgressed(qint64 route, int stepsDone, int stepCount);
     void routeFinished(qint64 route);
     void routeFailed(qint64 route, const QString& message);
+    // A command to a locomotive went out and waits for the station's acknowledgement. `function` is the
+    // function number for LocomotiveControl::Function, else -1. Every sent command ends in exactly one
+    // of locomotiveCommandAcknowledged or locomotiveCommandFailed.
+    void locomotiveCommandSent(quint32 loco, stellwerk::model::Railway::LocomotiveControl control,
+                               int function);
+    void locomotiveCommandAcknowledged(quint32 loco, stellwerk::model::Railway::LocomotiveControl control,
+                                       int function);
+    // The station refused it, did not answer, or it could not be sent; `reason` says which, readably.
+    void locomotiveCommandFailed(quint32 loco, stellwerk::model::Railway::LocomotiveControl control,
+                                 int function, const QString& reason);
     // A readable sentence: a command the station rejected or did not answer, an overload, a failed route.
     void problem(const QString& message);
 
@@ -108,6 +122,9 @@ private:
     void updatePollerSources();
     // Sends a command; `what` names it for the problem message, `done` runs after an acknowledgement.
     void command(const cs2::Message& message, const QString& what, std::function<void()> done = {});
+    // The same for a command to one locomotive's control, announced with the locomotiveCommand signals.
+    void locoCommand(std::uint32_t loco, LocomotiveControl control, int function, const cs2::Message& message,
+                     const QString& what, std::function<void()> done = {});
     void switchForRoute(std::int64_t accessory, int position, std::function<void(const QString&)> done);
     void routeEnded(std::int64_t route);
     void sendSwitching(std::int64_t address, int position, const cs2::Message& command, const QString& what);

@@ -1,0 +1,63 @@
+#pragma once
+
+#include <QList>
+#include <QPointer>
+#include <QWidget>
+#include <cstdint>
+
+class QHBoxLayout;
+class QLabel;
+class QPushButton;
+class QScrollArea;
+
+namespace stellwerk::model {
+class Railway;
+}
+
+namespace stellwerk::ui {
+
+class ThrottleWidget;
+
+// The throttles page: several throttles side by side, added and closed by the user, each driving one
+// locomotive. Alt+1..Alt+9 put the keyboard on throttle 1..9. Which locomotives were open is remembered
+// (ThrottleSettings) and opened again on the next start.
+class ThrottlePanel final : public QWidget {
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(ThrottlePanel)
+
+public:
+    explicit ThrottlePanel(QWidget* parent = nullptr);
+
+    // The railway whose locomotives the throttles drive (null: none).
+    void setRailway(model::Railway* railway);
+
+    // A new throttle at the right, driving `loco` (0: the user picks one); null when all nine are open.
+    ThrottleWidget* addThrottle(std::uint32_t loco = 0);
+    void removeThrottle(ThrottleWidget* throttle);
+    const QList<ThrottleWidget*>& throttles() const { return m_throttles; }
+    // Puts the keyboard on throttle `number` (1-based); false if there is none.
+    bool focusThrottle(int number);
+    // What the page says while it has nothing to drive; empty while throttles drive.
+    QString emptyText() const;
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    void createShortcuts();
+    void renumber();
+    void save();
+    void updateEmptyState();
+    void retranslate();
+
+    QPointer<model::Railway> m_railway;
+    QList<ThrottleWidget*> m_throttles;
+    QPushButton* m_add;
+    QLabel* m_keysHint;
+    QLabel* m_emptyText;
+    QScrollArea* m_scroll;
+    QHBoxLayout* m_row;
+    bool m_restoring = false;
+};
+
+} // namespace stellwerk::ui
