@@ -16,6 +16,7 @@
 #include "StartupProgress.h"
 #include "StatusPanel.h"
 #include "StopGoButton.h"
+#include "ThrottlePanel.h"
 #include "TrafficStatus.h"
 #include "Translations.h"
 #include "TurnoutPanel.h"
@@ -74,14 +75,17 @@ void MainWindow::createPanels() {
     // A decoder registered on the programming page becomes a locomotive of the list at once.
     connect(m_programmingPanel, &ProgrammingPanel::decoderBound, m_locomotivePanel,
             &LocomotivePanel::addBoundDecoder);
+    m_throttlePanel = new ThrottlePanel(this);
+    m_workspace->addPanel(m_throttlePanel, Qt::RightDockWidgetArea);
     m_statusPanel = new StatusPanel(this);
-    m_workspace->addPanel(m_statusPanel, Qt::RightDockWidgetArea);
+    m_workspace->addPanel(m_statusPanel, Qt::RightDockWidgetArea, m_throttlePanel);
     m_busMonitor = new BusMonitorPanel(this);
     m_workspace->addPanel(m_busMonitor, Qt::BottomDockWidgetArea);
     m_frameDecoder = new FrameDecoderPanel(this);
     m_workspace->addPanel(m_frameDecoder, Qt::BottomDockWidgetArea, m_busMonitor);
     m_workspace->showPanel(m_busMonitor);
     m_workspace->showPanel(m_turnoutPanel);
+    m_workspace->showPanel(m_throttlePanel);
 }
 
 // The STOP / GO key and the connection, always in reach; the toolbar cannot be hidden by accident.
@@ -138,6 +142,7 @@ void MainWindow::setRailway(model::Railway* railway) {
     m_layoutOverview->setRailway(railway);
     m_statusPanel->setRailway(railway);
     m_turnoutPanel->setRailway(railway);
+    m_throttlePanel->setRailway(railway);
     m_locomotivePanel->setRailway(railway);
     m_programmingPanel->setRailway(railway);
     m_stopGo->setRailway(railway);
@@ -234,6 +239,7 @@ void MainWindow::retranslateDocks() {
             dock->setWindowTitle(text);
     };
     title(m_turnoutPanel, tr("Keyboard"));
+    title(m_throttlePanel, tr("Throttles"));
     title(m_locomotivePanel, tr("Locomotives"));
     title(m_programmingPanel, tr("Programming"));
     title(m_statusPanel, tr("Status"));

@@ -27,6 +27,7 @@ class ProgrammingPanel;
 class StartupProgress;
 class StatusPanel;
 class StopGoButton;
+class ThrottlePanel;
 class TrafficStatus;
 class Translations;
 class TurnoutPanel;
@@ -48,6 +49,7 @@ public:
     StatusPanel* statusPanel() const { return m_statusPanel; }
     BusMonitorPanel* busMonitor() const { return m_busMonitor; }
     TurnoutPanel* turnoutPanel() const { return m_turnoutPanel; }
+    ThrottlePanel* throttlePanel() const { return m_throttlePanel; }
     LocomotivePanel* locomotivePanel() const { return m_locomotivePanel; }
     ProgrammingPanel* programmingPanel() const { return m_programmingPanel; }
     StopGoButton* stopGoButton() const { return m_stopGo; }
@@ -87,6 +89,7 @@ private:
     StatusPanel* m_statusPanel = nullptr;
     BusMonitorPanel* m_busMonitor = nullptr;
     TurnoutPanel* m_turnoutPanel = nullptr;
+    ThrottlePanel* m_throttlePanel = nullptr;
     LocomotivePanel* m_locomotivePanel = nullptr;
     ProgrammingPanel* m_programmingPanel = nullptr;
     QToolBar* m_toolBar = nullptr;
