@@ -1,0 +1,20 @@
+#pragma once
+
+#include <QRectF>
+
+class QPainter;
+
+namespace stellwerk::ui {
+
+struct TrackColors;
+struct TrackTileLook;
+
+// Draws one tile of the track plan, any element type in any rotation, as anti-aliased vector paths
+// that scale with the tile. The shapes are looked up in a table by the element's `.typ` word.
+class TrackTilePainter {
+public:
+    static void paint(QPainter& painter, const QRectF& cell, const TrackTileLook& look,
+                      const TrackColors& colors);
+};
+
+} // namespace stellwerk::ui
