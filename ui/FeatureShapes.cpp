@@ -69,20 +69,28 @@ void routeButton(TileCanvas& c) {
     c.fill(arrow, c.look.running ? c.colors.background : c.colors.track, QColor());
 }
 
-void label(TileCanvas& c) {
-    c.painter.translate(c.cell.center());
-    const int quarterTurns = c.look.rotation & 3;
-    c.painter.rotate(quarterTurns % 2 ? -90.0 * ((quarterTurns == 1) ? 1 : -1) : 0.0);
-    QFont font = c.painter.font();
-    font.setPixelSize(std::max(6, int(c.cell.height() * 0.42)));
-    c.painter.setFont(font);
-    c.painter.setPen(c.colors.text);
-    const double half = c.cell.width() / 2;
-    const QString text = c.look.text.isEmpty() ? QStringLiteral("T") : c.look.text;
-    // Labels run beyond their tile, as on the CS2; rotation 2 ends at its tile instead of starting there.
-    const double width = QFontMetricsF(font).horizontalAdvance(text);
+LabelLayout labelLayout(const QRectF& cell, const TrackTileLook& look, QFont font) {
+    const int quarterTurns = look.rotation & 3;
+    LabelLayout layout;
+    layout.angle = quarterTurns % 2 ? -90.0 * ((quarterTurns == 1) ? 1 : -1) : 0.0;
+    font.setPixelSize(std::max(6, int(cell.height() * 0.42)));
+    layout.font = font;
+    layout.text = look.text.isEmpty() ? QStringLiteral("T") : look.text;
+    const double half = cell.width() / 2;
+    // Rotation 2 ends at its tile instead of starting there.
+    const double width = QFontMetricsF(font).horizontalAdvance(layout.text);
     const double left = quarterTurns == 2 ? half - width : -half;
-    c.painter.drawText(QRectF(left, -half, width + 1, 2 * half), Qt::AlignVCenter | Qt::AlignLeft, text);
+    layout.box = QRectF(left, -half, width + 1, 2 * half);
+    return layout;
+}
+
+void label(TileCanvas& c) {
+    const LabelLayout layout = labelLayout(c.cell, c.look, c.painter.font());
+    c.painter.translate(c.cell.center());
+    c.painter.rotate(layout.angle);
+    c.painter.setFont(layout.font);
+    c.painter.setPen(c.colors.text);
+    c.painter.drawText(layout.box, Qt::AlignVCenter | Qt::AlignLeft, layout.text);
 }
 
 void uncoupler(TileCanvas& c) {

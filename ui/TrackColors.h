@@ -23,6 +23,7 @@ struct TrackColors {
     QColor text;
 
     static TrackColors from(const QPalette& palette);
+    bool operator==(const TrackColors&) const = default;
 };
 
 } // namespace stellwerk::ui

@@ -1,6 +1,5 @@
 #include "TrackPageView.h"
 
-#include "TrackTilePainter.h"
 #include "model/TrackLayout.h"
 
 #include <QContextMenuEvent>
@@ -81,12 +80,16 @@ void TrackPageView::paintEvent(QPaintEvent* event) {
     const QRect area = event->rect();
     painter.setClipRect(area);
     paintGrid(painter, area);
+    m_pictures.prepare(m_tileSize, devicePixelRatioF(), m_colors, font());
     for (int i = 0; i < int(m_page.tiles.size()); ++i) {
         const bool label = m_page.tiles[std::size_t(i)].category == cs2config::TrackCategory::Text;
         const QRect cell = tileRect(i);
         if (!label && !cell.intersects(area))
+            continue;
+        const TrackTileLook look = m_look(i);
+        if (label && !m_pictures.area(look, cell.topLeft()).intersects(area))
             continue; // labels may reach into the area from elsewhere
-        TrackTilePainter::paint(painter, cell, m_look(i), m_colors);
+        m_pictures.paint(painter, cell.topLeft(), look);
     }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "TrackColors.h"
+#include "TrackTileCache.h"
 #include "TrackTileLook.h"
 
 #include <QWidget>
@@ -56,6 +57,7 @@ private:
     LookOf m_look;
     TextOf m_toolTip;
     TrackColors m_colors;
+    TrackTileCache m_pictures;
     int m_tileSize = 40;
 };
 

@@ -3,6 +3,7 @@
 #include "TrackColors.h"
 #include "TrackTileLook.h"
 
+#include <QFont>
 #include <QPainter>
 #include <QPainterPath>
 #include <QRectF>
@@ -37,6 +38,16 @@ inline constexpr QPointF South{0.5, 1.0};
 
 // A quarter circle of radius 1/2 around a corner of the tile, from one edge midpoint to the next.
 QPainterPath quarter(QPointF corner, double startDegrees, double sweepDegrees);
+
+// Where a label's text goes: the font, the text and its box around the cell's centre, turned by `angle`
+// degrees. Labels run beyond their tile, as on the CS2.
+struct LabelLayout {
+    QFont font;
+    QString text;
+    QRectF box;
+    double angle = 0.0;
+};
+LabelLayout labelLayout(const QRectF& cell, const TrackTileLook& look, QFont font);
 
 // Track (TrackShapes.cpp)
 void straight(TileCanvas& c);

@@ -73,6 +73,20 @@ void TrackTilePainter::paint(QPainter& painter, const QRectF& cell, const TrackT
     painter.restore();
 }
 
+bool TrackTilePainter::draws(const TrackTileLook& look) {
+    return shapeFor(look.type) != nullptr;
+}
+
+QRectF TrackTilePainter::area(const QRectF& cell, const TrackTileLook& look, const QFont& font) {
+    if (shapeFor(look.type) != shapes::label)
+        return cell;
+    const shapes::LabelLayout layout = shapes::labelLayout(cell, look, font);
+    return QTransform()
+        .translate(cell.center().x(), cell.center().y())
+        .rotate(layout.angle)
+        .mapRect(layout.box);
+}
+
 namespace shapes {
 
 void TileCanvas::unit() {

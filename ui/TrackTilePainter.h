@@ -2,6 +2,8 @@
 
 #include <QRectF>
 
+class QFont;
+
 class QPainter;
 
 namespace stellwerk::ui {
@@ -15,6 +17,10 @@ class TrackTilePainter {
 public:
     static void paint(QPainter& painter, const QRectF& cell, const TrackTileLook& look,
                       const TrackColors& colors);
+    // Whether the tile shows anything at all (an empty tile does not).
+    static bool draws(const TrackTileLook& look);
+    // The area the tile draws into: its cell, or for a label the text that runs beyond it.
+    static QRectF area(const QRectF& cell, const TrackTileLook& look, const QFont& font);
 };
 
 } // namespace stellwerk::ui

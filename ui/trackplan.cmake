@@ -6,6 +6,7 @@ target_sources(stellwerk-ui PRIVATE
     TrackPageView.cpp TrackPageView.h
     TrackPlanPanel.cpp TrackPlanPanel.h
     TrackShapes.cpp TrackShapes.h
+    TrackTileCache.cpp TrackTileCache.h
     TrackTileInfo.cpp TrackTileInfo.h
     TrackTileLook.h
     TrackTilePainter.cpp TrackTilePainter.h
