@@ -204,6 +204,13 @@ TEST_F(TrackPlanPanelTest, TheDemoPlanIsDrawnInLightAndDarkPalettes) {
     const QImage light = panel.grab().toImage();
     EXPECT_GT(drawnPixels(light), 5000);
     keepScreenshot(light, QStringLiteral("track-plan.png"));
+    for (int page = 1; page < panel.pageTabs()->count(); ++page) { // the other pages are drawn as well
+        panel.pageTabs()->setCurrentIndex(page);
+        const QImage other = panel.grab().toImage();
+        EXPECT_GT(drawnPixels(other), 5000) << page;
+        keepScreenshot(other, QStringLiteral("track-plan-page%1.png").arg(page));
+    }
+    panel.pageTabs()->setCurrentIndex(0);
     QPalette dark;
     dark.setColor(QPalette::Window, QColor(45, 45, 48));
     dark.setColor(QPalette::WindowText, QColor(225, 225, 225));
