@@ -84,7 +84,8 @@ void TrackPageView::paintEvent(QPaintEvent* event) {
     for (int i = 0; i < int(m_page.tiles.size()); ++i) {
         const bool label = m_page.tiles[std::size_t(i)].category == cs2config::TrackCategory::Text;
         const QRect cell = tileRect(i);
-        if (!label && !cell.intersects(area))
+        constexpr int reach = TrackTileCache::Overhang;
+        if (!label && !cell.adjusted(-reach, -reach, reach, reach).intersects(area))
             continue;
         const TrackTileLook look = m_look(i);
         if (label && !m_pictures.area(look, cell.topLeft()).intersects(area))

@@ -49,7 +49,8 @@ TrackTileCache::Picture TrackTileCache::draw(const TrackTileLook& look) const {
         return {};
     const QRectF cell(0, 0, m_tileSize, m_tileSize);
     // A little room around the cell for strokes that reach over its edge.
-    const QRectF reach = TrackTilePainter::area(cell, look, m_font).adjusted(-2, -2, 2, 2);
+    const QRectF reach =
+        TrackTilePainter::area(cell, look, m_font).adjusted(-Overhang, -Overhang, Overhang, Overhang);
     const QRect pixels(QPoint(int(std::floor(reach.left())), int(std::floor(reach.top()))),
                        QPoint(int(std::ceil(reach.right())), int(std::ceil(reach.bottom()))));
     QImage image((QSizeF(pixels.size()) * m_devicePixelRatio).toSize(), QImage::Format_ARGB32_Premultiplied);

@@ -19,6 +19,9 @@ namespace stellwerk::ui {
 // font or the ratio change, so the plan stays anti-aliased vector art at every zoom.
 class TrackTileCache final {
 public:
+    // How far, in pixels, a tile's strokes may reach over its cell's edges.
+    static constexpr int Overhang = 2;
+
     // Starts a repaint; forgets every picture when anything they were drawn with changed.
     void prepare(int tileSize, qreal devicePixelRatio, const TrackColors& colors, const QFont& font);
     // The area the tile's picture covers when its cell's top left corner is at `cell` (labels run
