@@ -1,4 +1,7 @@
-// The demo layout's track for the train movement; it matches resources/demo-layout/config/gleisbilder.
+// The demo layout's track for the train movement; it matches resources/demo-layout/config/gleisbilder:
+// on the Bahnhof page W1 (points west) leads round into Gleis 2, W2 (points east) joins both tracks, W3
+// leads round into the Abstellgleis, which runs on to the Bw page; the Bw's tracks have no contacts, so
+// for the trains the Abstellgleis ends at its contact. The Strecke page carries Block 1-4 as a loop.
 
 #include "sim/TrainTrack.h"
 

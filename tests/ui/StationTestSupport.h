@@ -58,6 +58,8 @@ public:
     void stop() { server_.reset(); }
     QString url() const { return QStringLiteral("tcp://127.0.0.1:%1").arg(server_->tcpPort()); }
     std::uint16_t port() const { return server_->tcpPort(); }
+    // The simulated CS2 itself, to make things happen on the layout (an S88 contact, ...).
+    sim::SimulatedStation& station() { return station_; }
 
 private:
     sim::SimulatedStation station_;

@@ -1,0 +1,189 @@
+// The track plan view, offscreen:
+//   1. drawing a page of 2,000 elements at the default zoom (target: under 16 ms per full repaint),
+//   2. 2,000 S88 events per second (batches of 20 every 10 ms) from the simulated CS2 over loopback TCP
+//      through the session and the Railway while the plan is shown: how many events arrived and how
+//      late the event loop serves a 5 ms timer (the UI's responsiveness).
+// A plain harness printing figures. Run: QT_QPA_PLATFORM=offscreen build/bench/stellwerk-trackplan-bench
+
+#include "RailwayBinding.h"
+#include "TrackColors.h"
+#include "TrackPageView.h"
+#include "TrackPlanPanel.h"
+#include "TrackTileLook.h"
+#include "TrackTilePainter.h"
+#include "connection/StationConnection.h"
+#include "cs2config/TrackElementType.h"
+#include "model/Railway.h"
+#include "sim/SimulatedStation.h"
+#include "sim/StationLayout.h"
+#include "sim/StationServer.h"
+#include "station/StationSession.h"
+#include "station/StationUpdates.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QImage>
+#include <QPainter>
+#include <QTimer>
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+using namespace stellwerk;
+
+namespace {
+
+// A 50 x 40 page with 2,000 tiles cycling through every element type and rotation.
+model::TrackLayout bigLayout() {
+    station::DownloadedPage page;
+    page.name = "bench";
+    const auto types = cs2config::trackElementTypes();
+    for (int i = 0; i < 2000; ++i) {
+        cs2config::TrackElement element;
+        element.position = {0, std::uint8_t(i % 50), std::uint8_t(i / 50)};
+        element.type = std::string(types[std::size_t(i) % types.size()].name);
+        element.rotation = (i / int(types.size())) % 4;
+        element.text = "Gleis";
+        page.page.elements.push_back(element);
+    }
+    return model::TrackLayout({page});
+}
+
+struct Figures {
+    double median = 0;
+    double worst = 0;
+};
+
+template <typename Draw>
+Figures timed(int runs, Draw draw) {
+    std::vector<double> times;
+    for (int run = 0; run < runs; ++run) {
+        QElapsedTimer clock;
+        clock.start();
+        draw();
+        times.push_back(double(clock.nsecsElapsed()) / 1e6);
+    }
+    std::sort(times.begin(), times.end());
+    return {times[times.size() / 2], times.back()};
+}
+
+void benchDrawing() {
+    const model::TrackLayout layout = bigLayout();
+    const model::LayoutPage& page = layout.pages()[0];
+    const auto lookOf = [&page](int tile) {
+        const model::LayoutTile& t = page.tiles[std::size_t(tile)];
+        return ui::TrackTileLook{t.type, t.category, t.rotation, tile % 2, tile % 3 == 0, false, t.text};
+    };
+    ui::TrackPageView view(page, lookOf, [](int) { return QString(); });
+    view.resize(view.sizeHint()); // the default zoom: 40 px per tile
+    QImage image(view.size(), QImage::Format_ARGB32_Premultiplied);
+    std::printf("draw a page of 2000 elements at %d px per tile (%dx%d px), target < 16 ms:\n",
+                view.tileSize(), view.width(), view.height());
+
+    // Every tile stroked as vector paths, as the view did before it kept pictures of its tiles.
+    const ui::TrackColors colors = ui::TrackColors::from(view.palette());
+    const Figures direct = timed(5, [&] {
+        QPainter painter(&image);
+        painter.setFont(view.font());
+        painter.fillRect(image.rect(), colors.background);
+        for (int i = 0; i < int(page.tiles.size()); ++i)
+            ui::TrackTilePainter::paint(painter, view.tileRect(i), lookOf(i), colors);
+    });
+    std::printf("  every tile stroked:             median %6.2f ms, worst %6.2f ms\n", direct.median,
+                direct.worst);
+    const Figures first = timed(1, [&] { view.render(&image); });
+    std::printf("  first repaint (draws pictures): %6.2f ms\n", first.median);
+    const Figures repaint = timed(30, [&] { view.render(&image); });
+    std::printf("  full repaint:                   median %6.2f ms, worst %6.2f ms\n", repaint.median,
+                repaint.worst);
+    view.setTileSize(view.tileSize() + 4);
+    const Figures zoomed = timed(1, [&] { view.render(&image); });
+    std::printf("  first repaint after zooming:    %6.2f ms\n", zoomed.median);
+}
+
+void benchContacts() {
+    sim::SimulatedStation station(sim::StationLayout::demo());
+    sim::StationServerSettings settings;
+    settings.listenAddress = QHostAddress(QHostAddress::LocalHost);
+    settings.udp = false;
+    settings.tcpPort = 0;
+    sim::StationServer server(station, settings);
+    server.listen();
+    connection::StationConnection connection;
+    ui::RailwayBinding railways(connection);
+    ui::TrackPlanPanel panel;
+    QObject::connect(&railways, &ui::RailwayBinding::railwayChanged, &panel, &ui::TrackPlanPanel::setRailway);
+    panel.resize(1200, 800);
+    panel.show();
+    connection.connectTo(QStringLiteral("tcp://127.0.0.1:%1").arg(server.tcpPort()));
+    QElapsedTimer wait;
+    wait.start();
+    while (connection.state() != connection::StationConnection::State::Ready && wait.elapsed() < 15000)
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
+    if (!railways.railway()) {
+        std::printf("contacts: the simulated station did not get ready\n");
+        return;
+    }
+    // Count what really arrives: every contact event the session decodes, and the plan's tile updates.
+    int delivered = 0;
+    int tileUpdates = 0;
+    QObject::connect(
+        connection.session(), &station::StationSession::updated,
+        [&](const station::StationUpdates& updates) { delivered += int(updates.contacts.size()); });
+    QObject::connect(railways.railway(), &model::Railway::tilesChanged,
+                     [&](const QList<model::TileRef>& tiles) { tileUpdates += int(tiles.size()); });
+    // Every 10 ms a batch of 20 events, as a busy S88 bus delivers them: 2,000 events per second on the
+    // demo's contacts 1..9, each event a real change.
+    constexpr int BatchMs = 10;
+    constexpr int BatchSize = 20;
+    int sent = 0;
+    QTimer feed;
+    feed.setTimerType(Qt::PreciseTimer);
+    QElapsedTimer clock;
+    QObject::connect(&feed, &QTimer::timeout, [&] {
+        const qint64 due = clock.elapsed() * BatchSize / BatchMs; // catch up when the timer was late
+        for (; sent < due; ++sent)
+            station.setContact(0, std::uint16_t(1 + sent % 9), (sent / 9) % 2 == 0);
+    });
+    // The event loop's latency: how late a 5 ms timer fires.
+    std::vector<double> lateness;
+    QTimer probe;
+    probe.setTimerType(Qt::PreciseTimer);
+    qint64 expectedNs = 5000000;
+    QObject::connect(&probe, &QTimer::timeout, [&] {
+        const qint64 now = clock.nsecsElapsed();
+        lateness.push_back(std::max<double>(0, double(now - expectedNs) / 1e6));
+        expectedNs = now + 5000000;
+    });
+    clock.start();
+    feed.start(BatchMs);
+    probe.start(5);
+    constexpr qint64 RunMs = 5000;
+    while (clock.elapsed() < RunMs)
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
+    feed.stop();
+    probe.stop();
+    const double seconds = double(clock.elapsed()) / 1000.0;
+    QElapsedTimer drain; // the events still on their way
+    drain.start();
+    while (delivered < sent && drain.elapsed() < 2000)
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
+    std::sort(lateness.begin(), lateness.end());
+    std::printf("S88 events with the plan shown, batches of %d every %d ms for %.1f s:\n", BatchSize, BatchMs,
+                seconds);
+    std::printf("  sent %.0f events/s, delivered %.0f events/s (%d of %d), %.0f tile updates/s\n",
+                sent / seconds, delivered / seconds, delivered, sent, tileUpdates / seconds);
+    std::printf("  event loop latency (5 ms timer late by): median %.2f ms, p99 %.2f ms, max %.2f ms\n",
+                lateness[lateness.size() / 2], lateness[std::size_t(double(lateness.size() - 1) * 0.99)],
+                lateness.back());
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    QApplication app(argc, argv);
+    benchDrawing();
+    benchContacts();
+    return 0;
+}

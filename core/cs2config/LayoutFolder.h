@@ -1,0 +1,50 @@
+#pragma once
+
+#include "cs2config/AccessoryFile.h"
+#include "cs2config/TrackLayout.h"
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace stellwerk::cs2config {
+
+// The files of a CS2 configuration folder by their path inside `config/` ("gleisbild.cs2",
+// "gleisbilder/Bahnhof.cs2", "magnetartikel.cs2"), with their bytes.
+using ConfigFolderFiles = std::map<std::string, std::string>;
+
+// A CS2 configuration folder on disk, as a CS2 keeps it and serves it over HTTP: config/gleisbild.cs2,
+// config/gleisbilder/<page>.cs2 and the station's other files. Opened to look at a layout without a
+// station; written to hand a layout back to a CS2. Writing never leaves a half-written folder.
+class LayoutFolder {
+public:
+    // What opening a folder found. `layout` is usable when `problem` is empty.
+    struct Content {
+        std::filesystem::path configDirectory;
+        TrackLayout layout;
+        std::optional<AccessoryFile> accessories; // magnetartikel.cs2, for the articles' names
+        std::string problem;                      // why nothing could be opened; empty on success
+    };
+
+    // The `config` folder inside `folder`, or `folder` itself when it holds gleisbild.cs2.
+    static std::filesystem::path configDirectoryOf(const std::filesystem::path& folder);
+    static Content open(const std::filesystem::path& folder);
+
+    // The files of a layout as a CS2 stores them, written with the models' writers (unchanged models
+    // give their files back byte for byte).
+    static ConfigFolderFiles filesOf(const TrackPlan& plan, const std::vector<TrackLayoutPage>& pages);
+    // The station's other downloaded files (stream key -> contents: "loks", "mags", "fs") under their
+    // file names; track plan keys and keys without a file name are left out.
+    static ConfigFolderFiles stationFiles(const std::map<std::string, std::string>& files);
+    // The files of `configDirectory` other than the track plan that a CS2 reads (magnetartikel.cs2,
+    // lokomotive.cs2, fahrstrassen.cs2), so that an export of an opened folder keeps them.
+    static ConfigFolderFiles companionFiles(const std::filesystem::path& configDirectory);
+
+    // Writes `files` into `folder`/config: first into a new folder beside it, then swapped into place,
+    // so that a failure leaves the old folder as it was. Returns an empty string or the reason it failed.
+    static std::string write(const std::filesystem::path& folder, const ConfigFolderFiles& files);
+};
+
+} // namespace stellwerk::cs2config

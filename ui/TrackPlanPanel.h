@@ -1,0 +1,114 @@
+#pragma once
+
+#include "cs2config/LayoutFolder.h"
+#include "model/TrackLayout.h"
+
+#include <QList>
+#include <QPointer>
+#include <QWidget>
+#include <map>
+#include <optional>
+#include <vector>
+
+class QAction;
+class QLabel;
+class QTabWidget;
+class QToolBar;
+
+namespace stellwerk::connection {
+class StationConnection;
+}
+namespace stellwerk::model {
+class Railway;
+}
+
+namespace stellwerk::ui {
+
+class TrackPageView;
+struct TrackTileLook;
+
+// The track plan: every page of the station's gleisbild as a tab, live turnout, signal, contact and
+// route states, switching by click, and opening or exporting a CS2 configuration folder. Without a
+// station it shows a plan opened from files.
+class TrackPlanPanel final : public QWidget {
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(TrackPlanPanel)
+
+public:
+    explicit TrackPlanPanel(QWidget* parent = nullptr);
+    ~TrackPlanPanel() override;
+
+    // The railway whose plan and states the panel shows (null: none; an opened folder stays shown).
+    void setRailway(model::Railway* railway);
+    // The connection whose downloaded files an export writes beside the plan.
+    void setConnection(connection::StationConnection* connection);
+
+    // Shows the layout of a CS2 configuration folder (the folder or its `config`); false and a
+    // problem shown when it cannot be read.
+    bool openFolder(const QString& folder);
+    // Shows the station's plan again after a folder was opened.
+    void showStationPlan();
+    // Writes the shown layout as a CS2 configuration folder; false and a problem shown on failure.
+    bool exportTo(const QString& folder);
+
+    QTabWidget* pageTabs() const { return m_tabs; }
+    TrackPageView* pageView(int page) const;
+    const model::TrackLayout* layout() const { return m_layout; }
+    // What a tile shows now (for tests and the screenshot tool).
+    TrackTileLook lookOf(model::TileRef ref) const;
+    QString toolTipOf(model::TileRef ref) const;
+    int tileSize() const { return m_tileSize; }
+    void setTileSize(int pixels);
+    void zoomIn();
+    void zoomOut();
+    void fitToWindow();
+    // The problem shown in the banner; empty while it is hidden.
+    QString problemText() const;
+
+signals:
+    // The pages shown were rebuilt (another railway, a reload, an opened folder).
+    void layoutChanged();
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    void rebuild();
+    void addPage(int index);
+    void indexRoutes();
+    void tilesChanged(const QList<model::TileRef>& tiles);
+    void routeChanged(qint64 route);
+    void tileClicked(int page, int tile);
+    void showTileMenu(int page, int tile, QPoint where);
+    void goToPage(std::int64_t pageId);
+    QString accessoryName(std::int64_t id) const;
+    void showProblem(const QString& text);
+    void chooseFolderToOpen();
+    void chooseFolderToExport();
+    void updateActions();
+    void retranslate();
+
+    QPointer<model::Railway> m_railway;
+    QPointer<connection::StationConnection> m_connection;
+    std::optional<cs2config::LayoutFolder::Content> m_folder;
+    model::TrackLayout m_folderLayout;
+    std::map<std::int64_t, QString> m_folderNames;
+    const model::TrackLayout* m_layout = nullptr;
+    std::map<std::int64_t, std::vector<model::TileRef>> m_routeTiles;
+    std::vector<TrackPageView*> m_views;
+    int m_tileSize = 40;
+
+    QToolBar* m_toolBar = nullptr;
+    QAction* m_open = nullptr;
+    QAction* m_export = nullptr;
+    QAction* m_station = nullptr;
+    QAction* m_zoomIn = nullptr;
+    QAction* m_zoomOut = nullptr;
+    QAction* m_fit = nullptr;
+    QLabel* m_source = nullptr;
+    QLabel* m_banner = nullptr;
+    QLabel* m_emptyText = nullptr;
+    QTabWidget* m_tabs = nullptr;
+};
+
+} // namespace stellwerk::ui
