@@ -17,6 +17,7 @@
 #include "StatusPanel.h"
 #include "StopGoButton.h"
 #include "ThrottlePanel.h"
+#include "TrackPlanPanel.h"
 #include "TrafficStatus.h"
 #include "Translations.h"
 #include "TurnoutPanel.h"
@@ -61,11 +62,12 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     QMainWindow::closeEvent(event);
 }
 
-// The layout overview in the middle; around it what a running session needs, the bus tools below.
+// The track plan in the middle; the keyboard and the locomotive tools on the left, the throttles on the
+// right, the overview and the bus tools below.
 void MainWindow::createPanels() {
     m_workspace = new Workspace(*this);
-    m_layoutOverview = new LayoutOverview(this);
-    setCentralWidget(m_layoutOverview);
+    m_trackPlan = new TrackPlanPanel(this);
+    setCentralWidget(m_trackPlan);
     m_turnoutPanel = new TurnoutPanel(this);
     m_workspace->addPanel(m_turnoutPanel, Qt::LeftDockWidgetArea);
     m_locomotivePanel = new LocomotivePanel(this);
@@ -79,16 +81,21 @@ void MainWindow::createPanels() {
     m_workspace->addPanel(m_throttlePanel, Qt::RightDockWidgetArea);
     m_statusPanel = new StatusPanel(this);
     m_workspace->addPanel(m_statusPanel, Qt::RightDockWidgetArea, m_throttlePanel);
+    m_layoutOverview = new LayoutOverview(this);
+    m_workspace->addPanel(m_layoutOverview, Qt::BottomDockWidgetArea);
     m_busMonitor = new BusMonitorPanel(this);
-    m_workspace->addPanel(m_busMonitor, Qt::BottomDockWidgetArea);
+    m_workspace->addPanel(m_busMonitor, Qt::BottomDockWidgetArea, m_layoutOverview);
     m_frameDecoder = new FrameDecoderPanel(this);
-    m_workspace->addPanel(m_frameDecoder, Qt::BottomDockWidgetArea, m_busMonitor);
-    m_workspace->showPanel(m_busMonitor);
-    m_workspace->showPanel(m_turnoutPanel);
-    m_workspace->showPanel(m_throttlePanel);
+    m_workspace->addPanel(m_frameDecoder, Qt::BottomDockWidgetArea, m_layoutOverview);
+    for (QWidget* front : {static_cast<QWidget*>(m_turnoutPanel), static_cast<QWidget*>(m_throttlePanel),
+                           static_cast<QWidget*>(m_layoutOverview)})
+        m_workspace->showPanel(front);
+    // A first arrangement in which the plan keeps most of a laptop's screen.
+    resizeDocks({m_workspace->dockOf(m_turnoutPanel), m_workspace->dockOf(m_throttlePanel)}, {330, 360},
+                Qt::Horizontal);
+    resizeDocks({m_workspace->dockOf(m_layoutOverview)}, {210}, Qt::Vertical);
 }
 
-// The STOP / GO key and the connection, always in reach; the toolbar cannot be hidden by accident.
 void MainWindow::createToolBar() {
     m_toolBar = addToolBar(QString());
     m_toolBar->setObjectName(QStringLiteral("mainToolBar"));
@@ -129,6 +136,7 @@ void MainWindow::setConnection(connection::StationConnection* station) {
     m_startupProgress->setConnection(station);
     m_traffic->setConnection(station);
     m_busMonitor->setConnection(station);
+    m_trackPlan->setConnection(station);
     if (m_connection) {
         connect(m_connection, &connection::StationConnection::problem, this,
                 [this](const QString& message) { showStationProblem(message); });
@@ -143,6 +151,7 @@ void MainWindow::setRailway(model::Railway* railway) {
     m_statusPanel->setRailway(railway);
     m_turnoutPanel->setRailway(railway);
     m_throttlePanel->setRailway(railway);
+    m_trackPlan->setRailway(railway);
     m_locomotivePanel->setRailway(railway);
     m_programmingPanel->setRailway(railway);
     m_stopGo->setRailway(railway);
@@ -243,6 +252,7 @@ void MainWindow::retranslateDocks() {
     title(m_locomotivePanel, tr("Locomotives"));
     title(m_programmingPanel, tr("Programming"));
     title(m_statusPanel, tr("Status"));
+    title(m_layoutOverview, tr("Overview"));
     title(m_busMonitor, tr("Bus monitor"));
     title(m_frameDecoder, tr("Frame decoder"));
 }

@@ -28,14 +28,16 @@ class StartupProgress;
 class StatusPanel;
 class StopGoButton;
 class ThrottlePanel;
+class TrackPlanPanel;
 class TrafficStatus;
 class Translations;
 class TurnoutPanel;
 class Workspace;
 
-// The station's main window: menus, the toolbar with the big STOP / GO, the panels of a running session
-// as docks a person arranges (kept between runs), and the status bar with the station, its traffic, the
-// configuration download and the track power. Space or Escape stop the layout from anywhere.
+// The station's main window: menus, the toolbar with the big STOP / GO, the track plan in the middle and
+// the other panels of a running session as docks a person arranges (kept between runs), and the status bar
+// with the station, its traffic, the configuration download and the track power. Space or Escape stop the
+// layout from anywhere.
 class MainWindow final : public QMainWindow {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(MainWindow)
@@ -50,6 +52,7 @@ public:
     BusMonitorPanel* busMonitor() const { return m_busMonitor; }
     TurnoutPanel* turnoutPanel() const { return m_turnoutPanel; }
     ThrottlePanel* throttlePanel() const { return m_throttlePanel; }
+    TrackPlanPanel* trackPlan() const { return m_trackPlan; }
     LocomotivePanel* locomotivePanel() const { return m_locomotivePanel; }
     ProgrammingPanel* programmingPanel() const { return m_programmingPanel; }
     StopGoButton* stopGoButton() const { return m_stopGo; }
@@ -90,6 +93,7 @@ private:
     BusMonitorPanel* m_busMonitor = nullptr;
     TurnoutPanel* m_turnoutPanel = nullptr;
     ThrottlePanel* m_throttlePanel = nullptr;
+    TrackPlanPanel* m_trackPlan = nullptr;
     LocomotivePanel* m_locomotivePanel = nullptr;
     ProgrammingPanel* m_programmingPanel = nullptr;
     QToolBar* m_toolBar = nullptr;

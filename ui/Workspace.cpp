@@ -4,6 +4,7 @@
 
 #include <QDockWidget>
 #include <QMainWindow>
+#include <QScrollArea>
 #include <QTabBar>
 
 namespace stellwerk::ui {
@@ -25,7 +26,13 @@ Workspace::Workspace(QMainWindow& window) : QObject(&window), m_window(window) {
 QDockWidget* Workspace::addPanel(QWidget* panel, Qt::DockWidgetArea area, QWidget* stackOn) {
     auto* dock = new QDockWidget(&m_window);
     dock->setObjectName(panel->objectName() + QStringLiteral("Dock"));
-    dock->setWidget(panel);
+    // A dock narrower or shorter than its panel likes scrolls it rather than forcing the window wider.
+    auto* scroll = new QScrollArea(dock);
+    scroll->setObjectName(panel->objectName() + QStringLiteral("Scroll"));
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(panel);
+    dock->setWidget(scroll);
     dock->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable |
                       QDockWidget::DockWidgetFloatable);
     // Qt only moves a dock behind another tab out of sight; hiding its panel, as a tab widget does, lets
@@ -40,9 +47,14 @@ QDockWidget* Workspace::addPanel(QWidget* panel, Qt::DockWidgetArea area, QWidge
     return dock;
 }
 
+QWidget* Workspace::panelOf(const QDockWidget* dock) {
+    const auto* scroll = qobject_cast<const QScrollArea*>(dock->widget());
+    return scroll ? scroll->widget() : nullptr;
+}
+
 QDockWidget* Workspace::dockOf(const QWidget* panel) const {
     for (QDockWidget* dock : m_docks) {
-        if (panel && dock->widget() == panel)
+        if (panel && panelOf(dock) == panel)
             return dock;
     }
     return nullptr;
@@ -50,8 +62,8 @@ QDockWidget* Workspace::dockOf(const QWidget* panel) const {
 
 QWidget* Workspace::panel(const QString& objectName) const {
     for (QDockWidget* dock : m_docks) {
-        if (dock->widget() && dock->widget()->objectName() == objectName)
-            return dock->widget();
+        if (QWidget* panel = panelOf(dock); panel && panel->objectName() == objectName)
+            return panel;
     }
     return nullptr;
 }

@@ -22,6 +22,8 @@ public:
     // Puts `panel` into a new dock in `area`; with `stackOn`, as a tab on that panel's dock. The dock's
     // object name is the panel's plus "Dock", which is what the saved arrangement refers to.
     QDockWidget* addPanel(QWidget* panel, Qt::DockWidgetArea area, QWidget* stackOn = nullptr);
+    // The panel a dock of this workspace holds.
+    static QWidget* panelOf(const QDockWidget* dock);
     // The dock holding `panel`, or null.
     QDockWidget* dockOf(const QWidget* panel) const;
     // The panel with this object name, or null.

@@ -1,17 +1,19 @@
 #include "LayoutOverview.h"
 
+#include "BusMonitorPanel.h"
 #include "ContactTableModel.h"
 #include "LocomotiveTableModel.h"
 #include "MainWindow.h"
 #include "RailwayBinding.h"
 #include "StationTestSupport.h"
 #include "Translations.h"
+#include "Workspace.h"
 #include "model/Railway.h"
 
 #include <QCoreApplication>
+#include <QDockWidget>
 #include <QEvent>
 #include <QSignalSpy>
-#include <QTabWidget>
 #include <QTest>
 #include <gtest/gtest.h>
 
@@ -157,9 +159,14 @@ TEST_F(LayoutOverviewTest, DisconnectingEmptiesTheTables) {
     EXPECT_EQ(overview.powerText(), QStringLiteral("No station connected"));
 }
 
-TEST(LayoutOverviewInTheWindow, IsInTheMiddleOfTheWindow) {
+TEST(LayoutOverviewInTheWindow, IsAPanelInFrontOfTheBusTools) {
     Translations translations;
     ASSERT_TRUE(translations.select(Language::English));
     MainWindow window(translations);
-    EXPECT_EQ(window.centralWidget(), window.layoutOverview());
+    window.show();
+    QDockWidget* dock = window.workspace()->dockOf(window.layoutOverview());
+    ASSERT_NE(dock, nullptr);
+    EXPECT_EQ(dock->windowTitle(), QStringLiteral("Overview"));
+    EXPECT_TRUE(window.layoutOverview()->isVisible());
+    EXPECT_FALSE(window.busMonitor()->isVisible()); // stacked behind the overview
 }

@@ -3,6 +3,7 @@
 #include "FrameDecoderPanel.h"
 #include "LanguageSettings.h"
 #include "LayoutOverview.h"
+#include "TrackPlanPanel.h"
 #include "Translations.h"
 #include "Workspace.h"
 
@@ -125,17 +126,19 @@ TEST_F(MainWindowTest, StatusBarSaysNoStationConnected) {
     EXPECT_EQ(stationStatus(), QStringLiteral("No station connected"));
 }
 
-TEST_F(MainWindowTest, PanelsAreDocksAroundTheLayoutOverview) {
-    EXPECT_EQ(window->centralWidget(), window->layoutOverview());
+TEST_F(MainWindowTest, PanelsAreDocksAroundTheTrackPlan) {
+    EXPECT_EQ(window->centralWidget(), static_cast<QWidget*>(window->trackPlan()));
     QStringList names;
     QStringList titles;
     for (QDockWidget* dock : window->workspace()->docks()) {
-        names << dock->widget()->objectName();
+        names << Workspace::panelOf(dock)->objectName();
         titles << dock->windowTitle();
-        EXPECT_EQ(dock->objectName(), dock->widget()->objectName() + QStringLiteral("Dock"));
+        EXPECT_EQ(dock->objectName(), Workspace::panelOf(dock)->objectName() + QStringLiteral("Dock"));
         EXPECT_TRUE(menu("panelsMenu")->actions().contains(dock->toggleViewAction()));
     }
-    EXPECT_TRUE(names.contains(QStringLiteral("statusPanel")));
+    for (const char* panel : {"layoutOverview", "turnoutPanel", "locomotivePanel", "programmingPanel",
+                              "throttlePanel", "statusPanel"})
+        EXPECT_TRUE(names.contains(QLatin1String(panel))) << panel;
     EXPECT_TRUE(names.contains(QStringLiteral("busMonitorPanel")));
     EXPECT_TRUE(names.contains(QStringLiteral("frameDecoderPanel")));
     EXPECT_TRUE(titles.contains(QStringLiteral("Bus monitor")));
