@@ -17,15 +17,332 @@
     </message>
 </context>
 <context>
+    <name>AccessoryIcon</name>
+    <message>
+        <source>unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Straight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Diverging</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Straight, diverging</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Diverging, straight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hp0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hp1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sh1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hp2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sh0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Uncouple</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Green</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Red</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FunctionIcons</name>
+    <message>
+        <source>Function</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interior light</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cab light</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sound</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Horn</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Whistle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Smoke</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Coupler</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shunting speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brake sound</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pantograph</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acceleration delay off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Announcement</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>TrackTileInfo</name>
+    <message>
+        <source>Straight track</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Curve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Double curve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Crossing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Underpass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Buffer stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tunnel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left turnout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right turnout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y turnout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Three-way turnout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Double slip</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Double slip (two drives)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scissors crossover</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S88 contact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S88 contact (curve)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S88 contact (double curve)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Link to a page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Route button</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Level crossing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slip turnout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Semaphore signal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Signal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Uncoupler</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lamp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turntable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Transfer table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unknown element (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop (Hp0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Proceed (Hp1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slow (Hp2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shunting (Sh1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop (Sh0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Straight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Diverging</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Accessory %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contact %1 (device %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Route %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::BusMonitorModel</name>
-    <message>
-        <source>received</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>sent</source>
-        <translation type="unfinished"></translation>
-    </message>
     <message>
         <source>Time</source>
         <translation type="unfinished"></translation>
@@ -44,6 +361,14 @@
     </message>
     <message>
         <source>Frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>← received</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>→ sent</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -73,13 +398,6 @@
         <source>%1 cannot be written: %2</source>
         <translation type="unfinished"></translation>
     </message>
-    <message numerus="yes">
-        <source>%Ln line(s) held no frame, the first one is line %1.</source>
-        <translation>
-            <numerusform>%Ln line held no frame, it is line %1.</numerusform>
-            <numerusform>%Ln lines held no frame, the first one is line %1.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Open a candump log</source>
         <translation type="unfinished"></translation>
@@ -87,13 +405,6 @@
     <message>
         <source>Log file</source>
         <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>%Ln frame(s) received</source>
-        <translation>
-            <numerusform>%Ln frame received</numerusform>
-            <numerusform>%Ln frames received</numerusform>
-        </translation>
     </message>
     <message numerus="yes">
         <source>%Ln row(s) match the filter</source>
@@ -108,10 +419,6 @@
             <numerusform>paused, %Ln frame arrived since</numerusform>
             <numerusform>paused, %Ln frames arrived since</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Filter by message, Loc-ID or bytes, e.g. loco.speed or 0xC003</source>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>&amp;Resume</source>
@@ -130,14 +437,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Stop &amp;recording</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Record…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Recording to %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -150,10 +449,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Show the frames of a candump log file instead of the current ones</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>&amp;Keep:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -163,6 +458,112 @@
     </message>
     <message>
         <source>How many frames the table keeps; older ones are dropped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln frame(s) seen</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>filtering, %1 % done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the Loc-ID is not understood; write e.g. 0xC003, 49155 or dcc 3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln line(s) skipped; %1</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Find text, e.g. speed=0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All commands</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show only frames of one command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Loc-ID</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show only frames for one Loc-ID: 0xC003, 49155 or a protocol and address such as dcc 3, mfx 5, mm2 80</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop re&amp;cording</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Re&amp;cord…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Play the frames of a candump log file instead of the live ones</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Replayed %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Replaying %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>1× (as recorded)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>2×</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>10×</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>As fast as possible</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How fast the log plays</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Res&amp;ume replay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pa&amp;use replay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back to li&amp;ve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop the replay, clear the table and show the station&apos;s frames again</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -392,6 +793,33 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::DeviceSettingEditor</name>
+    <message>
+        <source>writing…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>accepted ✓</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>refused ✗</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer ✗</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device refused the value and keeps its setting.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device did not answer; its setting is unknown. Try again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::FrameDecoderPanel</name>
     <message>
         <source>unreadable</source>
@@ -465,6 +893,32 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::FunctionPad</name>
+    <message>
+        <source>on while held</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>on for %n s</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>on/off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>F%1: %2 (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The station did not acknowledge the last command: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::GaugeWidget</name>
     <message>
         <source>%1: no answer to the last request, the value is old</source>
@@ -486,6 +940,265 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Feedback contacts</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::LocomotiveFileModel</name>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Decoder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Icon</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Functions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MM2 (programmable)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MM2 (DIL switches)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MM (programmable)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MM2 (mLD/mSD)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DCC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mfx</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SX1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DCC %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mfx SID %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SX1 %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MM2 %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::LocomotiveForm</name>
+    <message>
+        <source>allowed: %1–%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Decoder:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Address:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Icon</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Trigger</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>latching</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>momentary</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>timed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>as in the file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::LocomotivePanel</name>
+    <message>
+        <source>New locomotive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enter the new locomotive and press Add.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Changed. Save to write lokomotive.cs2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deleted. Save to write lokomotive.cs2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete locomotive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete &apos;%1&apos; from the locomotive list?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The new mfx decoder is in the list as &apos;%1&apos;. Save to write lokomotive.cs2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save lokomotive.cs2 into a CS2 configuration folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not saved: %1. The edits are kept.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved to %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Locomotives</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n locomotive(s), changed and not saved</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n locomotive(s)</source>
+        <translation type="unfinished">
+            <numerusform>%n locomotive</numerusform>
+            <numerusform>%n locomotives</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Give the locomotive a name.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The name must be on one line.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Another locomotive is already called &apos;%1&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose the decoder type.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The address must be between %1 and %2 for this decoder.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; already uses this address.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>F%1 is not a function key (F0 to F31).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The icon of F%1 must be between %2 and %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The time of F%1 must be between %2 and %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Select a locomotive first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No station connected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The station has not sent its locomotive list (lokomotive.cs2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save to folder…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writes config/lokomotive.cs2 into the folder you choose</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Revert</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -610,6 +1323,26 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>Put every panel back where it was at the first start</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Keyboard</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Throttles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Locomotives</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Programming</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Overview</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::PowerStatus</name>
@@ -631,6 +1364,288 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Track power: off (stop)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::ProgrammingPanel</name>
+    <message>
+        <source>(address below)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MM2 decoders can be written (CV 1–256) but not read back.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mfx: CV 1–1023 with an index (read 0–63, write 1–63), on either track.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SX1: values 1–5 (address, top speed, acceleration, pulse width, stop sections), programming track only.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DCC: CV 1–1023; read on the programming track, write on either track.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Searching the track for new mfx decoders…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Searching: %1 of %2 bits of the decoder&apos;s UID known (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This address does not exist for the chosen protocol.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading CV %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writing CV %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No new mfx decoder answered. Decoders that are registered already take no part.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Found mfx decoder %1. Choose a SID and press Register; search again for more.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bound to SID %1, verifying…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>does not answer under SID %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>registered on SID %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CV %1.%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CV %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 = %2 (0x%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 written: %2, read back and verified.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 written: %2. Not verified: the decoder cannot be read back.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No value: the decoder did not answer the read (is it on the programming track?).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refused: the station could not write the CV.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refused by the station.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No answer from the station.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not sent: the station is not connected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wait: the station is still busy with the last programming command.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Only MM2, DCC, mfx and SX1 decoders can be programmed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MM2 decoders cannot be read: the station can only write their CVs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The CV must be between %1 and %2 for this protocol.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The mfx index must be between %1 and %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Only mfx CVs have an index.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SX1 decoders are programmed on the programming track only.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Programming modes are for DCC decoders only.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This DCC programming mode is reserved.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bit programming needs a bit position and value.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose a SID from 1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No station connected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New mfx decoders</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CV programming</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The station searches the track for one mfx decoder that is not registered yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mfx UID</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SID:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Register</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Binds the selected decoder to the SID, then checks that it answers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Locomotive:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Decoder:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CV:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Index:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DCC mode:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bit:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mfx SID</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DCC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MM2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SX1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>programming track</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>main track (write only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>direct</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>register</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>set</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::SpeedScale</name>
+    <message>
+        <source>%1 km/h</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -695,6 +1710,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>Overload on %1 (%2): the track power is off. Look for a short circuit or a derailed train, then switch the power on again.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Settings</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::StopGoButton</name>
@@ -716,6 +1735,167 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::ThrottlePanel</name>
+    <message>
+        <source>Add throttle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open one more throttle (up to %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Alt+1…9: keyboard on a throttle · Up/Down or +/−: speed · R: direction · 0–9: F0–F9 · E: stop this loco · Space stays STOP for the layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No station connected: throttles drive once a station is ready.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No throttle open. “Add throttle” opens one for a locomotive.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::ThrottleWidget</name>
+    <message>
+        <source>Choose a locomotive…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Locomotive 0x%1 (not on this station)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Locomotive 0x%1 (waiting for the station)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Alt+%1 puts the keyboard on this throttle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close this throttle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 · picture “%2”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 km/h</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>◀ Backward</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Forward ▶</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change direction (R); the station stops the locomotive first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop loco</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Emergency stop for this locomotive only (E)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Speed: %1 % (Up/Down, +/-, PageUp/PageDown)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The station did not acknowledge the last command: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::TrackPlanPanel</name>
+    <message>
+        <source>Cannot open the layout: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>There is no track plan to export: connect to a station or open a layout first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot export the layout: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Page %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a CS2 layout folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the layout into a folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open layout...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the track plan of a CS2 configuration folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Station&apos;s plan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the layout as a CS2 configuration folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No track plan: connect to a station or open a CS2 layout folder.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Files: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Live from the station</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::TrafficStatus</name>
     <message>
         <source>Frames in %1 · out %2</source>
@@ -723,6 +1903,80 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Frames received from and sent to the station since connecting; %1 malformed, %2 dropped, %3 reconnects</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::TurnoutKey</name>
+    <message>
+        <source>part of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>position unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch %1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2), address %3: %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Address %1 has no article; it switches as an MM2 address</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Address %1 belongs to %2, which starts on %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switching: waiting for the station to confirm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The station did not confirm the last switching</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no article</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::TurnoutPanel</name>
+    <message>
+        <source>Articles on the keyboard: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Article %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Page %1: %2–%3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The keyboard appears when a station is connected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Previous page (Page Up)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Next page (Page Down)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keyboard page: 16 addresses each, as on the Central Station</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -178,9 +178,9 @@ TEST(TrackPlanPanelFiles, ZoomChangesTheTileSize) {
 
 namespace {
 
-// Saves a picture of the panel into $STELLWERK_SCREENSHOTS (for docs/screenshots) when it is set.
+// Saves a picture of the panel into $STELLWERK_SCREENSHOT_DIR (for docs/screenshots) when it is set.
 void keepScreenshot(const QImage& image, const QString& name) {
-    const QString folder = qEnvironmentVariable("STELLWERK_SCREENSHOTS");
+    const QString folder = qEnvironmentVariable("STELLWERK_SCREENSHOT_DIR");
     if (!folder.isEmpty())
         image.save(folder + QLatin1Char('/') + name);
 }
