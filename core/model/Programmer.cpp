@@ -143,24 +143,18 @@ bool Programmer::discover() {
 }
 
 bool Programmer::bind(std::uint32_t mfxUid, std::uint16_t sid) {
-    ProgrammingResult result;
-    result.task = Task::Bind;
-    result.mfxUid = mfxUid;
-    result.sid = sid;
-    if (sid == 0) {
-        result.outcome = Outcome::Invalid;
-        result.problem = Problem::NoSid;
-        return refuse(result);
-    }
-    if (!start(Task::Bind))
-        return false;
-    request({0, false, 0, cs2::MfxBind{mfxUid, sid}}, result);
-    return true;
+    return registration(Task::Bind, mfxUid, sid, {0, false, 0, cs2::MfxBind{mfxUid, sid}});
 }
 
 bool Programmer::verify(std::uint32_t mfxUid, std::uint16_t sid) {
+    return registration(Task::Verify, mfxUid, sid, {0, false, 0, cs2::MfxVerify{mfxUid, sid, std::nullopt}});
+}
+
+// Bind and verify name a decoder and the SID it gets or should have; SID 0 is no SID.
+bool Programmer::registration(Task task, std::uint32_t mfxUid, std::uint16_t sid,
+                              const cs2::Message& message) {
     ProgrammingResult result;
-    result.task = Task::Verify;
+    result.task = task;
     result.mfxUid = mfxUid;
     result.sid = sid;
     if (sid == 0) {
@@ -168,9 +162,9 @@ bool Programmer::verify(std::uint32_t mfxUid, std::uint16_t sid) {
         result.problem = Problem::NoSid;
         return refuse(result);
     }
-    if (!start(Task::Verify))
+    if (!start(task))
         return false;
-    request({0, false, 0, cs2::MfxVerify{mfxUid, sid, std::nullopt}}, result);
+    request(message, result);
     return true;
 }
 

@@ -123,6 +123,8 @@ signals:
 
 private:
     bool start(ProgrammingResult::Task task);
+    bool registration(ProgrammingResult::Task task, std::uint32_t mfxUid, std::uint16_t sid,
+                      const cs2::Message& message);
     void request(const cs2::Message& message, ProgrammingResult result);
     void answered(ProgrammingResult result, const station::CommandResult& command);
     void observe(const station::StationUpdates& updates);

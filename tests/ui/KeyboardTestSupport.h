@@ -14,27 +14,8 @@ namespace stellwerk::ui::test {
 
 inline constexpr int CommandMs = 5000; // generous for a loaded machine
 
-class DemoStation {
-public:
-    DemoStation() : station_(sim::StationLayout::demo()) {}
-
-    bool start() {
-        sim::StationServerSettings settings;
-        settings.listenAddress = QHostAddress(QHostAddress::LocalHost);
-        settings.udp = false;
-        settings.tcpPort = 0;
-        server_ = std::make_unique<sim::StationServer>(station_, settings);
-        return server_->listen();
-    }
-    // The station goes away: commands get no answer.
-    void stop() { server_.reset(); }
-    QString url() const { return QStringLiteral("tcp://127.0.0.1:%1").arg(server_->tcpPort()); }
-    sim::SimulatedStation& station() { return station_; }
-
-private:
-    sim::SimulatedStation station_;
-    std::unique_ptr<sim::StationServer> server_;
-};
+// The demo layout's simulated CS2 with the station at hand (TestStation offers it).
+using DemoStation = TestStation;
 
 // A controller on the station: a connection and the railway of its session.
 class Controller {
