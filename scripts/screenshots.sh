@@ -11,7 +11,7 @@ trap 'rm -rf "$config"' EXIT
 mkdir -p "$config/Stellwerk"
 printf '[throttles]\nlocomotives=0x4001, 0x4002\n' >"$config/Stellwerk/Stellwerk.conf"
 
-app() { XDG_CONFIG_HOME=$config xvfb-run -a -s "-screen 0 1280x800x24" build/app/gui/stellwerk "$@"; }
+app() { XDG_CONFIG_HOME=$config xvfb-run -a -s "-screen 0 1600x1000x24" build/app/gui/stellwerk "$@"; }
 
 app --screenshot "$shots/main-window.png"
 LANG=de_DE.UTF-8 app --screenshot "$shots/main-window-de.png"

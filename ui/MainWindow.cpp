@@ -27,7 +27,9 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QEvent>
+#include <QGuiApplication>
 #include <QMenuBar>
+#include <QScreen>
 #include <QStatusBar>
 #include <QToolBar>
 
@@ -38,7 +40,7 @@ MainWindow::MainWindow(Translations& translations, QWidget* parent)
     setObjectName(QStringLiteral("mainWindow"));
     setWindowTitle(QStringLiteral("Stellwerk"));
     setWindowIcon(applicationIcon());
-    resize(1280, 800);
+    resize(firstSize());
     createPanels();
     createToolBar();
     createFileMenu();
@@ -48,6 +50,13 @@ MainWindow::MainWindow(Translations& translations, QWidget* parent)
     createStatusBar();
     retranslate();
     m_workspace->restore();
+}
+
+// Without a remembered size: most of the screen, as a control desk wants the room, but not beyond it.
+QSize MainWindow::firstSize() {
+    const QScreen* screen = QGuiApplication::primaryScreen();
+    const QSize available = screen ? screen->availableGeometry().size() : QSize(1280, 800);
+    return QSize(1280, 800).expandedTo(available * 9 / 10).boundedTo(available);
 }
 
 void MainWindow::changeEvent(QEvent* event) {
@@ -93,7 +102,7 @@ void MainWindow::createPanels() {
     // A first arrangement in which the plan keeps most of a laptop's screen.
     resizeDocks({m_workspace->dockOf(m_turnoutPanel), m_workspace->dockOf(m_throttlePanel)}, {330, 360},
                 Qt::Horizontal);
-    resizeDocks({m_workspace->dockOf(m_layoutOverview)}, {210}, Qt::Vertical);
+    resizeDocks({m_workspace->dockOf(m_layoutOverview)}, {170}, Qt::Vertical);
 }
 
 void MainWindow::createToolBar() {

@@ -72,6 +72,7 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    static QSize firstSize();
     void createPanels();
     void createToolBar();
     void createFileMenu();
