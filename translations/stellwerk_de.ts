@@ -20,325 +20,325 @@
     <name>AccessoryIcon</name>
     <message>
         <source>unknown</source>
-        <translation type="unfinished">unbekannt</translation>
+        <translation>unbekannt</translation>
     </message>
     <message>
         <source>Straight</source>
-        <translation type="unfinished"></translation>
+        <translation>Gerade</translation>
     </message>
     <message>
         <source>Diverging</source>
-        <translation type="unfinished"></translation>
+        <translation>Abzweig</translation>
     </message>
     <message>
         <source>Right</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechts</translation>
     </message>
     <message>
         <source>Left</source>
-        <translation type="unfinished"></translation>
+        <translation>Links</translation>
     </message>
     <message>
         <source>Straight, diverging</source>
-        <translation type="unfinished"></translation>
+        <translation>Gerade, Abzweig</translation>
     </message>
     <message>
         <source>Diverging, straight</source>
-        <translation type="unfinished"></translation>
+        <translation>Abzweig, Gerade</translation>
     </message>
     <message>
         <source>Hp0</source>
-        <translation type="unfinished"></translation>
+        <translation>Hp0</translation>
     </message>
     <message>
         <source>Hp1</source>
-        <translation type="unfinished"></translation>
+        <translation>Hp1</translation>
     </message>
     <message>
         <source>Sh1</source>
-        <translation type="unfinished"></translation>
+        <translation>Sh1</translation>
     </message>
     <message>
         <source>Hp2</source>
-        <translation type="unfinished"></translation>
+        <translation>Hp2</translation>
     </message>
     <message>
         <source>Sh0</source>
-        <translation type="unfinished"></translation>
+        <translation>Sh0</translation>
     </message>
     <message>
         <source>Uncouple</source>
-        <translation type="unfinished"></translation>
+        <translation>Entkuppeln</translation>
     </message>
     <message>
         <source>Rest</source>
-        <translation type="unfinished"></translation>
+        <translation>Grundstellung</translation>
     </message>
     <message>
         <source>On</source>
-        <translation type="unfinished"></translation>
+        <translation>An</translation>
     </message>
     <message>
         <source>Off</source>
-        <translation type="unfinished"></translation>
+        <translation>Aus</translation>
     </message>
     <message>
         <source>Track %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Gleis %1</translation>
     </message>
     <message>
         <source>Green</source>
-        <translation type="unfinished"></translation>
+        <translation>Grün</translation>
     </message>
     <message>
         <source>Red</source>
-        <translation type="unfinished"></translation>
+        <translation>Rot</translation>
     </message>
 </context>
 <context>
     <name>FunctionIcons</name>
     <message>
         <source>Function</source>
-        <translation type="unfinished"></translation>
+        <translation>Funktion</translation>
     </message>
     <message>
         <source>Light</source>
-        <translation type="unfinished"></translation>
+        <translation>Licht</translation>
     </message>
     <message>
         <source>Interior light</source>
-        <translation type="unfinished"></translation>
+        <translation>Innenbeleuchtung</translation>
     </message>
     <message>
         <source>Cab light</source>
-        <translation type="unfinished"></translation>
+        <translation>Führerstandsbeleuchtung</translation>
     </message>
     <message>
         <source>Sound</source>
-        <translation type="unfinished"></translation>
+        <translation>Geräusch</translation>
     </message>
     <message>
         <source>Horn</source>
-        <translation type="unfinished"></translation>
+        <translation>Horn</translation>
     </message>
     <message>
         <source>Whistle</source>
-        <translation type="unfinished"></translation>
+        <translation>Pfeife</translation>
     </message>
     <message>
         <source>Bell</source>
-        <translation type="unfinished"></translation>
+        <translation>Glocke</translation>
     </message>
     <message>
         <source>Smoke</source>
-        <translation type="unfinished"></translation>
+        <translation>Rauchgenerator</translation>
     </message>
     <message>
         <source>Coupler</source>
-        <translation type="unfinished"></translation>
+        <translation>Kupplung</translation>
     </message>
     <message>
         <source>Shunting speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Rangiergang</translation>
     </message>
     <message>
         <source>Brake sound</source>
-        <translation type="unfinished"></translation>
+        <translation>Bremsgeräusch</translation>
     </message>
     <message>
         <source>Pantograph</source>
-        <translation type="unfinished"></translation>
+        <translation>Stromabnehmer</translation>
     </message>
     <message>
         <source>Acceleration delay off</source>
-        <translation type="unfinished"></translation>
+        <translation>ABV aus</translation>
     </message>
     <message>
         <source>Announcement</source>
-        <translation type="unfinished"></translation>
+        <translation>Ansage</translation>
     </message>
 </context>
 <context>
     <name>TrackTileInfo</name>
     <message>
         <source>Straight track</source>
-        <translation type="unfinished"></translation>
+        <translation>Gerades Gleis</translation>
     </message>
     <message>
         <source>Curve</source>
-        <translation type="unfinished"></translation>
+        <translation>Bogen</translation>
     </message>
     <message>
         <source>Double curve</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelbogen</translation>
     </message>
     <message>
         <source>Crossing</source>
-        <translation type="unfinished"></translation>
+        <translation>Kreuzung</translation>
     </message>
     <message>
         <source>Underpass</source>
-        <translation type="unfinished"></translation>
+        <translation>Unterführung</translation>
     </message>
     <message>
         <source>Buffer stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Prellbock</translation>
     </message>
     <message>
         <source>Tunnel</source>
-        <translation type="unfinished"></translation>
+        <translation>Tunnel</translation>
     </message>
     <message>
         <source>Left turnout</source>
-        <translation type="unfinished"></translation>
+        <translation>Weiche links</translation>
     </message>
     <message>
         <source>Right turnout</source>
-        <translation type="unfinished"></translation>
+        <translation>Weiche rechts</translation>
     </message>
     <message>
         <source>Y turnout</source>
-        <translation type="unfinished"></translation>
+        <translation>Y-Weiche</translation>
     </message>
     <message>
         <source>Three-way turnout</source>
-        <translation type="unfinished"></translation>
+        <translation>Dreiwegweiche</translation>
     </message>
     <message>
         <source>Double slip</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelkreuzweiche</translation>
     </message>
     <message>
         <source>Double slip (two drives)</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelkreuzweiche (zwei Antriebe)</translation>
     </message>
     <message>
         <source>Scissors crossover</source>
-        <translation type="unfinished"></translation>
+        <translation>Hosenträger</translation>
     </message>
     <message>
         <source>S88 contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Rückmeldekontakt (S88)</translation>
     </message>
     <message>
         <source>S88 contact (curve)</source>
-        <translation type="unfinished"></translation>
+        <translation>Rückmeldekontakt (S88, Bogen)</translation>
     </message>
     <message>
         <source>S88 contact (double curve)</source>
-        <translation type="unfinished"></translation>
+        <translation>Rückmeldekontakt (S88, Doppelbogen)</translation>
     </message>
     <message>
         <source>Link to a page</source>
-        <translation type="unfinished"></translation>
+        <translation>Verweis auf eine Seite</translation>
     </message>
     <message>
         <source>Route button</source>
-        <translation type="unfinished"></translation>
+        <translation>Fahrstraßentaste</translation>
     </message>
     <message>
         <source>Text</source>
-        <translation type="unfinished"></translation>
+        <translation>Text</translation>
     </message>
     <message>
         <source>Level crossing</source>
-        <translation type="unfinished"></translation>
+        <translation>Bahnübergang</translation>
     </message>
     <message>
         <source>Slip turnout</source>
-        <translation type="unfinished"></translation>
+        <translation>Kreuzungsweiche</translation>
     </message>
     <message>
         <source>Semaphore signal</source>
-        <translation type="unfinished"></translation>
+        <translation>Formsignal</translation>
     </message>
     <message>
         <source>Signal</source>
-        <translation type="unfinished"></translation>
+        <translation>Signal</translation>
     </message>
     <message>
         <source>Uncoupler</source>
-        <translation type="unfinished"></translation>
+        <translation>Entkupplungsgleis</translation>
     </message>
     <message>
         <source>Lamp</source>
-        <translation type="unfinished"></translation>
+        <translation>Lampe</translation>
     </message>
     <message>
         <source>Output</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausgang</translation>
     </message>
     <message>
         <source>Turntable</source>
-        <translation type="unfinished"></translation>
+        <translation>Drehscheibe</translation>
     </message>
     <message>
         <source>Transfer table</source>
-        <translation type="unfinished"></translation>
+        <translation>Schiebebühne</translation>
     </message>
     <message>
         <source>Unknown element (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Unbekanntes Element (%1)</translation>
     </message>
     <message>
         <source>Stop (Hp0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Halt (Hp0)</translation>
     </message>
     <message>
         <source>Proceed (Hp1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Fahrt (Hp1)</translation>
     </message>
     <message>
         <source>Slow (Hp2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Langsamfahrt (Hp2)</translation>
     </message>
     <message>
         <source>Shunting (Sh1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Rangierfahrt (Sh1)</translation>
     </message>
     <message>
         <source>Stop (Sh0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Halt (Sh0)</translation>
     </message>
     <message>
         <source>Left</source>
-        <translation type="unfinished"></translation>
+        <translation>Links</translation>
     </message>
     <message>
         <source>Straight</source>
-        <translation type="unfinished"></translation>
+        <translation>Gerade</translation>
     </message>
     <message>
         <source>Right</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechts</translation>
     </message>
     <message>
         <source>Diverging</source>
-        <translation type="unfinished"></translation>
+        <translation>Abzweig</translation>
     </message>
     <message>
         <source>Off</source>
-        <translation type="unfinished"></translation>
+        <translation>Aus</translation>
     </message>
     <message>
         <source>On</source>
-        <translation type="unfinished"></translation>
+        <translation>An</translation>
     </message>
     <message>
         <source>Position %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Stellung %1</translation>
     </message>
     <message>
         <source>Accessory %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Magnetartikel %1</translation>
     </message>
     <message>
         <source>Contact %1 (device %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Kontakt %1 (Gerät %2)</translation>
     </message>
     <message>
         <source>Route %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Fahrstraße %1</translation>
     </message>
 </context>
 <context>
@@ -365,11 +365,11 @@
     </message>
     <message>
         <source>← received</source>
-        <translation type="unfinished"></translation>
+        <translation>← empfangen</translation>
     </message>
     <message>
         <source>→ sent</source>
-        <translation type="unfinished"></translation>
+        <translation>→ gesendet</translation>
     </message>
 </context>
 <context>
@@ -462,109 +462,109 @@
     </message>
     <message>
         <source>line %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeile %1: %2</translation>
     </message>
     <message>
         <source>%1 cannot be read: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
     <message numerus="yes">
         <source>%Ln frame(s) seen</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%Ln Telegramm erfasst</numerusform>
+            <numerusform>%Ln Telegramme erfasst</numerusform>
         </translation>
     </message>
     <message>
         <source>filtering, %1 % done</source>
-        <translation type="unfinished"></translation>
+        <translation>wird gefiltert, %1 % erledigt</translation>
     </message>
     <message>
         <source>the Loc-ID is not understood; write e.g. 0xC003, 49155 or dcc 3</source>
-        <translation type="unfinished"></translation>
+        <translation>die Loc-ID ist nicht verständlich; z. B. 0xC003, 49155 oder dcc 3 schreiben</translation>
     </message>
     <message numerus="yes">
         <source>%Ln line(s) skipped; %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%Ln Zeile übersprungen; %1</numerusform>
+            <numerusform>%Ln Zeilen übersprungen; %1</numerusform>
         </translation>
     </message>
     <message>
         <source>Find text, e.g. speed=0</source>
-        <translation type="unfinished"></translation>
+        <translation>Text suchen, z. B. speed=0</translation>
     </message>
     <message>
         <source>All commands</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle Befehle</translation>
     </message>
     <message>
         <source>Show only frames of one command</source>
-        <translation type="unfinished"></translation>
+        <translation>Nur Telegramme eines Befehls zeigen</translation>
     </message>
     <message>
         <source>Loc-ID</source>
-        <translation type="unfinished"></translation>
+        <translation>Loc-ID</translation>
     </message>
     <message>
         <source>Show only frames for one Loc-ID: 0xC003, 49155 or a protocol and address such as dcc 3, mfx 5, mm2 80</source>
-        <translation type="unfinished"></translation>
+        <translation>Nur Telegramme einer Loc-ID zeigen: 0xC003, 49155 oder Protokoll und Adresse wie dcc 3, mfx 5, mm2 80</translation>
     </message>
     <message>
         <source>Stop re&amp;cording</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Aufzeichnung beenden</translation>
     </message>
     <message>
         <source>Re&amp;cord…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Aufzeichnen …</translation>
     </message>
     <message>
         <source>Play the frames of a candump log file instead of the live ones</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Telegramme einer candump-Protokolldatei statt der laufenden abspielen</translation>
     </message>
     <message>
         <source>Replayed %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 abgespielt</translation>
     </message>
     <message>
         <source>Replaying %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 wird abgespielt</translation>
     </message>
     <message>
         <source>1× (as recorded)</source>
-        <translation type="unfinished"></translation>
+        <translation>1× (wie aufgezeichnet)</translation>
     </message>
     <message>
         <source>2×</source>
-        <translation type="unfinished"></translation>
+        <translation>2×</translation>
     </message>
     <message>
         <source>10×</source>
-        <translation type="unfinished"></translation>
+        <translation>10×</translation>
     </message>
     <message>
         <source>As fast as possible</source>
-        <translation type="unfinished"></translation>
+        <translation>So schnell wie möglich</translation>
     </message>
     <message>
         <source>How fast the log plays</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie schnell das Protokoll abgespielt wird</translation>
     </message>
     <message>
         <source>Res&amp;ume replay</source>
-        <translation type="unfinished"></translation>
+        <translation>Wiedergabe &amp;fortsetzen</translation>
     </message>
     <message>
         <source>Pa&amp;use replay</source>
-        <translation type="unfinished"></translation>
+        <translation>Wiedergabe an&amp;halten</translation>
     </message>
     <message>
         <source>Back to li&amp;ve</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Zurück zur Live-Anzeige</translation>
     </message>
     <message>
         <source>Stop the replay, clear the table and show the station&apos;s frames again</source>
-        <translation type="unfinished"></translation>
+        <translation>Wiedergabe beenden, Tabelle leeren und wieder die Telegramme der Zentrale zeigen</translation>
     </message>
 </context>
 <context>
@@ -799,27 +799,27 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <name>stellwerk::ui::DeviceSettingEditor</name>
     <message>
         <source>writing…</source>
-        <translation type="unfinished"></translation>
+        <translation>wird geschrieben …</translation>
     </message>
     <message>
         <source>accepted ✓</source>
-        <translation type="unfinished"></translation>
+        <translation>übernommen ✓</translation>
     </message>
     <message>
         <source>refused ✗</source>
-        <translation type="unfinished"></translation>
+        <translation>abgelehnt ✗</translation>
     </message>
     <message>
         <source>no answer ✗</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Antwort ✗</translation>
     </message>
     <message>
         <source>The device refused the value and keeps its setting.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Gerät hat den Wert abgelehnt und behält seine Einstellung.</translation>
     </message>
     <message>
         <source>The device did not answer; its setting is unknown. Try again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Gerät hat nicht geantwortet; seine Einstellung ist unbekannt. Bitte erneut versuchen.</translation>
     </message>
 </context>
 <context>
@@ -899,26 +899,26 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <name>stellwerk::ui::FunctionPad</name>
     <message>
         <source>on while held</source>
-        <translation type="unfinished"></translation>
+        <translation>an, solange gedrückt</translation>
     </message>
     <message numerus="yes">
         <source>on for %n s</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n s lang an</numerusform>
+            <numerusform>%n s lang an</numerusform>
         </translation>
     </message>
     <message>
         <source>on/off</source>
-        <translation type="unfinished"></translation>
+        <translation>an/aus</translation>
     </message>
     <message>
         <source>F%1: %2 (%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>F%1: %2 (%3)</translation>
     </message>
     <message>
         <source>The station did not acknowledge the last command: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zentrale hat den letzten Befehl nicht bestätigt: %1</translation>
     </message>
 </context>
 <context>
@@ -950,259 +950,259 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <name>stellwerk::ui::LocomotiveFileModel</name>
     <message>
         <source>Name</source>
-        <translation type="unfinished">Name</translation>
+        <translation>Name</translation>
     </message>
     <message>
         <source>Address</source>
-        <translation type="unfinished">Adresse</translation>
+        <translation>Adresse</translation>
     </message>
     <message>
         <source>Decoder</source>
-        <translation type="unfinished"></translation>
+        <translation>Decoder</translation>
     </message>
     <message>
         <source>Icon</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild</translation>
     </message>
     <message>
         <source>Functions</source>
-        <translation type="unfinished"></translation>
+        <translation>Funktionen</translation>
     </message>
     <message>
         <source>MM2 (programmable)</source>
-        <translation type="unfinished"></translation>
+        <translation>MM2 (programmierbar)</translation>
     </message>
     <message>
         <source>MM2 (DIL switches)</source>
-        <translation type="unfinished"></translation>
+        <translation>MM2 (DIL-Schalter)</translation>
     </message>
     <message>
         <source>MM (programmable)</source>
-        <translation type="unfinished"></translation>
+        <translation>MM (programmierbar)</translation>
     </message>
     <message>
         <source>MM2 (mLD/mSD)</source>
-        <translation type="unfinished"></translation>
+        <translation>MM2 (mLD/mSD)</translation>
     </message>
     <message>
         <source>DCC</source>
-        <translation type="unfinished"></translation>
+        <translation>DCC</translation>
     </message>
     <message>
         <source>mfx</source>
-        <translation type="unfinished"></translation>
+        <translation>mfx</translation>
     </message>
     <message>
         <source>SX1</source>
-        <translation type="unfinished"></translation>
+        <translation>SX1</translation>
     </message>
     <message>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>keiner</translation>
     </message>
     <message>
         <source>DCC %1</source>
-        <translation type="unfinished"></translation>
+        <translation>DCC %1</translation>
     </message>
     <message>
         <source>mfx SID %1</source>
-        <translation type="unfinished"></translation>
+        <translation>mfx SID %1</translation>
     </message>
     <message>
         <source>SX1 %1</source>
-        <translation type="unfinished"></translation>
+        <translation>SX1 %1</translation>
     </message>
     <message>
         <source>MM2 %1</source>
-        <translation type="unfinished"></translation>
+        <translation>MM2 %1</translation>
     </message>
 </context>
 <context>
     <name>stellwerk::ui::LocomotiveForm</name>
     <message>
         <source>allowed: %1–%2</source>
-        <translation type="unfinished"></translation>
+        <translation>erlaubt: %1–%2</translation>
     </message>
     <message>
         <source>Name:</source>
-        <translation type="unfinished"></translation>
+        <translation>Name:</translation>
     </message>
     <message>
         <source>Decoder:</source>
-        <translation type="unfinished"></translation>
+        <translation>Decoder:</translation>
     </message>
     <message>
         <source>Address:</source>
-        <translation type="unfinished"></translation>
+        <translation>Adresse:</translation>
     </message>
     <message>
         <source>Icon</source>
-        <translation type="unfinished"></translation>
+        <translation>Symbol</translation>
     </message>
     <message>
         <source>Trigger</source>
-        <translation type="unfinished"></translation>
+        <translation>Schaltart</translation>
     </message>
     <message>
         <source>Time</source>
-        <translation type="unfinished">Zeit</translation>
+        <translation>Zeit</translation>
     </message>
     <message>
         <source>latching</source>
-        <translation type="unfinished"></translation>
+        <translation>Dauerfunktion</translation>
     </message>
     <message>
         <source>momentary</source>
-        <translation type="unfinished"></translation>
+        <translation>Momentfunktion</translation>
     </message>
     <message>
         <source>timed</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeitfunktion</translation>
     </message>
     <message>
         <source>as in the file</source>
-        <translation type="unfinished"></translation>
+        <translation>wie in der Datei</translation>
     </message>
     <message>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>keins</translation>
     </message>
 </context>
 <context>
     <name>stellwerk::ui::LocomotivePanel</name>
     <message>
         <source>New locomotive</source>
-        <translation type="unfinished"></translation>
+        <translation>Neue Lok</translation>
     </message>
     <message>
         <source>Enter the new locomotive and press Add.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die neue Lok eintragen und „Hinzufügen“ drücken.</translation>
     </message>
     <message>
         <source>Changed. Save to write lokomotive.cs2.</source>
-        <translation type="unfinished"></translation>
+        <translation>Geändert. Speichern schreibt lokomotive.cs2.</translation>
     </message>
     <message>
         <source>Deleted. Save to write lokomotive.cs2.</source>
-        <translation type="unfinished"></translation>
+        <translation>Gelöscht. Speichern schreibt lokomotive.cs2.</translation>
     </message>
     <message>
         <source>Delete locomotive</source>
-        <translation type="unfinished"></translation>
+        <translation>Lok löschen</translation>
     </message>
     <message>
         <source>Delete &apos;%1&apos; from the locomotive list?</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ aus der Lokliste löschen?</translation>
     </message>
     <message>
         <source>The new mfx decoder is in the list as &apos;%1&apos;. Save to write lokomotive.cs2.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der neue mfx-Decoder steht als „%1“ in der Liste. Speichern schreibt lokomotive.cs2.</translation>
     </message>
     <message>
         <source>Save lokomotive.cs2 into a CS2 configuration folder</source>
-        <translation type="unfinished"></translation>
+        <translation>lokomotive.cs2 in einen CS2-Konfigurationsordner speichern</translation>
     </message>
     <message>
         <source>Not saved: %1. The edits are kept.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht gespeichert: %1. Die Änderungen bleiben erhalten.</translation>
     </message>
     <message>
         <source>Saved to %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>In %1 gespeichert.</translation>
     </message>
     <message>
         <source>Add</source>
-        <translation type="unfinished"></translation>
+        <translation>Hinzufügen</translation>
     </message>
     <message>
         <source>Apply</source>
-        <translation type="unfinished"></translation>
+        <translation>Übernehmen</translation>
     </message>
     <message>
         <source>Locomotives</source>
-        <translation type="unfinished">Loks</translation>
+        <translation>Loks</translation>
     </message>
     <message numerus="yes">
         <source>%n locomotive(s), changed and not saved</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Lok, geändert und nicht gespeichert</numerusform>
+            <numerusform>%n Loks, geändert und nicht gespeichert</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>%n locomotive(s)</source>
-        <translation type="unfinished">
+        <translation>
             <numerusform>%n Lok</numerusform>
             <numerusform>%n Loks</numerusform>
         </translation>
     </message>
     <message>
         <source>Give the locomotive a name.</source>
-        <translation type="unfinished"></translation>
+        <translation>Bitte der Lok einen Namen geben.</translation>
     </message>
     <message>
         <source>The name must be on one line.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Name darf nur eine Zeile lang sein.</translation>
     </message>
     <message>
         <source>Another locomotive is already called &apos;%1&apos;.</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine andere Lok heißt bereits „%1“.</translation>
     </message>
     <message>
         <source>Choose the decoder type.</source>
-        <translation type="unfinished"></translation>
+        <translation>Bitte den Decodertyp wählen.</translation>
     </message>
     <message>
         <source>The address must be between %1 and %2 for this decoder.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Adresse muss für diesen Decoder zwischen %1 und %2 liegen.</translation>
     </message>
     <message>
         <source>&apos;%1&apos; already uses this address.</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ verwendet diese Adresse bereits.</translation>
     </message>
     <message>
         <source>F%1 is not a function key (F0 to F31).</source>
-        <translation type="unfinished"></translation>
+        <translation>F%1 ist keine Funktionstaste (F0 bis F31).</translation>
     </message>
     <message>
         <source>The icon of F%1 must be between %2 and %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Symbol von F%1 muss zwischen %2 und %3 liegen.</translation>
     </message>
     <message>
         <source>The time of F%1 must be between %2 and %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zeit von F%1 muss zwischen %2 und %3 liegen.</translation>
     </message>
     <message>
         <source>Select a locomotive first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Bitte zuerst eine Lok auswählen.</translation>
     </message>
     <message>
         <source>No station connected.</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Zentrale verbunden.</translation>
     </message>
     <message>
         <source>The station has not sent its locomotive list (lokomotive.cs2).</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zentrale hat ihre Lokliste (lokomotive.cs2) nicht gesendet.</translation>
     </message>
     <message>
         <source>New</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu</translation>
     </message>
     <message>
         <source>Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>Löschen</translation>
     </message>
     <message>
         <source>Save to folder…</source>
-        <translation type="unfinished"></translation>
+        <translation>In Ordner speichern …</translation>
     </message>
     <message>
         <source>Writes config/lokomotive.cs2 into the folder you choose</source>
-        <translation type="unfinished"></translation>
+        <translation>Schreibt config/lokomotive.cs2 in den gewählten Ordner</translation>
     </message>
     <message>
         <source>Revert</source>
-        <translation type="unfinished"></translation>
+        <translation>Verwerfen</translation>
     </message>
 </context>
 <context>
@@ -1328,23 +1328,23 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     </message>
     <message>
         <source>Keyboard</source>
-        <translation type="unfinished"></translation>
+        <translation>Keyboard</translation>
     </message>
     <message>
         <source>Throttles</source>
-        <translation type="unfinished"></translation>
+        <translation>Fahrpulte</translation>
     </message>
     <message>
         <source>Locomotives</source>
-        <translation type="unfinished">Loks</translation>
+        <translation>Loks</translation>
     </message>
     <message>
         <source>Programming</source>
-        <translation type="unfinished"></translation>
+        <translation>Programmierung</translation>
     </message>
     <message>
         <source>Overview</source>
-        <translation type="unfinished"></translation>
+        <translation>Übersicht</translation>
     </message>
 </context>
 <context>
@@ -1374,282 +1374,282 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <name>stellwerk::ui::ProgrammingPanel</name>
     <message>
         <source>(address below)</source>
-        <translation type="unfinished"></translation>
+        <translation>(Adresse unten)</translation>
     </message>
     <message>
         <source>MM2 decoders can be written (CV 1–256) but not read back.</source>
-        <translation type="unfinished"></translation>
+        <translation>MM2-Decoder lassen sich schreiben (CV 1–256), aber nicht auslesen.</translation>
     </message>
     <message>
         <source>mfx: CV 1–1023 with an index (read 0–63, write 1–63), on either track.</source>
-        <translation type="unfinished"></translation>
+        <translation>mfx: CV 1–1023 mit Index (lesen 0–63, schreiben 1–63), auf Haupt- und Programmiergleis.</translation>
     </message>
     <message>
         <source>SX1: values 1–5 (address, top speed, acceleration, pulse width, stop sections), programming track only.</source>
-        <translation type="unfinished"></translation>
+        <translation>SX1: Werte 1–5 (Adresse, Höchstgeschwindigkeit, Beschleunigung, Impulsbreite, Halteabschnitte), nur auf dem Programmiergleis.</translation>
     </message>
     <message>
         <source>DCC: CV 1–1023; read on the programming track, write on either track.</source>
-        <translation type="unfinished"></translation>
+        <translation>DCC: CV 1–1023; lesen auf dem Programmiergleis, schreiben auf Haupt- und Programmiergleis.</translation>
     </message>
     <message>
         <source>Searching the track for new mfx decoders…</source>
-        <translation type="unfinished"></translation>
+        <translation>Neue mfx-Decoder auf dem Gleis werden gesucht …</translation>
     </message>
     <message>
         <source>Searching: %1 of %2 bits of the decoder&apos;s UID known (%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Suche: %1 von %2 Bits der Decoder-UID bekannt (%3)</translation>
     </message>
     <message>
         <source>This address does not exist for the chosen protocol.</source>
-        <translation type="unfinished"></translation>
+        <translation>Diese Adresse gibt es im gewählten Protokoll nicht.</translation>
     </message>
     <message>
         <source>Reading CV %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>CV %1 wird gelesen …</translation>
     </message>
     <message>
         <source>Writing CV %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>CV %1 wird geschrieben …</translation>
     </message>
     <message>
         <source>No new mfx decoder answered. Decoders that are registered already take no part.</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein neuer mfx-Decoder hat geantwortet. Bereits angemeldete Decoder nehmen an der Suche nicht teil.</translation>
     </message>
     <message>
         <source>found</source>
-        <translation type="unfinished"></translation>
+        <translation>gefunden</translation>
     </message>
     <message>
         <source>Found mfx decoder %1. Choose a SID and press Register; search again for more.</source>
-        <translation type="unfinished"></translation>
+        <translation>mfx-Decoder %1 gefunden. Eine SID wählen und „Anmelden“ drücken; für weitere erneut suchen.</translation>
     </message>
     <message>
         <source>bound to SID %1, verifying…</source>
-        <translation type="unfinished"></translation>
+        <translation>an SID %1 gebunden, wird geprüft …</translation>
     </message>
     <message>
         <source>does not answer under SID %1</source>
-        <translation type="unfinished"></translation>
+        <translation>antwortet nicht unter SID %1</translation>
     </message>
     <message>
         <source>registered on SID %1</source>
-        <translation type="unfinished"></translation>
+        <translation>unter SID %1 angemeldet</translation>
     </message>
     <message>
         <source>CV %1.%2</source>
-        <translation type="unfinished"></translation>
+        <translation>CV %1.%2</translation>
     </message>
     <message>
         <source>CV %1</source>
-        <translation type="unfinished"></translation>
+        <translation>CV %1</translation>
     </message>
     <message>
         <source>%1 = %2 (0x%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 = %2 (0x%3)</translation>
     </message>
     <message>
         <source>%1 written: %2, read back and verified.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 geschrieben: %2, zurückgelesen und geprüft.</translation>
     </message>
     <message>
         <source>%1 written: %2. Not verified: the decoder cannot be read back.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 geschrieben: %2. Nicht geprüft: Der Decoder lässt sich nicht auslesen.</translation>
     </message>
     <message>
         <source>No value: the decoder did not answer the read (is it on the programming track?).</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Wert: Der Decoder hat auf das Lesen nicht geantwortet (steht er auf dem Programmiergleis?).</translation>
     </message>
     <message>
         <source>Refused: the station could not write the CV.</source>
-        <translation type="unfinished"></translation>
+        <translation>Abgelehnt: Die Zentrale konnte die CV nicht schreiben.</translation>
     </message>
     <message>
         <source>Refused by the station.</source>
-        <translation type="unfinished"></translation>
+        <translation>Von der Zentrale abgelehnt.</translation>
     </message>
     <message>
         <source>No answer from the station.</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Antwort von der Zentrale.</translation>
     </message>
     <message>
         <source>Not sent: the station is not connected.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht gesendet: Die Zentrale ist nicht verbunden.</translation>
     </message>
     <message>
         <source>Wait: the station is still busy with the last programming command.</source>
-        <translation type="unfinished"></translation>
+        <translation>Bitte warten: Die Zentrale ist noch mit dem letzten Programmierbefehl beschäftigt.</translation>
     </message>
     <message>
         <source>Only MM2, DCC, mfx and SX1 decoders can be programmed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nur MM2-, DCC-, mfx- und SX1-Decoder lassen sich programmieren.</translation>
     </message>
     <message>
         <source>MM2 decoders cannot be read: the station can only write their CVs.</source>
-        <translation type="unfinished"></translation>
+        <translation>MM2-Decoder lassen sich nicht lesen: Die Zentrale kann ihre CVs nur schreiben.</translation>
     </message>
     <message>
         <source>The CV must be between %1 and %2 for this protocol.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die CV muss für dieses Protokoll zwischen %1 und %2 liegen.</translation>
     </message>
     <message>
         <source>The mfx index must be between %1 and %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der mfx-Index muss zwischen %1 und %2 liegen.</translation>
     </message>
     <message>
         <source>Only mfx CVs have an index.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nur mfx-CVs haben einen Index.</translation>
     </message>
     <message>
         <source>SX1 decoders are programmed on the programming track only.</source>
-        <translation type="unfinished"></translation>
+        <translation>SX1-Decoder werden nur auf dem Programmiergleis programmiert.</translation>
     </message>
     <message>
         <source>Programming modes are for DCC decoders only.</source>
-        <translation type="unfinished"></translation>
+        <translation>Programmierarten gibt es nur für DCC-Decoder.</translation>
     </message>
     <message>
         <source>This DCC programming mode is reserved.</source>
-        <translation type="unfinished"></translation>
+        <translation>Diese DCC-Programmierart ist reserviert.</translation>
     </message>
     <message>
         <source>Bit programming needs a bit position and value.</source>
-        <translation type="unfinished"></translation>
+        <translation>Bitweises Programmieren braucht eine Bitposition und einen Wert.</translation>
     </message>
     <message>
         <source>Choose a SID from 1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Bitte eine SID ab 1 wählen.</translation>
     </message>
     <message>
         <source>No station connected.</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Zentrale verbunden.</translation>
     </message>
     <message>
         <source>New mfx decoders</source>
-        <translation type="unfinished"></translation>
+        <translation>Neue mfx-Decoder</translation>
     </message>
     <message>
         <source>CV programming</source>
-        <translation type="unfinished"></translation>
+        <translation>CV-Programmierung</translation>
     </message>
     <message>
         <source>Search</source>
-        <translation type="unfinished"></translation>
+        <translation>Lok suchen</translation>
     </message>
     <message>
         <source>The station searches the track for one mfx decoder that is not registered yet</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zentrale sucht auf dem Gleis einen mfx-Decoder, der noch nicht angemeldet ist</translation>
     </message>
     <message>
         <source>mfx UID</source>
-        <translation type="unfinished"></translation>
+        <translation>mfx-UID</translation>
     </message>
     <message>
         <source>State</source>
-        <translation type="unfinished">Zustand</translation>
+        <translation>Zustand</translation>
     </message>
     <message>
         <source>SID:</source>
-        <translation type="unfinished"></translation>
+        <translation>SID:</translation>
     </message>
     <message>
         <source>Register</source>
-        <translation type="unfinished"></translation>
+        <translation>Anmelden</translation>
     </message>
     <message>
         <source>Binds the selected decoder to the SID, then checks that it answers</source>
-        <translation type="unfinished"></translation>
+        <translation>Meldet den gewählten Decoder unter der SID an und prüft dann, ob er antwortet</translation>
     </message>
     <message>
         <source>Locomotive:</source>
-        <translation type="unfinished"></translation>
+        <translation>Lok:</translation>
     </message>
     <message>
         <source>Decoder:</source>
-        <translation type="unfinished"></translation>
+        <translation>Decoder:</translation>
     </message>
     <message>
         <source>CV:</source>
-        <translation type="unfinished"></translation>
+        <translation>CV:</translation>
     </message>
     <message>
         <source>Index:</source>
-        <translation type="unfinished"></translation>
+        <translation>Index:</translation>
     </message>
     <message>
         <source>Value:</source>
-        <translation type="unfinished"></translation>
+        <translation>Wert:</translation>
     </message>
     <message>
         <source>Track:</source>
-        <translation type="unfinished"></translation>
+        <translation>Gleis:</translation>
     </message>
     <message>
         <source>DCC mode:</source>
-        <translation type="unfinished"></translation>
+        <translation>DCC-Modus:</translation>
     </message>
     <message>
         <source>Bit:</source>
-        <translation type="unfinished"></translation>
+        <translation>Bit:</translation>
     </message>
     <message>
         <source>mfx SID</source>
-        <translation type="unfinished"></translation>
+        <translation>mfx-SID</translation>
     </message>
     <message>
         <source>DCC</source>
-        <translation type="unfinished"></translation>
+        <translation>DCC</translation>
     </message>
     <message>
         <source>MM2</source>
-        <translation type="unfinished"></translation>
+        <translation>MM2</translation>
     </message>
     <message>
         <source>SX1</source>
-        <translation type="unfinished"></translation>
+        <translation>SX1</translation>
     </message>
     <message>
         <source>programming track</source>
-        <translation type="unfinished"></translation>
+        <translation>Programmiergleis</translation>
     </message>
     <message>
         <source>main track (write only)</source>
-        <translation type="unfinished"></translation>
+        <translation>Hauptgleis (nur schreiben)</translation>
     </message>
     <message>
         <source>direct</source>
-        <translation type="unfinished"></translation>
+        <translation>direkt</translation>
     </message>
     <message>
         <source>register</source>
-        <translation type="unfinished"></translation>
+        <translation>Register</translation>
     </message>
     <message>
         <source>bit</source>
-        <translation type="unfinished"></translation>
+        <translation>Bit</translation>
     </message>
     <message>
         <source>set</source>
-        <translation type="unfinished"></translation>
+        <translation>gesetzt</translation>
     </message>
     <message>
         <source>Read</source>
-        <translation type="unfinished"></translation>
+        <translation>CV lesen</translation>
     </message>
     <message>
         <source>Write</source>
-        <translation type="unfinished"></translation>
+        <translation>CV schreiben</translation>
     </message>
 </context>
 <context>
     <name>stellwerk::ui::SpeedScale</name>
     <message>
         <source>%1 km/h</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 km/h</translation>
     </message>
     <message>
         <source>%1 %</source>
-        <translation type="unfinished">%1 %</translation>
+        <translation>%1 %</translation>
     </message>
 </context>
 <context>
@@ -1715,7 +1715,7 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     </message>
     <message>
         <source>Settings</source>
-        <translation type="unfinished"></translation>
+        <translation>Einstellungen</translation>
     </message>
 </context>
 <context>
@@ -1741,161 +1741,161 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <name>stellwerk::ui::ThrottlePanel</name>
     <message>
         <source>Add throttle</source>
-        <translation type="unfinished"></translation>
+        <translation>Fahrpult hinzufügen</translation>
     </message>
     <message>
         <source>Open one more throttle (up to %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein weiteres Fahrpult öffnen (bis zu %1)</translation>
     </message>
     <message>
         <source>Alt+1…9: keyboard on a throttle · Up/Down or +/−: speed · R: direction · 0–9: F0–F9 · E: stop this loco · Space stays STOP for the layout</source>
-        <translation type="unfinished"></translation>
+        <translation>Alt+1…9: Tastatur auf ein Fahrpult · Pfeil auf/ab oder +/−: Geschwindigkeit · R: Richtung · 0–9: F0–F9 · E: diese Lok anhalten · Leertaste bleibt STOPP für die Anlage</translation>
     </message>
     <message>
         <source>No station connected: throttles drive once a station is ready.</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Zentrale verbunden: Die Fahrpulte fahren, sobald eine Zentrale bereit ist.</translation>
     </message>
     <message>
         <source>No throttle open. “Add throttle” opens one for a locomotive.</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Fahrpult offen. „Fahrpult hinzufügen“ öffnet eines für eine Lok.</translation>
     </message>
 </context>
 <context>
     <name>stellwerk::ui::ThrottleWidget</name>
     <message>
         <source>Choose a locomotive…</source>
-        <translation type="unfinished"></translation>
+        <translation>Lok wählen …</translation>
     </message>
     <message>
         <source>Locomotive 0x%1 (not on this station)</source>
-        <translation type="unfinished"></translation>
+        <translation>Lok 0x%1 (nicht auf dieser Zentrale)</translation>
     </message>
     <message>
         <source>Locomotive 0x%1 (waiting for the station)</source>
-        <translation type="unfinished"></translation>
+        <translation>Lok 0x%1 (wartet auf die Zentrale)</translation>
     </message>
     <message>
         <source>Alt+%1 puts the keyboard on this throttle</source>
-        <translation type="unfinished"></translation>
+        <translation>Alt+%1 legt die Tastatur auf dieses Fahrpult</translation>
     </message>
     <message>
         <source>Close this throttle</source>
-        <translation type="unfinished"></translation>
+        <translation>Dieses Fahrpult schließen</translation>
     </message>
     <message>
         <source>%1 · picture “%2”</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 · Bild „%2“</translation>
     </message>
     <message>
         <source>—</source>
-        <translation type="unfinished"></translation>
+        <translation>—</translation>
     </message>
     <message>
         <source>%1 km/h</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 km/h</translation>
     </message>
     <message>
         <source>%1 %</source>
-        <translation type="unfinished">%1 %</translation>
+        <translation>%1 %</translation>
     </message>
     <message>
         <source>◀ Backward</source>
-        <translation type="unfinished"></translation>
+        <translation>◀ Rückwärts</translation>
     </message>
     <message>
         <source>Forward ▶</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorwärts ▶</translation>
     </message>
     <message>
         <source>Change direction (R); the station stops the locomotive first</source>
-        <translation type="unfinished"></translation>
+        <translation>Fahrtrichtung wechseln (R); die Zentrale hält die Lok vorher an</translation>
     </message>
     <message>
         <source>Stop loco</source>
-        <translation type="unfinished"></translation>
+        <translation>Lok anhalten</translation>
     </message>
     <message>
         <source>Emergency stop for this locomotive only (E)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nothalt nur für diese Lok (E)</translation>
     </message>
     <message>
         <source>Speed: %1 % (Up/Down, +/-, PageUp/PageDown)</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeit: %1 % (Pfeil auf/ab, +/-, Bild auf/ab)</translation>
     </message>
     <message>
         <source>The station did not acknowledge the last command: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zentrale hat den letzten Befehl nicht bestätigt: %1</translation>
     </message>
 </context>
 <context>
     <name>stellwerk::ui::TrackPlanPanel</name>
     <message>
         <source>Cannot open the layout: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Gleisbild kann nicht geöffnet werden: %1</translation>
     </message>
     <message>
         <source>There is no track plan to export: connect to a station or open a layout first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Es gibt kein Gleisbild zum Exportieren: zuerst mit einer Zentrale verbinden oder ein Gleisbild öffnen.</translation>
     </message>
     <message>
         <source>Cannot export the layout: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Gleisbild kann nicht exportiert werden: %1</translation>
     </message>
     <message>
         <source>Page %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Seite %1</translation>
     </message>
     <message>
         <source>Open a CS2 layout folder</source>
-        <translation type="unfinished"></translation>
+        <translation>CS2-Gleisbildordner öffnen</translation>
     </message>
     <message>
         <source>Export the layout into a folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Gleisbild in einen Ordner exportieren</translation>
     </message>
     <message>
         <source>Open layout...</source>
-        <translation type="unfinished"></translation>
+        <translation>Gleisbild öffnen …</translation>
     </message>
     <message>
         <source>Show the track plan of a CS2 configuration folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Gleisbild eines CS2-Konfigurationsordners zeigen</translation>
     </message>
     <message>
         <source>Station&apos;s plan</source>
-        <translation type="unfinished"></translation>
+        <translation>Gleisbild der Zentrale</translation>
     </message>
     <message>
         <source>Export...</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportieren …</translation>
     </message>
     <message>
         <source>Write the layout as a CS2 configuration folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Gleisbild als CS2-Konfigurationsordner schreiben</translation>
     </message>
     <message>
         <source>Zoom in</source>
-        <translation type="unfinished"></translation>
+        <translation>Vergrößern</translation>
     </message>
     <message>
         <source>Zoom out</source>
-        <translation type="unfinished"></translation>
+        <translation>Verkleinern</translation>
     </message>
     <message>
         <source>Fit</source>
-        <translation type="unfinished"></translation>
+        <translation>Einpassen</translation>
     </message>
     <message>
         <source>No track plan: connect to a station or open a CS2 layout folder.</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Gleisbild: mit einer Zentrale verbinden oder einen CS2-Gleisbildordner öffnen.</translation>
     </message>
     <message>
         <source>Files: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Dateien: %1</translation>
     </message>
     <message>
         <source>Live from the station</source>
-        <translation type="unfinished"></translation>
+        <translation>Live von der Zentrale</translation>
     </message>
 </context>
 <context>
@@ -1913,74 +1913,74 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <name>stellwerk::ui::TurnoutKey</name>
     <message>
         <source>part of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Teil von %1</translation>
     </message>
     <message>
         <source>position unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>Stellung unbekannt</translation>
     </message>
     <message>
         <source>Switch %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 auf %2 stellen</translation>
     </message>
     <message>
         <source>Position…</source>
-        <translation type="unfinished"></translation>
+        <translation>Stellung …</translation>
     </message>
     <message>
         <source>%1 (%2), address %3: %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2), Adresse %3: %4</translation>
     </message>
     <message>
         <source>Address %1 has no article; it switches as an MM2 address</source>
-        <translation type="unfinished"></translation>
+        <translation>Adresse %1 ist kein Magnetartikel zugeordnet; sie schaltet als MM2-Adresse</translation>
     </message>
     <message>
         <source>Address %1 belongs to %2, which starts on %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Adresse %1 gehört zu %2 (beginnt bei Adresse %3)</translation>
     </message>
     <message>
         <source>Switching: waiting for the station to confirm</source>
-        <translation type="unfinished"></translation>
+        <translation>Schaltet: wartet auf die Bestätigung der Zentrale</translation>
     </message>
     <message>
         <source>The station did not confirm the last switching</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zentrale hat den letzten Schaltbefehl nicht bestätigt</translation>
     </message>
     <message>
         <source>no article</source>
-        <translation type="unfinished"></translation>
+        <translation>kein Magnetartikel</translation>
     </message>
 </context>
 <context>
     <name>stellwerk::ui::TurnoutPanel</name>
     <message>
         <source>Articles on the keyboard: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Magnetartikel im Keyboard: %1</translation>
     </message>
     <message>
         <source>Article %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Magnetartikel %1</translation>
     </message>
     <message>
         <source>Page %1: %2–%3</source>
-        <translation type="unfinished"></translation>
+        <translation>Seite %1: %2–%3</translation>
     </message>
     <message>
         <source>The keyboard appears when a station is connected.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Keyboard erscheint, sobald eine Zentrale verbunden ist.</translation>
     </message>
     <message>
         <source>Previous page (Page Up)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorige Seite (Bild auf)</translation>
     </message>
     <message>
         <source>Next page (Page Down)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nächste Seite (Bild ab)</translation>
     </message>
     <message>
         <source>Keyboard page: 16 addresses each, as on the Central Station</source>
-        <translation type="unfinished"></translation>
+        <translation>Keyboard-Seite: je 16 Adressen, wie auf der Central Station</translation>
     </message>
 </context>
 </TS>

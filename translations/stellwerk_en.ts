@@ -470,9 +470,9 @@
     </message>
     <message numerus="yes">
         <source>%Ln frame(s) seen</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%Ln frame seen</numerusform>
+            <numerusform>%Ln frames seen</numerusform>
         </translation>
     </message>
     <message>
@@ -485,9 +485,9 @@
     </message>
     <message numerus="yes">
         <source>%Ln line(s) skipped; %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%Ln line skipped; %1</numerusform>
+            <numerusform>%Ln lines skipped; %1</numerusform>
         </translation>
     </message>
     <message>
@@ -900,9 +900,9 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message numerus="yes">
         <source>on for %n s</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>on for %n s</numerusform>
+            <numerusform>on for %n s</numerusform>
         </translation>
     </message>
     <message>
@@ -1121,14 +1121,14 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message numerus="yes">
         <source>%n locomotive(s), changed and not saved</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n locomotive, changed and not saved</numerusform>
+            <numerusform>%n locomotives, changed and not saved</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>%n locomotive(s)</source>
-        <translation type="unfinished">
+        <translation>
             <numerusform>%n locomotive</numerusform>
             <numerusform>%n locomotives</numerusform>
         </translation>
