@@ -1,20 +1,19 @@
 #include "LanguageSettings.h"
 
-#include <QSettings>
+#include "StellwerkSettings.h"
+
 #include <QtDebug>
 
 namespace stellwerk::ui {
 
 namespace {
 
-const QString organisation = QStringLiteral("Stellwerk");
-const QString application = QStringLiteral("Stellwerk");
 const QString languageKey = QStringLiteral("ui/language");
 
 } // namespace
 
 Language LanguageSettings::load() {
-    const QSettings settings(organisation, application);
+    const QSettings settings = stellwerkSettings();
     const Language fallback = defaultLanguage(QLocale::system());
     if (!settings.contains(languageKey)) {
         return fallback;
@@ -29,7 +28,7 @@ Language LanguageSettings::load() {
 }
 
 void LanguageSettings::save(Language language) {
-    QSettings settings(organisation, application);
+    QSettings settings = stellwerkSettings();
     settings.setValue(languageKey, languageCode(language));
 }
 

@@ -1,20 +1,18 @@
 #include "StationUrlSettings.h"
 
-#include <QSettings>
+#include "StellwerkSettings.h"
 
 namespace stellwerk::ui {
 
 namespace {
 
-const QString organisation = QStringLiteral("Stellwerk");
-const QString application = QStringLiteral("Stellwerk");
 const QString urlKey = QStringLiteral("station/url");
 const QString recentKey = QStringLiteral("station/recent");
 
 } // namespace
 
 QString StationUrlSettings::load() {
-    const QSettings settings(organisation, application);
+    const QSettings settings = stellwerkSettings();
     return settings.value(urlKey).toString().trimmed();
 }
 
@@ -25,13 +23,13 @@ void StationUrlSettings::save(const QString& url) {
     recent.prepend(chosen);
     while (recent.size() > MaxRecent)
         recent.removeLast();
-    QSettings settings(organisation, application);
+    QSettings settings = stellwerkSettings();
     settings.setValue(urlKey, chosen);
     settings.setValue(recentKey, recent);
 }
 
 QStringList StationUrlSettings::recent() {
-    const QSettings settings(organisation, application);
+    const QSettings settings = stellwerkSettings();
     QStringList recent;
     for (const QString& url : settings.value(recentKey).toStringList()) {
         if (!recent.contains(url.trimmed()))

@@ -1,19 +1,18 @@
 #include "ThrottleSettings.h"
 
-#include <QSettings>
+#include "StellwerkSettings.h"
+
 #include <QStringList>
 
 namespace stellwerk::ui {
 namespace {
 
-const QString organisation = QStringLiteral("Stellwerk");
-const QString application = QStringLiteral("Stellwerk");
 const QString locomotivesKey = QStringLiteral("throttles/locomotives");
 
 } // namespace
 
 QList<std::uint32_t> ThrottleSettings::load() {
-    const QSettings settings(organisation, application);
+    const QSettings settings = stellwerkSettings();
     QList<std::uint32_t> locomotives;
     // Stored as "0x4001" texts: readable in the settings file, and a damaged entry only loses itself.
     for (const QString& text : settings.value(locomotivesKey).toStringList()) {
@@ -30,7 +29,7 @@ void ThrottleSettings::save(const QList<std::uint32_t>& locomotives) {
     QStringList texts;
     for (const std::uint32_t loco : locomotives)
         texts << QStringLiteral("0x%1").arg(loco, 0, 16);
-    QSettings settings(organisation, application);
+    QSettings settings = stellwerkSettings();
     settings.setValue(locomotivesKey, texts);
 }
 

@@ -1,25 +1,23 @@
 #include "WindowLayoutSettings.h"
 
-#include <QSettings>
+#include "StellwerkSettings.h"
 
 namespace stellwerk::ui {
 
 namespace {
 
-const QString organisation = QStringLiteral("Stellwerk");
-const QString application = QStringLiteral("Stellwerk");
 const QString geometryKey = QStringLiteral("window/geometry");
 const QString stateKey = QStringLiteral("window/state");
 
 } // namespace
 
 WindowLayout WindowLayoutSettings::load() {
-    const QSettings settings(organisation, application);
+    const QSettings settings = stellwerkSettings();
     return {settings.value(geometryKey).toByteArray(), settings.value(stateKey).toByteArray()};
 }
 
 void WindowLayoutSettings::save(const WindowLayout& layout) {
-    QSettings settings(organisation, application);
+    QSettings settings = stellwerkSettings();
     settings.setValue(geometryKey, layout.geometry);
     settings.setValue(stateKey, layout.state);
 }
