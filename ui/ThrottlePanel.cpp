@@ -37,6 +37,7 @@ ThrottlePanel::ThrottlePanel(QWidget* parent) : QWidget(parent) {
     m_emptyText->setObjectName(QStringLiteral("throttlesEmpty"));
     m_emptyText->setAlignment(Qt::AlignCenter);
     m_emptyText->setEnabled(false);
+    m_emptyText->setWordWrap(true); // a narrow dock must not cut the sentence off
     layout->addWidget(m_emptyText, 1);
 
     m_scroll = new QScrollArea(this);
