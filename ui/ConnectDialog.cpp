@@ -31,6 +31,19 @@ QString describeUrl(const QString& url) {
     return ConnectionStatus::describe(endpoint);
 }
 
+// The address for `host`, keeping the ports of `current` when it is of the same kind; just the scheme while
+// there is no host yet.
+template <class Settings>
+QString withHost(const cs2::Expected<can::TransportSettings, QString>& current, const QString& host,
+                 const QString& scheme) {
+    if (host.isEmpty())
+        return scheme;
+    Settings settings =
+        current && std::holds_alternative<Settings>(*current) ? std::get<Settings>(*current) : Settings{};
+    settings.host = host;
+    return can::transportUrl(settings);
+}
+
 QRadioButton* radio(QWidget* parent, const char* name) {
     auto* button = new QRadioButton(parent);
     button->setObjectName(QLatin1String(name));
@@ -237,22 +250,12 @@ void ConnectDialog::composeUrl() {
     switch (kind()) {
     case Kind::Simulated:
         break;
-    case Kind::Udp: {
-        auto settings = current && std::holds_alternative<can::UdpSettings>(*current)
-                            ? std::get<can::UdpSettings>(*current)
-                            : can::UdpSettings{};
-        settings.host = m_host->text().trimmed();
-        url = settings.host.isEmpty() ? QStringLiteral("udp://") : can::transportUrl(settings);
+    case Kind::Udp:
+        url = withHost<can::UdpSettings>(current, m_host->text().trimmed(), QStringLiteral("udp://"));
         break;
-    }
-    case Kind::Tcp: {
-        auto settings = current && std::holds_alternative<can::TcpSettings>(*current)
-                            ? std::get<can::TcpSettings>(*current)
-                            : can::TcpSettings{};
-        settings.host = m_host->text().trimmed();
-        url = settings.host.isEmpty() ? QStringLiteral("tcp://") : can::transportUrl(settings);
+    case Kind::Tcp:
+        url = withHost<can::TcpSettings>(current, m_host->text().trimmed(), QStringLiteral("tcp://"));
         break;
-    }
     case Kind::CanBus:
         url = QStringLiteral("can://") + m_interface->currentText().trimmed();
         break;
