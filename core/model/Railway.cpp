@@ -24,6 +24,11 @@ Railway::Railway(station::StationSession& session, QObject* parent)
     : QObject(parent), session_(session), poller_(new ReadingPoller(session, this)),
       programmer_(new Programmer(session, this)) {
     connect(&session_, &station::StationSession::updated, this, &Railway::apply);
+    connect(&session_.liveness(), &station::Liveness::stationSilent, this, &Railway::contactLost);
+    connect(&session_.transport(), &can::Transport::stateChanged, this, [this](can::Transport::State state) {
+        if (state != can::Transport::State::Connected)
+            contactLost();
+    });
     connect(poller_, &ReadingPoller::readingMissed, this, &Railway::readingMissed);
 }
 
@@ -43,6 +48,21 @@ void Railway::load(const station::StartupResult& startup) {
     if (!poller_->sources().empty())
         poller_->start();
     emit loaded();
+    setStateReported(true);
+}
+
+void Railway::contactLost() {
+    state_.forgetPower();
+    for (const auto& [id, runner] : std::map(runners_))
+        cancelRoute(id);
+    setStateReported(false);
+}
+
+void Railway::setStateReported(bool reported) {
+    if (stateReported_ == reported)
+        return;
+    stateReported_ = reported;
+    emit stateReportedChanged(reported);
 }
 
 void Railway::replaceLocomotiveFile(const cs2config::LocomotiveFile& file) {

@@ -49,8 +49,13 @@ public:
     // The position the bus last showed for an MM2 keyboard number without an article.
     std::optional<int> addressPosition(std::int64_t address) const { return state_.addressPosition(address); }
     const TrackLayout& layout() const { return state_.layout(); }
-    // Unknown until the station reported its power state.
+    // Unknown until the station reported its power state, and again while the state is not reported.
     std::optional<station::PowerState> power() const { return state_.power(); }
+    // True while what the railway holds is what the station reports: false before the first start-up
+    // finished, and from the moment the station falls silent or the connection is lost until a start-up
+    // has read the state again (load()). While false, power() is unknown and the locomotives, accessories
+    // and contacts hold the last state reported, which views show as "not reported".
+    bool isStateReported() const { return stateReported_; }
     ReadingPoller& readings() { return *poller_; }
     // Decoder programming on this station: mfx discovery, bind, verify, CV read and write.
     Programmer& programmer() { return *programmer_; }
@@ -80,6 +85,8 @@ public:
 
 signals:
     void loaded();
+    // isStateReported() changed.
+    void stateReportedChanged(bool reported);
     void locomotivesChanged(const QList<quint32>& ids);
     void accessoriesChanged(const QList<qint64>& ids);
     // Keyboard numbers without an article whose position changed (see addressPosition).
@@ -116,6 +123,9 @@ signals:
 
 private:
     void apply(const station::StationUpdates& updates);
+    // The station went silent or the connection was lost: what we hold may no longer be true.
+    void contactLost();
+    void setStateReported(bool reported);
     void announce(const RailwayChanges& changes);
     void announceTiles(const RailwayChanges& changes);
     void readingMissed(quint32 device, quint8 channel);
@@ -136,6 +146,7 @@ private:
     ReadingPoller* poller_;
     Programmer* programmer_;
     std::map<std::int64_t, RouteRunner*> runners_;
+    bool stateReported_ = false;
 };
 
 } // namespace stellwerk::model

@@ -59,6 +59,8 @@ public:
     Registry<std::uint32_t, Device>& devices() { return devices_; }
     const TrackLayout& layout() const { return layout_; }
     std::optional<station::PowerState> power() const { return power_; }
+    // The power state is no longer known (the station went silent or the connection was lost).
+    void forgetPower() { power_.reset(); }
     // The position last seen on the bus for an MM2 keyboard number that no article uses.
     std::optional<int> addressPosition(std::int64_t address) const;
 
