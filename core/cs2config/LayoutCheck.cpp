@@ -77,18 +77,24 @@ std::vector<LayoutFinding> LayoutCheck::run() {
     checkMissingPages();
     const std::vector<PlacedTile> tiles = accessoryTiles();
     checkSharedArticles(tiles);
-    for (std::size_t first = 0; accessories_ && first < tiles.size();) {
+    if (accessories_)
+        checkPageByPage(tiles);
+    // In file and line order, as a person goes through the files.
+    std::stable_sort(findings_.begin(), findings_.end(), [](const LayoutFinding& a, const LayoutFinding& b) {
+        return std::tie(a.file, a.line) < std::tie(b.file, b.line);
+    });
+    return std::move(findings_);
+}
+
+// The tiles come page by page (accessoryTiles keeps the file order).
+void LayoutCheck::checkPageByPage(const std::vector<PlacedTile>& tiles) {
+    for (std::size_t first = 0; first < tiles.size();) {
         std::size_t end = first;
         while (end < tiles.size() && tiles[end].page == tiles[first].page)
             ++end;
         checkPageTiles({tiles.begin() + std::ptrdiff_t(first), tiles.begin() + std::ptrdiff_t(end)});
         first = end;
     }
-    // In file and line order, as a person goes through the files.
-    std::stable_sort(findings_.begin(), findings_.end(), [](const LayoutFinding& a, const LayoutFinding& b) {
-        return std::tie(a.file, a.line) < std::tie(b.file, b.line);
-    });
-    return std::move(findings_);
 }
 
 // One finding per missing page; one for the whole folder when no page file is there at all.

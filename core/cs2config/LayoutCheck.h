@@ -40,6 +40,7 @@ private:
 
     void checkMissingPages();
     void checkSharedArticles(const std::vector<PlacedTile>& tiles);
+    void checkPageByPage(const std::vector<PlacedTile>& tiles);
     void checkPageTiles(const std::vector<PlacedTile>& tiles);
     std::optional<std::string> checkTile(const PlacedTile& tile);
     void checkLabel(const PlacedTile& tile, const Accessory& article);
