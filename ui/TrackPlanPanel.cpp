@@ -112,10 +112,30 @@ bool TrackPlanPanel::openFolder(const QString& folder) {
         for (const cs2config::Accessory& accessory : content.accessories->accessories)
             m_folderNames[accessory.id] = QString::fromStdString(accessory.name);
     m_folderLayout = model::TrackLayout(downloadedPages(content.layout));
+    const QString findings = findingsText(content.findings);
     m_folder = std::move(content);
-    showProblem(QString());
+    showProblem(findings);
     rebuild();
     return true;
+}
+
+// What the layout check found, the first few in full (`stellwerk-cli cs2 check DIR` lists them all).
+QString TrackPlanPanel::findingsText(const std::vector<cs2config::LayoutFinding>& findings) const {
+    if (findings.empty())
+        return {};
+    constexpr int Shown = 5;
+    QStringList lines{tr("The layout's files disagree in %n place(s):", "", int(findings.size()))};
+    for (std::size_t i = 0; i < findings.size() && i < std::size_t(Shown); ++i) {
+        const cs2config::LayoutFinding& finding = findings[i];
+        const QString where =
+            finding.line > 0
+                ? QStringLiteral("%1:%2").arg(QString::fromStdString(finding.file)).arg(finding.line)
+                : QString::fromStdString(finding.file);
+        lines << QStringLiteral("%1: %2").arg(where, QString::fromStdString(finding.message));
+    }
+    if (findings.size() > std::size_t(Shown))
+        lines << tr("... and %n more.", "", int(findings.size()) - Shown);
+    return lines.join(QLatin1Char('\n'));
 }
 
 void TrackPlanPanel::showStationPlan() {

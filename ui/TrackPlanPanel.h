@@ -83,6 +83,7 @@ private:
     void goToPage(std::int64_t pageId);
     QString accessoryName(std::int64_t id) const;
     void showProblem(const QString& text);
+    QString findingsText(const std::vector<cs2config::LayoutFinding>& findings) const;
     void chooseFolderToOpen();
     void chooseFolderToExport();
     void updateActions();

@@ -1,6 +1,7 @@
 #include "Cs2Command.h"
 
 #include "cs2config/ConfigFile.h"
+#include "cs2config/LayoutFolder.h"
 #include "cs2config/TrackLayout.h"
 
 #include <filesystem>
@@ -13,8 +14,9 @@ namespace {
 
 using cs2config::ConfigFile;
 using cs2config::ConfigKind;
+using cs2config::LayoutFolder;
 
-constexpr const char* Usage = "usage: stellwerk-cli cs2 check FILE...\n"
+constexpr const char* Usage = "usage: stellwerk-cli cs2 check FILE|DIR...\n"
                               "       stellwerk-cli cs2 json FILE\n"
                               "       stellwerk-cli cs2 format FILE [-o OUT]\n";
 
@@ -39,16 +41,42 @@ std::string verdict(const ConfigFile& file) {
     return warnings == 0 ? "ok" : "usable, " + counted(warnings, "warning");
 }
 
-int runCheck(const std::vector<std::string>& files, std::ostream& out) {
+// Prints the file's problems and its verdict line; false when it is not usable.
+bool checkFile(const std::filesystem::path& path, std::ostream& out) {
+    const ConfigFile file = ConfigFile::load(path);
+    out << file.diagnostics().formatAll();
+    out << path.string() << ": " << verdict(file);
+    if (file.kind() != ConfigKind::NotConfiguration)
+        out << " - " << file.summary();
+    out << "\n";
+    return file.usable();
+}
+
+// A layout folder: every file it holds as `check FILE` does, then the files checked against each other.
+bool checkFolder(const std::filesystem::path& folder, std::ostream& out) {
+    const LayoutFolder::Content content = LayoutFolder::open(folder);
+    if (!content.problem.empty()) {
+        out << folder.string() << ": not usable - " << content.problem << "\n";
+        return false;
+    }
+    bool usable = true;
+    for (const std::string& name : LayoutFolder::presentFiles(content))
+        usable = checkFile(content.configDirectory / std::u8string(name.begin(), name.end()), out) && usable;
+    for (const cs2config::LayoutFinding& finding : content.findings)
+        out << finding.format(content.configDirectory) << "\n";
+    out << folder.string() << ": " << (usable ? "usable" : "not usable") << " as a layout, "
+        << counted(content.findings.size(), "layout warning") << " - "
+        << counted(content.layout.pages.size(), "page") << "\n";
+    return usable;
+}
+
+int runCheck(const std::vector<std::string>& names, std::ostream& out) {
     int status = 0;
-    for (const std::string& name : files) {
-        const ConfigFile file = ConfigFile::load(name);
-        out << file.diagnostics().formatAll();
-        out << name << ": " << verdict(file);
-        if (file.kind() != ConfigKind::NotConfiguration)
-            out << " - " << file.summary();
-        out << "\n";
-        if (!file.usable())
+    for (const std::string& name : names) {
+        std::error_code error;
+        const bool usable =
+            std::filesystem::is_directory(name, error) ? checkFolder(name, out) : checkFile(name, out);
+        if (!usable)
             status = 1;
     }
     return status;

@@ -56,14 +56,17 @@ StationJob ping(std::ostream& out, std::ostream& err) {
     return {std::move(start), std::chrono::milliseconds(5000)};
 }
 
-// Reads the status data of devices one after the other and polls each of their readings once.
+// Reads the status data of devices one after the other and polls each of their readings once. A device
+// that answered the ping without status data (a PC program on the bus) is named and passed over; asked
+// for by its UID, it is an error.
 class StatusReport {
 public:
     StatusReport(StationClient& client, std::ostream& out, std::ostream& err)
         : client_(client), out_(out), err_(err) {}
 
-    void start(const std::vector<cs2::DeviceIdentity>& devices) {
+    void start(const std::vector<cs2::DeviceIdentity>& devices, bool asked) {
         devices_.assign(devices.begin(), devices.end());
+        asked_ = asked;
         if (devices_.empty()) {
             err_ << "error: no device answered the ping within " << PingWindow.count() << " ms\n";
             return client_.finish(NotAcknowledged);
@@ -73,8 +76,11 @@ public:
 
 private:
     void nextDevice() {
-        if (devices_.empty())
-            return client_.finish(failed_ ? NotAcknowledged : Acknowledged);
+        if (devices_.empty()) {
+            if (described_ == 0 && !asked_)
+                err_ << "error: no device that answered the ping has status data\n";
+            return client_.finish(failed_ || described_ == 0 ? NotAcknowledged : Acknowledged);
+        }
         const cs2::DeviceIdentity device = devices_.front();
         devices_.pop_front();
         client_.session().statusData().read(
@@ -84,6 +90,8 @@ private:
     }
 
     void described(const station::DeviceDescription& description, const QStringList& problems) {
+        if (!description.summary && !asked_)
+            return withoutStatusData(description.identity);
         device_ = description;
         out_ << hex(description.identity.uid, 8);
         if (description.summary)
@@ -93,8 +101,16 @@ private:
         for (const QString& problem : problems)
             err_ << "error: " << hex(description.identity.uid, 8) << ": " << problem.toStdString() << '\n';
         failed_ = failed_ || !problems.isEmpty() || !description.summary;
+        described_ += description.summary ? 1 : 0;
         reading_ = 0;
         pollNext();
+    }
+
+    // Not every device on the bus has status data: PC programs and some gateways answer the ping only.
+    void withoutStatusData(const cs2::DeviceIdentity& device) {
+        out_ << hex(device.uid, 8) << " " << cs2::deviceTypeName(device.deviceType) << ", type "
+             << hex(device.deviceType, 4) << ": no status data\n";
+        nextDevice();
     }
 
     void pollNext() {
@@ -125,6 +141,8 @@ private:
     std::deque<cs2::DeviceIdentity> devices_;
     station::DeviceDescription device_;
     std::size_t reading_ = 0;
+    std::size_t described_ = 0; // devices whose status data was read
+    bool asked_ = false;        // one device asked for by its UID
     bool failed_ = false;
 };
 
@@ -141,9 +159,10 @@ ParsedJob status(const std::vector<std::string>& arguments, std::ostream& out, s
     auto start = [uid, &out, &err, report = std::shared_ptr<StatusReport>()](StationClient& client) mutable {
         report = std::make_shared<StatusReport>(client, out, err);
         if (uid)
-            return report->start({cs2::DeviceIdentity{*uid, 0, 0, 0}});
-        findDevices(client,
-                    [report](const std::vector<cs2::DeviceIdentity>& devices) { report->start(devices); });
+            return report->start({cs2::DeviceIdentity{*uid, 0, 0, 0}}, true);
+        findDevices(client, [report](const std::vector<cs2::DeviceIdentity>& devices) {
+            report->start(devices, false);
+        });
     };
     return StationJob{std::move(start), std::chrono::milliseconds(30000)};
 }

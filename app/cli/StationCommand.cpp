@@ -41,7 +41,10 @@ const char* stationUsage() {
            "                                       POSITION: 0-255, red|round, green|straight, yellow, "
            "white\n"
            "    download KEY [QUALIFIER] [-o FILE] a config file (loks, mags, fs, gbs, gbs-N, ...)\n"
-           "    status [UID]                       readings (name, value, unit) of the device(s)\n"
+           "    status [UID]                       readings (name, value, unit) of the device(s); without\n"
+           "                                       UID, devices with no status data (PC programs) are\n"
+           "                                       named and skipped: exit 0 when every device with status\n"
+           "                                       data was read, 1 when a reading failed or none had any\n"
            "    monitor [--json] [--count N]       print every frame until N frames or Ctrl-C\n";
 }
 

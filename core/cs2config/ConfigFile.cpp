@@ -9,10 +9,6 @@ namespace stellwerk::cs2config {
 
 namespace {
 
-bool endsWith(std::string_view text, std::string_view suffix) {
-    return text.size() >= suffix.size() && text.substr(text.size() - suffix.size()) == suffix;
-}
-
 std::string count(std::size_t n, std::string_view one, std::string_view many) {
     return std::to_string(n) + ' ' + std::string(n == 1 ? one : many);
 }
@@ -106,38 +102,6 @@ std::string documentJson(const Document& document) {
 
 } // namespace
 
-std::string_view kindName(ConfigKind kind) {
-    switch (kind) {
-    case ConfigKind::NotConfiguration:
-        return "not a .cs2 file";
-    case ConfigKind::Unknown:
-        return "unknown .cs2 file";
-    case ConfigKind::Locomotives:
-        return "locomotives (lokomotive.cs2)";
-    case ConfigKind::LocomotiveStatus:
-        return "locomotive states (lokomotive.sr2)";
-    case ConfigKind::LocoInfo:
-        return "MS2 lokinfo stream";
-    case ConfigKind::LocoNames:
-        return "MS2 loknamen stream";
-    case ConfigKind::LocoDbVersion:
-        return "MS2 ldbver stream";
-    case ConfigKind::Accessories:
-        return "accessories (magnetartikel.cs2)";
-    case ConfigKind::AccessoryStatus:
-        return "accessory states (magnetartikel.sr2)";
-    case ConfigKind::Routes:
-        return "routes (fahrstrassen.cs2)";
-    case ConfigKind::TrackPlan:
-        return "track plan index (gleisbild.cs2)";
-    case ConfigKind::TrackPage:
-        return "track plan page";
-    case ConfigKind::TrackStatus:
-        return "track plan states (gleisbild.sr2)";
-    }
-    return "unknown";
-}
-
 ConfigFile::ConfigFile(Diagnostics diagnostics, Document document)
     : diagnostics_(std::move(diagnostics)), document_(std::move(document)) {}
 
@@ -145,7 +109,7 @@ ConfigFile ConfigFile::fromBytes(std::string_view bytes, const std::string& file
     Diagnostics diagnostics(fileName);
     Document document = Document::parse(bytes, diagnostics);
     ConfigFile file(std::move(diagnostics), std::move(document));
-    file.kind_ = recognise(file.document_, fileName);
+    file.kind_ = recogniseConfigKind(file.document_, fileName, file.diagnostics_);
     file.readModel();
     return file;
 }
@@ -174,39 +138,6 @@ ConfigFile ConfigFile::load(const std::filesystem::path& path) {
         return file;
     }
     return fromBytes(bytes, path.string());
-}
-
-// lokomotive.cs2 has `lokomotive` records; the MS2 streams have `lok` records: with `.nr` and a
-// `numloks` record for loknamen, with the loco's data for lokinfo.
-ConfigKind ConfigFile::recogniseLocomotiveKind(const Document& document) {
-    const std::vector<const Node*> loks = document.records("lok");
-    if (loks.empty())
-        return ConfigKind::Locomotives;
-    if (document.record("numloks") || loks.front()->find("nr"))
-        return ConfigKind::LocoNames;
-    return ConfigKind::LocoInfo;
-}
-
-ConfigKind ConfigFile::recognise(const Document& document, std::string_view fileName) {
-    if (!document.isConfiguration())
-        return ConfigKind::NotConfiguration;
-    const bool status = endsWith(fileName, ".sr2");
-    const std::string_view section = document.section();
-    if (!document.hasHeader() && document.root().find("anzahl") && document.root().find("version"))
-        return ConfigKind::LocoDbVersion;
-    if (section == "lokstatus" || (section == "lokomotive" && status))
-        return ConfigKind::LocomotiveStatus;
-    if (section == "lokomotive")
-        return recogniseLocomotiveKind(document);
-    if (section == AccessoryFile::section)
-        return status ? ConfigKind::AccessoryStatus : ConfigKind::Accessories;
-    if (section == RouteFile::section)
-        return ConfigKind::Routes;
-    if (section == cs2config::TrackPlan::section)
-        return status ? ConfigKind::TrackStatus : ConfigKind::TrackPlan;
-    if (section == cs2config::TrackPage::section || section == "conf")
-        return ConfigKind::TrackPage;
-    return ConfigKind::Unknown;
 }
 
 void ConfigFile::readModel() {

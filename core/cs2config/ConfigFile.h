@@ -2,6 +2,7 @@
 
 #include "cs2config/AccessoryFile.h"
 #include "cs2config/AccessoryStatusFile.h"
+#include "cs2config/ConfigKind.h"
 #include "cs2config/Diagnostics.h"
 #include "cs2config/Document.h"
 #include "cs2config/LocomotiveFile.h"
@@ -21,25 +22,6 @@
 
 namespace stellwerk::cs2config {
 
-// What a file of the CS2 family holds, recognised from its header, its records and its name.
-enum class ConfigKind {
-    NotConfiguration, // not a .cs2 file at all
-    Unknown,          // a .cs2 document of a section Stellwerk has no model for
-    Locomotives,      // lokomotive.cs2
-    LocomotiveStatus, // lokomotive.sr2
-    LocoInfo,         // the MS2's lokinfo stream: one locomotive
-    LocoNames,        // the MS2's loknamen / lokliste stream
-    LocoDbVersion,    // the MS2's ldbver stream
-    Accessories,      // magnetartikel.cs2 (also the MS2's maginfo stream)
-    AccessoryStatus,  // magnetartikel.sr2
-    Routes,           // fahrstrassen.cs2
-    TrackPlan,        // gleisbild.cs2
-    TrackPage,        // gleisbilder/<name>.cs2, gbs-<n>
-    TrackStatus,      // gleisbild.sr2
-};
-
-std::string_view kindName(ConfigKind kind);
-
 // One configuration file read into its typed model, with every problem found on the way: the entry
 // point for tools that are handed "some .cs2 file".
 class ConfigFile {
@@ -56,6 +38,12 @@ public:
     // True when the file could be read as a .cs2 file, possibly with warnings but without errors.
     bool usable() const { return kind_ != ConfigKind::NotConfiguration && !diagnostics_.hasErrors(); }
 
+    // The typed model when the file is of that kind (AccessoryFile, TrackPlan, ...), else null.
+    template <class Model>
+    const Model* model() const {
+        return std::get_if<Model>(&model_);
+    }
+
     // "108 locomotives, 1712 functions"
     std::string summary() const;
     std::string json() const;
@@ -68,8 +56,6 @@ private:
                                cs2config::TrackPlan, cs2config::TrackPage, TrackStatusFile>;
 
     ConfigFile(Diagnostics diagnostics, Document document);
-    static ConfigKind recognise(const Document& document, std::string_view fileName);
-    static ConfigKind recogniseLocomotiveKind(const Document& document);
     void readModel();
 
     Diagnostics diagnostics_;

@@ -55,11 +55,28 @@ std::vector<DocumentParser::RawLine> DocumentParser::splitLines() const {
     return lines;
 }
 
-std::size_t DocumentParser::headerIndex(const std::vector<RawLine>& lines) const {
+// A clean "[section]" line; failing that, the first line that ends in one after some junk.
+std::size_t DocumentParser::headerIndex(const std::vector<RawLine>& lines) {
     for (std::size_t i = 0; i < lines.size(); ++i)
         if (LineClassifier::isHeader(lines[i].bytes))
             return i;
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        if (LineClassifier::headerAfterJunk(lines[i].bytes) != std::string_view::npos) {
+            headerAfterJunk_ = true;
+            return i;
+        }
     return lines.size();
+}
+
+void DocumentParser::readHeaderAfterJunk(Node& node, LineClassifier& classifier) {
+    if (!classifier.classifyHeaderAfterJunk())
+        return;
+    const std::string_view text = node.text();
+    const std::string junk(text.substr(0, text.rfind('[')));
+    diagnostics_.warning(node.lineNumber(),
+                         quoteForMessage(junk) + " in front of the section header [" +
+                             std::string(node.key()) + "]",
+                         "read as the header; the text in front of it is kept unchanged");
 }
 
 Node DocumentParser::readLine(const RawLine& line, int lineNumber, bool beforeHeader) {
@@ -71,6 +88,13 @@ Node DocumentParser::readLine(const RawLine& line, int lineNumber, bool beforeHe
     }
     if (beforeHeader)
         return node;
+    if (headerAfterJunk_ && !document_.hasHeader_) {
+        readHeaderAfterJunk(node, classifier);
+        if (node.kind() == Node::Kind::Header) {
+            noteStyle(node, line.ending);
+            return node;
+        }
+    }
     const LineClassifier::Result result = classifier.classify(Document::maxLevel);
     if (result == LineClassifier::Result::Unreadable)
         diagnostics_.warning(lineNumber,

@@ -1,7 +1,9 @@
 #include "cs2config/LayoutFolder.h"
 
+#include "cs2config/ConfigFile.h"
 #include "cs2config/ConfigStreamKeys.h"
 
+#include <algorithm>
 #include <fstream>
 #include <system_error>
 #include <unistd.h>
@@ -29,12 +31,15 @@ std::optional<std::string> readBytes(const fs::path& path) {
     return bytes;
 }
 
+// Read through ConfigFile, so that the folder and `cs2 check` agree on what the file is.
 std::optional<AccessoryFile> readAccessories(const fs::path& configDirectory) {
     const std::optional<std::string> bytes = readBytes(configDirectory / accessoryName);
     if (!bytes)
         return std::nullopt;
-    Diagnostics diagnostics(std::string{accessoryName});
-    return AccessoryFile::read(Document::parse(*bytes, diagnostics), diagnostics);
+    const ConfigFile file = ConfigFile::fromBytes(*bytes, std::string{accessoryName});
+    if (const AccessoryFile* accessories = file.model<AccessoryFile>())
+        return *accessories;
+    return std::nullopt;
 }
 
 bool isTrackPlanKey(const std::string& key) {
@@ -107,7 +112,22 @@ LayoutFolder::Content LayoutFolder::open(const fs::path& folder) {
         return content;
     }
     content.accessories = readAccessories(content.configDirectory);
+    content.findings =
+        LayoutCheck(content.layout, content.accessories ? &*content.accessories : nullptr).run();
     return content;
+}
+
+std::vector<std::string> LayoutFolder::presentFiles(const Content& content) {
+    std::vector<std::string> names{std::string{indexName}};
+    for (const TrackLayoutPage& page : content.layout.pages)
+        if (!page.file.empty() && !page.missing &&
+            std::find(names.begin(), names.end(), page.diagnostics.fileName()) == names.end())
+            names.push_back(page.diagnostics.fileName());
+    std::error_code error;
+    for (const std::string_view name : companions)
+        if (fs::is_regular_file(content.configDirectory / name, error))
+            names.emplace_back(name);
+    return names;
 }
 
 ConfigFolderFiles LayoutFolder::filesOf(const TrackPlan& plan, const std::vector<TrackLayoutPage>& pages) {

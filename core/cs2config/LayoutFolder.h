@@ -1,6 +1,7 @@
 #pragma once
 
 #include "cs2config/AccessoryFile.h"
+#include "cs2config/LayoutCheck.h"
 #include "cs2config/TrackLayout.h"
 
 #include <filesystem>
@@ -26,11 +27,16 @@ public:
         TrackLayout layout;
         std::optional<AccessoryFile> accessories; // magnetartikel.cs2, for the articles' names
         std::string problem;                      // why nothing could be opened; empty on success
+        std::vector<LayoutFinding> findings;      // what LayoutCheck found in the files together
     };
 
     // The `config` folder inside `folder`, or `folder` itself when it holds gleisbild.cs2.
     static std::filesystem::path configDirectoryOf(const std::filesystem::path& folder);
     static Content open(const std::filesystem::path& folder);
+
+    // The files in `configDirectory` that a CS2 keeps and that are there: gleisbild.cs2, the page files
+    // of `layout` and the companion files, each by its path inside the folder ("gleisbilder/x.cs2").
+    static std::vector<std::string> presentFiles(const Content& content);
 
     // The files of a layout as a CS2 stores them, written with the models' writers (unchanged models
     // give their files back byte for byte).

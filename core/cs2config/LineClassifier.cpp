@@ -39,6 +39,34 @@ bool LineClassifier::isHeader(std::string_view line) {
     return true;
 }
 
+std::size_t LineClassifier::headerAfterJunk(std::string_view line) {
+    line = trimRight(line);
+    const std::size_t bracket = line.rfind('[');
+    if (bracket == std::string_view::npos || bracket == 0 || !isHeader(line.substr(bracket)))
+        return std::string_view::npos;
+    const std::string_view junk = line.substr(0, bracket);
+    if (junk.find('\0') != std::string_view::npos || junk.find(']') != std::string_view::npos)
+        return std::string_view::npos;
+    std::size_t key = junk.find_first_not_of(" \t.");
+    while (key < junk.size() && isKeyCharacter(junk[key]))
+        ++key;
+    if (key < junk.size() && junk[key] == '=') // an entry whose value ends in brackets
+        return std::string_view::npos;
+    return bracket;
+}
+
+bool LineClassifier::classifyHeaderAfterJunk() {
+    const std::string_view text = node_.text();
+    const std::size_t bracket = headerAfterJunk(text);
+    if (bracket == std::string_view::npos)
+        return false;
+    node_.kind_ = Node::Kind::Header;
+    node_.level_ = 0;
+    node_.keyStart_ = static_cast<std::uint32_t>(bracket + 1);
+    node_.keyLength_ = static_cast<std::uint32_t>(trimRight(text).size() - bracket - 2);
+    return true;
+}
+
 void LineClassifier::decodeLatin1() {
     node_.decoded_ = latin1ToUtf8(node_.raw_);
 }

@@ -15,10 +15,15 @@ public:
     explicit LineClassifier(Node& node) : node_(node) {}
 
     static bool isHeader(std::string_view line);
+    // Where the "[section]" of a header with junk in front of it ("Bau [magnetartikel]") starts;
+    // npos for any other line (a clean header, an entry such as ".name=Gleis [3]", plain text).
+    static std::size_t headerAfterJunk(std::string_view line);
     static bool isKeyCharacter(char c);
 
     void decodeLatin1();
     Result classify(int maxLevel);
+    // Reads the line as a header with junk in front of it; false when it is not one.
+    bool classifyHeaderAfterJunk();
     // A hint about what an unreadable line probably was, e.g. " (a damaged section header?)".
     std::string hint() const;
 

@@ -85,6 +85,12 @@ ArticleLink TrackElement::articleLink() const {
     return known ? known->article : ArticleLink::None;
 }
 
+std::optional<std::int64_t> TrackElement::accessoryId() const {
+    if (!hasArticle() || articleLink() != ArticleLink::Accessory)
+        return std::nullopt;
+    return article / 2;
+}
+
 bool TrackElement::switchable() const {
     const TrackElementType* known = elementType();
     return known && known->switchable();

@@ -8,6 +8,7 @@
 #include "cs2config/TrackPosition.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,11 @@ struct TrackElement {
     ArticleLink articleLink() const;
     bool switchable() const;
     bool hasArticle() const { return article >= 0; }
+    // The keyboard id of the article an accessory tile switches: `.artikel` = 2 x the article's `.id`,
+    // plus 1 for the second output of a paired article (field notes); nullopt for other tiles.
+    std::optional<std::int64_t> accessoryId() const;
+    // True when `.artikel` names the second output of its keyboard id (`.ungerade=1` articles).
+    bool onSecondOutput() const { return article >= 0 && article % 2 == 1; }
     // The line of the record in its file; 0 for a new element.
     int line() const { return source.lineNumber(); }
 };

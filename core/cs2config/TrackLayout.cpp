@@ -1,5 +1,6 @@
 #include "cs2config/TrackLayout.h"
 
+#include "cs2config/ConfigKind.h"
 #include "cs2config/Text.h"
 
 #include <fstream>
@@ -11,6 +12,7 @@ namespace {
 
 constexpr std::string_view pageDirectory = "gleisbilder";
 constexpr std::string_view pageExtension = ".cs2";
+constexpr std::string_view missingProblem = "is missing";
 
 bool usableFileName(std::string_view name) {
     if (name.empty() || name == "." || name == "..")
@@ -30,7 +32,7 @@ struct FileContent {
 FileContent readFile(const std::filesystem::path& path) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error))
-        return {std::nullopt, "is missing"};
+        return {std::nullopt, std::string(missingProblem)};
     const std::uintmax_t size = std::filesystem::file_size(path, error);
     if (error)
         return {std::nullopt, "cannot be read (" + error.message() + ")"};
@@ -46,6 +48,13 @@ FileContent readFile(const std::filesystem::path& path) {
 
 std::string displayName(std::string_view pageName) {
     return std::string(pageDirectory) + "/" + std::string(pageName) + std::string(pageExtension);
+}
+
+// The kind rules of `cs2 check`: a file without a readable header is read as what its name says, and
+// the warning says so. Index and pages are read as such whatever they hold; their readers report a
+// header that names another section.
+void noteKind(const Document& document, Diagnostics& diagnostics) {
+    recogniseConfigKind(document, diagnostics.fileName(), diagnostics);
 }
 
 TrackLayoutPage loadPage(const std::filesystem::path& directory, const TrackPageEntry& entry,
@@ -65,6 +74,7 @@ TrackLayoutPage loadPage(const std::filesystem::path& directory, const TrackPage
     page.file = *file;
     const FileContent content = readFile(*file);
     if (!content.bytes) {
+        page.missing = content.problem == missingProblem;
         indexDiagnostics.warning(entry.line(),
                                  "page file " + quoteForMessage(displayName(entry.name), 80) + " of page " +
                                      std::to_string(entry.id) + " " + content.problem,
@@ -72,6 +82,7 @@ TrackLayoutPage loadPage(const std::filesystem::path& directory, const TrackPage
         return page;
     }
     const Document document = Document::parse(*content.bytes, page.diagnostics);
+    noteKind(document, page.diagnostics);
     page.page = TrackPage::read(document, page.diagnostics);
     page.loaded = true;
     return page;
@@ -110,6 +121,7 @@ TrackLayout TrackLayout::load(const std::filesystem::path& indexFile) {
         return layout;
     }
     const Document document = Document::parse(*content.bytes, layout.diagnostics);
+    noteKind(document, layout.diagnostics);
     layout.plan = TrackPlan::read(document, layout.diagnostics);
     layout.pages.reserve(layout.plan.pages.size());
     for (const TrackPageEntry& entry : layout.plan.pages)

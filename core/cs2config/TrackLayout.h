@@ -27,6 +27,7 @@ struct TrackLayoutPage {
     std::string name;
     std::filesystem::path file; // empty when the name cannot be a file name
     bool loaded = false;        // false when the file is missing or unreadable
+    bool missing = false;       // the page file does not exist
     TrackPage page;
     Diagnostics diagnostics;
 };

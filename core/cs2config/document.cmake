@@ -1,6 +1,7 @@
 # The .cs2 text format: lines kept as read, nested by their dots.
 target_sources(stellwerk-core PRIVATE
     cs2config/ConfigFile.cpp
+    cs2config/ConfigKind.cpp
     cs2config/Diagnostics.cpp
     cs2config/Document.cpp
     cs2config/DocumentParser.cpp

@@ -1,6 +1,8 @@
 # layout sources of stellwerk-core (core/cs2config): the track plan (gleisbild.cs2, its pages, gleisbild.sr2)
 target_sources(stellwerk-core PRIVATE
+    cs2config/LayoutCheck.cpp
     cs2config/LayoutFolder.cpp
+    cs2config/TileArticle.cpp
     cs2config/TrackElement.cpp
     cs2config/TrackElementType.cpp
     cs2config/TrackFields.cpp

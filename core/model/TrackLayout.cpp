@@ -34,7 +34,7 @@ LayoutTile TrackLayout::tileOf(const cs2config::TrackElement& element) {
         return tile;
     switch (element.articleLink()) {
     case cs2config::ArticleLink::Accessory:
-        tile.accessory = element.article / 2;
+        tile.accessory = element.accessoryId();
         break;
     case cs2config::ArticleLink::FeedbackContact:
         tile.contact = contactKey(std::uint16_t(element.deviceId), std::uint16_t(element.article));

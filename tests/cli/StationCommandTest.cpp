@@ -4,6 +4,7 @@
 #include "StationCommand.h"
 
 #include "CliTestSupport.h"
+#include "PingOnlyDevice.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
@@ -234,6 +235,33 @@ TEST_F(StationCommandTest, StatusOfADeviceThatIsNotThereIsNotAcknowledged) {
     const Outcome result = run({"status", "0x12345678"});
     EXPECT_EQ(result.status, 1);
     EXPECT_NE(result.err.find("error: 0x12345678: "), std::string::npos) << result.err;
+}
+
+// A PC program on the bus answers the ping but has no status data: the readings of the station and the
+// Gleisbox are printed all the same, the program is named, and the command succeeds.
+TEST_F(StationCommandTest, StatusNamesADeviceWithoutStatusDataAndPrintsTheOthers) {
+    const test::PingOnlyDevice program(server_->tcpPort());
+    ASSERT_TRUE(program.connected());
+    const Outcome result = run({"status"});
+    EXPECT_EQ(result.status, 0) << result.out << result.err;
+    EXPECT_GE(program.pingsAnswered(), 1);
+    EXPECT_NE(result.out.find("0x47431001 Gleisbox"), std::string::npos) << result.out;
+    EXPECT_TRUE(std::regex_search(result.out, std::regex("\n  TRACK: [0-9]+\\.[0-9]{2} A\n"))) << result.out;
+    EXPECT_NE(result.out.find("0x43533201 "), std::string::npos) << result.out;
+    EXPECT_NE(result.out.find("0x50435057 CS2 software (PC), type 0xEEEE: no status data\n"),
+              std::string::npos)
+        << result.out;
+    EXPECT_EQ(result.err, "") << result.err;
+}
+
+// Asked for by its UID, a device without status data is what the command could not do.
+TEST_F(StationCommandTest, StatusOfOneDeviceWithoutStatusDataIsNotAcknowledged) {
+    const test::PingOnlyDevice program(server_->tcpPort());
+    ASSERT_TRUE(program.connected());
+    const Outcome result = run({"status", "0x50435057"});
+    EXPECT_EQ(result.status, 1);
+    EXPECT_NE(result.out.find("0x50435057"), std::string::npos) << result.out;
+    EXPECT_NE(result.err.find("error: 0x50435057: "), std::string::npos) << result.err;
 }
 
 // ---- monitor ----------------------------------------------------------------------------------------

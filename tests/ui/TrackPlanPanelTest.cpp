@@ -145,6 +145,38 @@ TEST(TrackPlanPanelFiles, OpensACorpusLayoutWithoutAStation) {
     ASSERT_EQ(panel.pageTabs()->count(), 1);
     EXPECT_EQ(panel.pageTabs()->tabText(0), QStringLiteral("karben"));
     EXPECT_EQ(panel.layout()->pages()[0].tiles.size(), 37U);
+}
+
+// karben.cs2 links several tiles to one article and labels tiles with other articles' names: the layout
+// check's findings are shown in the problem banner, the first ones in full.
+TEST(TrackPlanPanelFiles, TheLayoutChecksFindingsAreShownInTheProblemBanner) {
+    TrackPlanPanel panel;
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    const QString text = panel.problemText();
+    EXPECT_TRUE(text.startsWith(QStringLiteral("The layout's files disagree in 13 place(s):")))
+        << text.toStdString();
+    EXPECT_TRUE(
+        text.contains(QStringLiteral("gleisbilder/karben.cs2:16: tile '23' (rechtsweiche at column 5, row 1) "
+                                     "and 2 other tiles switch the same article 1 '23'")))
+        << text.toStdString();
+    EXPECT_TRUE(text.endsWith(QStringLiteral("... and 8 more."))) << text.toStdString();
+    panel.showStationPlan();
+    EXPECT_EQ(panel.problemText(), QString());
+}
+
+TEST(TrackPlanPanelFiles, AConsistentLayoutShowsNoProblem) {
+    TrackPlanPanel panel;
+    QTemporaryDir folder;
+    const std::string index = "[gleisbild]\nseite\n .id=1\n .name=Bahnhof\n";
+    const std::string page =
+        "[gleisbildseite]\nelement\n .id=0x102\n .typ=rechtsweiche\n .artikel=2\n .text=W1\n";
+    const std::string articles = "[magnetartikel]\nartikel\n .id=1\n .name=W1\n .typ=rechtsweiche\n";
+    ASSERT_EQ(cs2config::LayoutFolder::write(folder.path().toStdString(), {{"gleisbild.cs2", index},
+                                                                           {"gleisbilder/Bahnhof.cs2", page},
+                                                                           {"magnetartikel.cs2", articles}}),
+              "");
+    ASSERT_TRUE(panel.openFolder(folder.path()));
+    EXPECT_EQ(panel.pageTabs()->count(), 1);
     EXPECT_EQ(panel.problemText(), QString());
 }
 

@@ -103,6 +103,63 @@ TEST(ConfigFile, UnknownSectionIsReadAsAPlainDocument) {
         "          \"line\": 3,\n          \"value\": \"Gleisbox\"\n        }\n      ]\n    }\n  ]\n}\n");
 }
 
+TEST(ConfigFile, AFileWithADamagedHeaderIsReadAsWhatItsNameSays) {
+    const struct {
+        std::string name;
+        std::string text;
+        ConfigKind kind;
+        std::string summary;
+    } cases[] = {
+        {"magnetartikel.cs2", "[magnetart\nartikel\n .id=1\n .typ=rechtsweiche\n", ConfigKind::Accessories,
+         "1 accessory"},
+        {"lokomotive.cs2", " komotive]\nlokomotive\n .name=V 100\n .uid=0x5\n", ConfigKind::Locomotives,
+         "1 locomotive"},
+        {"fahrstrassen.cs2", "[fahr\xFF\nfahrstrasse\n .id=1\n .name=Einfahrt\n", ConfigKind::Routes,
+         "1 route"},
+        {"config/gleisbild.cs2", "gleisbild]\nseite\n .id=1\n .name=Bahnhof\n", ConfigKind::TrackPlan,
+         "1 page"},
+        {"config/gleisbilder/Bahnhof.cs2", "[gleisbildseit\nelement\n .id=0x102\n .typ=gerade\n",
+         ConfigKind::TrackPage, "1 element"},
+    };
+    for (const auto& test : cases) {
+        const ConfigFile file = fromText(test.text, test.name);
+        EXPECT_EQ(file.kind(), test.kind) << test.name;
+        EXPECT_TRUE(file.usable()) << test.name << "\n" << file.diagnostics().formatAll();
+        EXPECT_NE(file.summary().find(test.summary), std::string::npos) << file.summary();
+        EXPECT_NE(file.diagnostics().formatAll().find(
+                      test.name + ": warning: no readable section header; read as " +
+                      std::string(kindName(test.kind)) + " because of the file name"),
+                  std::string::npos)
+            << file.diagnostics().formatAll();
+        EXPECT_EQ(file.write(), test.text) << test.name;
+    }
+}
+
+TEST(ConfigFile, AReadableHeaderWinsOverTheName) {
+    const ConfigFile file = fromText("[magnetartikel]\nartikel\n .id=1\n", "lokomotive.cs2");
+    EXPECT_EQ(file.kind(), ConfigKind::Accessories);
+}
+
+TEST(ConfigFile, AHeaderWithJunkInFrontIsReadAsItsSection) {
+    const ConfigFile file =
+        fromText("Bau [magnetartikel]\nartikel\n .id=1\n .typ=rechtsweiche\n", "mags.cs2");
+    EXPECT_EQ(file.kind(), ConfigKind::Accessories);
+    EXPECT_EQ(file.summary(), "accessories (magnetartikel.cs2): 1 accessory");
+    EXPECT_EQ(file.write(), "Bau [magnetartikel]\nartikel\n .id=1\n .typ=rechtsweiche\n");
+}
+
+TEST(ConfigFile, FileNamesThatSayWhatAFileIs) {
+    EXPECT_EQ(configKindByName("lokomotive.cs2"), ConfigKind::Locomotives);
+    EXPECT_EQ(configKindByName("/x/config/magnetartikel.sr2"), ConfigKind::AccessoryStatus);
+    EXPECT_EQ(configKindByName("gleisbild.sr2"), ConfigKind::TrackStatus);
+    EXPECT_EQ(configKindByName("gleisbilder/5 - Test.cs2"), ConfigKind::TrackPage);
+    EXPECT_EQ(configKindByName("gbs-3.cs2"), ConfigKind::TrackPage);
+    EXPECT_EQ(configKindByName("notes.cs2"), std::nullopt);
+    EXPECT_EQ(configKindByName("gleisbilder/readme.txt"), std::nullopt);
+    // Without a readable header and without a telling name the file stays a plain document.
+    EXPECT_EQ(fromText("[geraet\ngeraet\n .name=Gleisbox\n", "geraet.vrs").kind(), ConfigKind::Unknown);
+}
+
 TEST(ConfigFile, WhatIsNotACs2FileIsNotUsable) {
     EXPECT_EQ(fromText("Dear station,\nplease\n").kind(), ConfigKind::NotConfiguration);
     EXPECT_EQ(fromText(std::string_view("\x89PNG\r\n\x1A\n\0\0", 10)).kind(), ConfigKind::NotConfiguration);

@@ -150,6 +150,45 @@ TEST(Cs2Document, JunkBeforeTheHeaderIsKeptAndReported) {
     EXPECT_EQ(parsed.document.serialize(), bytes);
 }
 
+TEST(Cs2Document, HeaderWithJunkInFrontOnTheSameLineIsRecognisedAndKept) {
+    const std::string bytes = "Bau [magnetartikel]\nartikel\n .id=1\n .name=W1\n";
+    Parsed parsed = parseText(bytes, "magnetartikel.cs2");
+    EXPECT_TRUE(parsed.document.hasHeader());
+    EXPECT_EQ(parsed.document.section(), "magnetartikel");
+    EXPECT_EQ(parsed.document.records("artikel").size(), 1u);
+    EXPECT_EQ(parsed.document.records("Bau").size(), 0u);
+    ASSERT_EQ(parsed.diagnostics.items().size(), 1u) << parsed.diagnostics.formatAll();
+    EXPECT_EQ(parsed.diagnostics.format(parsed.diagnostics.items()[0]),
+              "magnetartikel.cs2:1: warning: 'Bau ' in front of the section header [magnetartikel]; read as "
+              "the header; the text in front of it is kept unchanged");
+    EXPECT_EQ(parsed.document.serialize(), bytes);
+}
+
+TEST(Cs2Document, ByteOrderMarkAndJunkLinesBeforeAJunkHeaderAreKept) {
+    const std::string bytes = "saved by tool\r\n\xEF\xBB\xBF[lokomotive]\r\nlokomotive\r\n .name=V 100\r\n";
+    Parsed parsed = parseText(bytes);
+    EXPECT_EQ(parsed.document.section(), "lokomotive");
+    EXPECT_EQ(parsed.document.style().newline, "\r\n");
+    ASSERT_EQ(parsed.document.records("lokomotive").size(), 1u);
+    EXPECT_EQ(parsed.document.records("lokomotive")[0]->valueOf("name"), "V 100");
+    ASSERT_EQ(parsed.diagnostics.items().size(), 2u) << parsed.diagnostics.formatAll();
+    EXPECT_EQ(parsed.diagnostics.items()[0].message, "1 line(s) before the [section] header");
+    EXPECT_EQ(parsed.diagnostics.items()[1].line, 2);
+    EXPECT_EQ(parsed.document.serialize(), bytes);
+}
+
+TEST(Cs2Document, AValueEndingInBracketsIsNotAHeader) {
+    Parsed parsed = parseText("lokomotive\n .name=Gleis [3]\n");
+    EXPECT_FALSE(parsed.document.hasHeader());
+    EXPECT_EQ(parsed.document.record("lokomotive")->valueOf("name"), "Gleis [3]");
+}
+
+TEST(Cs2Document, ACleanHeaderWinsOverALineThatEndsInBrackets) {
+    Parsed parsed = parseText("Bau [magnetartikel]\n[lokomotive]\nlokomotive\n");
+    EXPECT_EQ(parsed.document.section(), "lokomotive");
+    EXPECT_EQ(parsed.document.serialize(), "Bau [magnetartikel]\n[lokomotive]\nlokomotive\n");
+}
+
 TEST(Cs2Document, MissingFinalNewlineAndCrLfSurvive) {
     for (std::string_view bytes : {std::string_view("[gleisbildseite]\nelement\n .id=0x1\n .typ=gerade"),
                                    std::string_view("[gleisbildseite]\r\nelement\r\n .id=0x1\r\n"),

@@ -1,5 +1,6 @@
 # layout tests (tests/core/cs2config): the track plan index, its pages, the status file, a layout directory
 target_sources(stellwerk-core-tests PRIVATE
+    cs2config/LayoutCheckTest.cpp
     cs2config/LayoutFolderTest.cpp
     cs2config/TrackElementTypeTest.cpp
     cs2config/TrackFuzzTest.cpp
