@@ -68,6 +68,10 @@ std::vector<std::uint8_t> compress(std::string_view contents) {
 
 cs2::Expected<std::string, ConfigStreamError> inflate(std::span<const std::uint8_t> bytes,
                                                       std::size_t limit) {
+    if (bytes.size() < SizePrefix)
+        return inflateError(StreamErrorKind::InflateFailed, "the payload has " +
+                                                                std::to_string(bytes.size()) +
+                                                                " bytes, fewer than its 4-byte size prefix");
     const std::size_t announced = announcedSize(bytes);
     if (announced > limit)
         return inflateError(StreamErrorKind::TooLarge, "the file announces " + std::to_string(announced) +
