@@ -104,6 +104,15 @@ cs2::Expected<std::string, ConfigStreamError> inflate(std::span<const std::uint8
     return out;
 }
 
+bool isText(std::span<const std::uint8_t> bytes) {
+    std::size_t end = bytes.size();
+    while (end > 0 && bytes[end - 1] == 0)
+        --end;
+    return std::all_of(bytes.begin(), bytes.begin() + std::ptrdiff_t(end), [](std::uint8_t byte) {
+        return byte >= 0x20 ? byte != 0x7F : byte == '\t' || byte == '\n' || byte == '\r';
+    });
+}
+
 std::string padLines(std::string_view text) {
     std::string out;
     out.reserve(text.size() + text.size() / 4);

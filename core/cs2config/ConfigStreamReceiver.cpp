@@ -154,7 +154,8 @@ StreamOutcome ConfigStreamReceiver::complete() {
 
 // The format comes from the sender where it says so: a requested key's file is sent in the key's
 // format (document 7.1). Only without a key (a broadcast, or no request seen) do the bytes decide: a
-// payload that inflates is compressed, anything else is the plain file.
+// payload that inflates is compressed; one that looks compressed but does not inflate is the plain
+// file when it is text, and a damaged compressed file otherwise.
 StreamOutcome ConfigStreamReceiver::decodeFile(ReceivedConfigFile file) const {
     const auto payload = std::span<const std::uint8_t>(file.streamBytes).first(file.length);
     const auto key = findConfigFileKey(file.key);
@@ -170,7 +171,7 @@ StreamOutcome ConfigStreamReceiver::decodeFile(ReceivedConfigFile file) const {
             file.contents = std::move(*inflated);
             return file;
         }
-        if (key)
+        if (key || !payload::isText(payload))
             return ConfigStreamError{inflated.error().kind, describe() + ": " + inflated.error().message};
     }
     file.contents = payload::plainText(payload);

@@ -48,7 +48,7 @@ using StreamOutcome = cs2::Expected<ReceivedConfigFile, ConfigStreamError>;
 // Reassembles one config-data stream at a time (command 0x21, document 7.2) from decoded frames:
 // header (DLC 6, or 7 for a broadcast), then DLC-8 data frames up to the announced length. Checks
 // the CRC over every received byte, inflates compressed files (the requested key's format says which;
-// without a key, a payload that inflates) and strips the MS2 line padding.
+// without a key, a payload that inflates, or is not text) and strips the MS2 line padding.
 // Each call returns the streams it finished: good files or errors (usually none, at most two when a
 // header cuts short the stream before it).
 class ConfigStreamReceiver {

@@ -86,10 +86,10 @@ TEST(CliDecode, UnknownOptionIsAUsageError) {
 TEST(CliDecode, JsonEscapesBytesThatAreNotUtf8) {
     const auto run = decode({"--json"}, "\xe4\n");
     EXPECT_EQ(run.status, 1);
-    EXPECT_EQ(run.out.substr(0, 20), "{\"input\":\"\\u00e4\",") << run.out;
+    EXPECT_EQ(run.out.rfind("{\"input\":\"\\u00e4\",\"error\":\"'\\u00e4' is not", 0), 0u) << run.out;
 }
 
 TEST(CliDecode, JsonKeepsUtf8AndEscapesControlCharacters) {
     const auto run = decode({"--json"}, "Gr\xc3\xbc\xc3\x9f\x1b[2J\n");
-    EXPECT_EQ(run.out.substr(0, 32), "{\"input\":\"Gr\xc3\xbc\xc3\x9f\\u001b[2J\",") << run.out;
+    EXPECT_EQ(run.out.rfind("{\"input\":\"Gr\xc3\xbc\xc3\x9f\\u001b[2J\",", 0), 0u) << run.out;
 }
