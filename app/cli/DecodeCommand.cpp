@@ -2,24 +2,13 @@
 
 #include "cs2/FrameReport.h"
 #include "cs2/FrameText.h"
+#include "cs2/JsonText.h"
 
 #include <istream>
 #include <ostream>
 
 namespace stellwerk::cli {
 namespace {
-
-std::string jsonEscape(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        if (c == '"' || c == '\\')
-            out += '\\';
-        if (static_cast<unsigned char>(c) < 0x20)
-            continue;
-        out += c;
-    }
-    return out;
-}
 
 // Decodes and prints one input line; returns false when the frame was unreadable or invalid.
 class FramePrinter {
@@ -40,7 +29,8 @@ public:
 private:
     void reportUnreadable(const std::string& input, std::size_t lineNumber, const std::string& error) {
         if (json_)
-            out_ << "{\"input\":\"" << jsonEscape(input) << "\",\"error\":\"" << jsonEscape(error) << "\"}\n";
+            out_ << "{\"input\":" << cs2::jsonQuoted(input) << ",\"error\":" << cs2::jsonQuoted(error)
+                 << "}\n";
         else
             err_ << "stellwerk-cli decode: line " << lineNumber << ": " << error << ": " << input << '\n';
     }

@@ -2,6 +2,7 @@
 
 #include "cs2/Fields.h"
 #include "cs2/FrameText.h"
+#include "cs2/JsonText.h"
 
 #include <cstdio>
 
@@ -12,21 +13,6 @@ std::string hex(std::uint64_t value, unsigned digits) {
     char buffer[24];
     std::snprintf(buffer, sizeof buffer, "%0*llX", int(digits), static_cast<unsigned long long>(value));
     return buffer;
-}
-
-std::string jsonString(std::string_view text) {
-    std::string out = "\"";
-    for (unsigned char c : text) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += char(c);
-        } else if (c < 0x20 || c >= 0x7F) {
-            out += "\\u00" + hex(c, 2); // bytes above 0x7E read as Latin-1
-        } else {
-            out += char(c);
-        }
-    }
-    return out + "\"";
 }
 
 std::string textValue(const Field& field) {
@@ -51,7 +37,7 @@ std::string jsonValue(const Field& field) {
     case FieldFormat::Bool:
         return field.number ? "true" : "false";
     case FieldFormat::Text:
-        return jsonString(field.text);
+        return jsonQuoted(field.text);
     case FieldFormat::Decimal:
         break;
     }
@@ -191,15 +177,15 @@ std::string FrameReport::json() const {
     for (auto byte : frame_.payload())
         data += hex(byte, 2);
     out += ",\"data\":\"" + data + "\"";
-    out += ",\"name\":" + jsonString(name());
+    out += ",\"name\":" + jsonQuoted(name());
     out += ",\"fields\":{";
     if (!result_) {
-        out += "\"error\":" + jsonString(result_.error().message());
-        out += ",\"errorKind\":" + jsonString(decodeErrorKindName(result_.error().kind));
+        out += "\"error\":" + jsonQuoted(result_.error().message());
+        out += ",\"errorKind\":" + jsonQuoted(decodeErrorKindName(result_.error().kind));
     } else {
         bool first = true;
         for (const auto& field : describe(*result_)) {
-            out += (first ? "" : ",") + jsonString(field.key) + ":" + jsonValue(field);
+            out += (first ? "" : ",") + jsonQuoted(field.key) + ":" + jsonValue(field);
             first = false;
         }
     }

@@ -131,7 +131,15 @@ Result parseNetwork(std::string_view hex) {
     std::array<std::uint8_t, CanFrame::NetworkSize> bytes{};
     for (std::size_t i = 0; i < bytes.size(); ++i)
         bytes[i] = *byteValue(hex.substr(2 * i, 2));
-    return ParsedFrame{CanFrame::fromNetwork(bytes), FrameNotation::Network};
+    const CanFrame frame = CanFrame::fromNetwork(bytes);
+    // The network form pads the data to eight bytes: a DLC above 8 cannot be written in it, and
+    // bits above the 29-bit identifier do not exist on the bus.
+    if (frame.dlc > 8)
+        return "the network form's DLC byte (digits 9-10) is " + std::to_string(frame.dlc) +
+               "; a CAN frame has at most 8 data bytes";
+    if ((frame.id & ~CanFrame::IdMask) != 0)
+        return "identifier " + std::string(hex.substr(0, 8)) + " does not fit in 29 bits";
+    return ParsedFrame{frame, FrameNotation::Network};
 }
 
 Result parseDocument(const Tokens& tokens) {

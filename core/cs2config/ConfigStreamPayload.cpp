@@ -68,6 +68,10 @@ std::vector<std::uint8_t> compress(std::string_view contents) {
 
 cs2::Expected<std::string, ConfigStreamError> inflate(std::span<const std::uint8_t> bytes,
                                                       std::size_t limit) {
+    if (bytes.size() < SizePrefix)
+        return inflateError(StreamErrorKind::InflateFailed, "the payload has " +
+                                                                std::to_string(bytes.size()) +
+                                                                " bytes, fewer than its 4-byte size prefix");
     const std::size_t announced = announcedSize(bytes);
     if (announced > limit)
         return inflateError(StreamErrorKind::TooLarge, "the file announces " + std::to_string(announced) +
@@ -98,6 +102,15 @@ cs2::Expected<std::string, ConfigStreamError> inflate(std::span<const std::uint8
                             "the file inflates to " + std::to_string(out.size()) +
                                 " bytes, its size prefix announces " + std::to_string(announced));
     return out;
+}
+
+bool isText(std::span<const std::uint8_t> bytes) {
+    std::size_t end = bytes.size();
+    while (end > 0 && bytes[end - 1] == 0)
+        --end;
+    return std::all_of(bytes.begin(), bytes.begin() + std::ptrdiff_t(end), [](std::uint8_t byte) {
+        return byte >= 0x20 ? byte != 0x7F : byte == '\t' || byte == '\n' || byte == '\r';
+    });
 }
 
 std::string padLines(std::string_view text) {

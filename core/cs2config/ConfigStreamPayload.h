@@ -39,6 +39,9 @@ bool hasPaddedLines(std::string_view text);
 // Removes the padding that padLines() adds; padLines() then stripLinePadding() gives the input back.
 std::string stripLinePadding(std::string_view text);
 
+// True when the bytes read as text: no control bytes but tab and line ends, apart from trailing zero
+// bytes (frame padding). zlib output never does; a plain .cs2 or MS2 text file does.
+bool isText(std::span<const std::uint8_t> bytes);
 // The file of a plain (uncompressed) stream, given the announced length of bytes. Text loses its
 // line padding when in the MS2 form, and trailing zero bytes when the length is a multiple of 8
 // (frame padding, which a CS3 counts in the length). Bytes with a zero byte before the trailing

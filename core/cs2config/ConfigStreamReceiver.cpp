@@ -2,6 +2,7 @@
 
 #include "cs2/Codec.h"
 #include "cs2/Crc16.h"
+#include "cs2config/ConfigStreamKeys.h"
 #include "cs2config/ConfigStreamPayload.h"
 
 #include <algorithm>
@@ -151,17 +152,29 @@ StreamOutcome ConfigStreamReceiver::complete() {
     return decodeFile(std::move(file));
 }
 
+// The format comes from the sender where it says so: a requested key's file is sent in the key's
+// format (document 7.1). Only without a key (a broadcast, or no request seen) do the bytes decide: a
+// payload that inflates is compressed; one that looks compressed but does not inflate is the plain
+// file when it is text, and a damaged compressed file otherwise.
 StreamOutcome ConfigStreamReceiver::decodeFile(ReceivedConfigFile file) const {
     const auto payload = std::span<const std::uint8_t>(file.streamBytes).first(file.length);
-    file.compressed = payload::isCompressed(payload);
-    if (!file.compressed) {
-        file.contents = payload::plainText(payload);
+    const auto key = findConfigFileKey(file.key);
+    const bool looksCompressed = payload::isCompressed(payload);
+    if (key && key->format == StreamFormat::Binary) {
+        file.contents.assign(payload.begin(), payload.end());
         return file;
     }
-    auto inflated = payload::inflate(payload, limits_.maxFileSize);
-    if (!inflated)
-        return ConfigStreamError{inflated.error().kind, describe() + ": " + inflated.error().message};
-    file.contents = std::move(*inflated);
+    if (looksCompressed && (!key || key->format == StreamFormat::Compressed)) {
+        auto inflated = payload::inflate(payload, limits_.maxFileSize);
+        if (inflated) {
+            file.compressed = true;
+            file.contents = std::move(*inflated);
+            return file;
+        }
+        if (key || !payload::isText(payload))
+            return ConfigStreamError{inflated.error().kind, describe() + ": " + inflated.error().message};
+    }
+    file.contents = payload::plainText(payload);
     return file;
 }
 

@@ -22,7 +22,7 @@ struct ReceivedConfigFile {
     std::uint8_t broadcastValue = 0;       // its seventh byte
     std::uint32_t length = 0;              // as the header announces
     std::uint16_t crc = 0;                 // as the header announces and the data confirmed
-    bool compressed = false;               // size prefix + zlib stream
+    bool compressed = false;               // size prefix + zlib stream (inflated into contents)
     std::vector<std::uint8_t> streamBytes; // every data byte received, frame padding included
     std::string contents;                  // the file: inflated, or the text without padding
 };
@@ -47,7 +47,8 @@ using StreamOutcome = cs2::Expected<ReceivedConfigFile, ConfigStreamError>;
 
 // Reassembles one config-data stream at a time (command 0x21, document 7.2) from decoded frames:
 // header (DLC 6, or 7 for a broadcast), then DLC-8 data frames up to the announced length. Checks
-// the CRC over every received byte, inflates compressed files and strips the MS2 line padding.
+// the CRC over every received byte, inflates compressed files (the requested key's format says which;
+// without a key, a payload that inflates, or is not text) and strips the MS2 line padding.
 // Each call returns the streams it finished: good files or errors (usually none, at most two when a
 // header cuts short the stream before it).
 class ConfigStreamReceiver {

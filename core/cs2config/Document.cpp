@@ -43,7 +43,8 @@ void Document::replaceRecords(std::string_view keyword, std::vector<Node> record
     std::size_t next = 0;
     std::size_t afterLastSlot = 0;
     for (Node& node : top) {
-        if (!(node.isEntry() && node.key() == keyword)) {
+        // Only records (level 0): a stray ".keyword" line outside any record stays where it is.
+        if (!(node.isEntry() && node.level() == 0 && node.key() == keyword)) {
             kept.push_back(std::move(node));
             continue;
         }

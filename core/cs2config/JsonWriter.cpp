@@ -1,30 +1,11 @@
 #include "cs2config/JsonWriter.h"
 
+#include "cs2/JsonText.h"
+
 namespace stellwerk::cs2config {
 
 std::string JsonWriter::quoted(std::string_view text) {
-    static constexpr char hex[] = "0123456789abcdef";
-    std::string out = "\"";
-    for (char c : text) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += c;
-        } else if (c == '\n') {
-            out += "\\n";
-        } else if (c == '\t') {
-            out += "\\t";
-        } else if (c == '\r') {
-            out += "\\r";
-        } else if (byte < 0x20) {
-            out += "\\u00";
-            out += hex[byte >> 4];
-            out += hex[byte & 0x0F];
-        } else {
-            out += c;
-        }
-    }
-    return out + "\"";
+    return cs2::jsonQuoted(text);
 }
 
 void JsonWriter::newline() {

@@ -24,19 +24,31 @@ bool needsCs3Escape(unsigned char c) {
     return c < 0x20 || c == ' ' || c == '#' || c == '/' || c == '=' || c == 0x7f;
 }
 
+// The bytes of a run of "#xx" escapes starting at text[i]; `i` moves past the run.
+std::string escapedRun(std::string_view text, std::size_t& i) {
+    std::string bytes;
+    while (i + 2 < text.size() && text[i] == '#' && hexDigit(text[i + 1]) >= 0 &&
+           hexDigit(text[i + 2]) >= 0) {
+        bytes += static_cast<char>(hexDigit(text[i + 1]) * 16 + hexDigit(text[i + 2]));
+        i += 3;
+    }
+    return bytes;
+}
+
 } // namespace
 
 std::string cs3Unescape(std::string_view text) {
     std::string out;
     out.reserve(text.size());
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        if (text[i] == '#' && i + 2 < text.size() && hexDigit(text[i + 1]) >= 0 &&
-            hexDigit(text[i + 2]) >= 0) {
-            out += static_cast<char>(hexDigit(text[i + 1]) * 16 + hexDigit(text[i + 2]));
-            i += 2;
+    for (std::size_t i = 0; i < text.size();) {
+        const std::string run = escapedRun(text, i);
+        if (run.empty()) {
+            out += text[i++];
             continue;
         }
-        out += text[i];
+        // A CS3 escapes ASCII ("#20", "#2F"); escaped bytes that form UTF-8 are taken as UTF-8, any
+        // other byte above 0x7F as its Latin-1 character, so that the text is always valid UTF-8.
+        out += isValidUtf8(run) ? run : latin1ToUtf8(run);
     }
     return out;
 }

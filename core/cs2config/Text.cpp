@@ -1,48 +1,15 @@
 #include "cs2config/Text.h"
 
+#include "cs2/JsonText.h"
+
 #include <cstdint>
 
 namespace stellwerk::cs2config {
 
-namespace {
-
-// Length of the UTF-8 sequence starting at bytes[i], or 0 when it is malformed.
-std::size_t sequenceLength(std::string_view bytes, std::size_t i) {
-    const auto lead = static_cast<std::uint8_t>(bytes[i]);
-    std::size_t length = 0;
-    std::uint32_t minimum = 0;
-    std::uint32_t code = 0;
-    if (lead >= 0xC2 && lead <= 0xDF) {
-        length = 2, minimum = 0x80, code = lead & 0x1Fu;
-    } else if (lead >= 0xE0 && lead <= 0xEF) {
-        length = 3, minimum = 0x800, code = lead & 0x0Fu;
-    } else if (lead >= 0xF0 && lead <= 0xF4) {
-        length = 4, minimum = 0x10000, code = lead & 0x07u;
-    } else {
-        return 0;
-    }
-    if (i + length > bytes.size())
-        return 0;
-    for (std::size_t k = 1; k < length; ++k) {
-        const auto next = static_cast<std::uint8_t>(bytes[i + k]);
-        if ((next & 0xC0u) != 0x80u)
-            return 0;
-        code = (code << 6) | (next & 0x3Fu);
-    }
-    const bool surrogate = code >= 0xD800 && code <= 0xDFFF;
-    return code < minimum || code > 0x10FFFF || surrogate ? 0 : length;
-}
-
-} // namespace
-
 bool isValidUtf8(std::string_view bytes) {
     std::size_t i = 0;
     while (i < bytes.size()) {
-        if (static_cast<std::uint8_t>(bytes[i]) < 0x80) {
-            ++i;
-            continue;
-        }
-        const std::size_t length = sequenceLength(bytes, i);
+        const std::size_t length = cs2::utf8SequenceLength(bytes, i);
         if (length == 0)
             return false;
         i += length;

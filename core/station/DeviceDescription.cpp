@@ -6,6 +6,17 @@
 namespace stellwerk::station {
 namespace {
 
+// The text without control characters (C0, DEL, C1): a device on the bus must not be able to send
+// terminal escapes or line breaks into what the CLI and the UI show.
+QString printable(const QString& text) {
+    QString out;
+    out.reserve(text.size());
+    for (const QChar c : text)
+        if (c.category() != QChar::Other_Control)
+            out += c;
+    return out;
+}
+
 // Reads fixed fields and NUL-terminated strings from a status-data block, with bounds checks.
 class BlockReader {
 public:
@@ -19,12 +30,17 @@ public:
         return value;
     }
     std::uint32_t u32() { return std::uint32_t(u16()) << 16 | u16(); }
+    // A fixed-size ASCII field (the article number): up to the first NUL, printable characters only.
     std::string fixed(std::size_t count) {
-        std::string text(reinterpret_cast<const char*>(bytes_.data() + pos_), count);
+        std::string text;
+        for (std::size_t i = 0; i < count && bytes_[pos_ + i] != 0; ++i)
+            if (bytes_[pos_ + i] > 0x20 && bytes_[pos_ + i] < 0x7F)
+                text += char(bytes_[pos_ + i]);
         pos_ += count;
-        return text.substr(0, text.find('\0'));
+        return text;
     }
-    // UTF-8, or Latin-1 when the bytes are not valid UTF-8; empty at the end of the block.
+    // UTF-8, or Latin-1 when the bytes are not valid UTF-8, without control characters; empty at the
+    // end of the block.
     std::string text() {
         std::size_t end = pos_;
         while (end < bytes_.size() && bytes_[end] != 0)
@@ -32,10 +48,10 @@ public:
         const auto* data = reinterpret_cast<const char*>(bytes_.data() + pos_);
         const auto size = qsizetype(end - pos_);
         pos_ = std::min(end + 1, bytes_.size());
-        const QString utf8 = QString::fromUtf8(data, size);
-        if (!utf8.contains(QChar::ReplacementCharacter))
-            return utf8.toStdString();
-        return QString::fromLatin1(data, size).toStdString();
+        QString utf8 = QString::fromUtf8(data, size);
+        if (utf8.contains(QChar::ReplacementCharacter))
+            utf8 = QString::fromLatin1(data, size);
+        return printable(utf8).toStdString();
     }
 
 private:

@@ -16,7 +16,7 @@ struct DeviceSummary {
     std::uint8_t readingCount = 0;
     std::uint8_t configCount = 0;
     std::uint32_t serial = 0;
-    std::string article;  // "60113"
+    std::string article;  // "60113": printable ASCII only, whatever bytes the device sent
     std::string name;     // "Gleisbox"
     std::string nickname; // what may follow the name (empty for most devices)
 };

@@ -1,7 +1,5 @@
 #include "station/StatusDataReader.h"
 
-#include "cs2/Hash.h"
-
 namespace stellwerk::station {
 
 StatusDataReader::StatusDataReader(CommandTracker& tracker, QObject* parent)
@@ -18,7 +16,7 @@ void StatusDataReader::read(const cs2::DeviceIdentity& device, Done done) {
 
 void StatusDataReader::feedPacket(const cs2::StatusDataConfig& packet, std::uint16_t hash) {
     if (active_ && packet.form == cs2::StatusDataConfig::Form::Packet)
-        packets_[cs2::packetNumberFromHash(hash)] = packet.packet;
+        packets_.add(hash, packet.packet);
 }
 
 void StatusDataReader::startNext() {
@@ -41,7 +39,7 @@ void StatusDataReader::requestIndex() {
 void StatusDataReader::indexAnswered(const CommandResult& result) {
     Job& job = *active_;
     if (result.succeeded()) {
-        store(assemble());
+        store(packets_.assemble());
     } else {
         job.problems << QStringLiteral("device 0x%1: status data index %2: %3")
                             .arg(job.device.identity.uid, 8, 16, QLatin1Char('0'))
@@ -90,14 +88,6 @@ void StatusDataReader::finishJob() {
         job.done(job.device, job.problems);
     if (!active_)
         startNext();
-}
-
-std::vector<std::uint8_t> StatusDataReader::assemble() const {
-    std::vector<std::uint8_t> bytes;
-    bytes.reserve(packets_.size() * 8);
-    for (const auto& [number, packet] : packets_)
-        bytes.insert(bytes.end(), packet.view().begin(), packet.view().end());
-    return bytes;
 }
 
 } // namespace stellwerk::station

@@ -3,12 +3,12 @@
 #include "cs2/Messages.h"
 #include "station/CommandTracker.h"
 #include "station/DeviceDescription.h"
+#include "station/StatusDataPackets.h"
 
 #include <QObject>
 #include <QStringList>
 #include <deque>
 #include <functional>
-#include <map>
 #include <vector>
 
 namespace stellwerk::station {
@@ -45,13 +45,12 @@ private:
     void indexAnswered(const CommandResult& result);
     void store(std::span<const std::uint8_t> bytes);
     void finishJob();
-    std::vector<std::uint8_t> assemble() const;
 
     CommandTracker& tracker_;
     CommandPolicy policy_{std::chrono::milliseconds(1000), 1};
     std::deque<Job> queue_;
     std::optional<Job> active_;
-    std::map<std::uint16_t, cs2::RawBytes> packets_;
+    StatusDataPackets packets_;
 };
 
 } // namespace stellwerk::station

@@ -15,6 +15,7 @@ target_sources(stellwerk-core PRIVATE
     station/StationSession.cpp
     station/StationSession.h
     station/StationUpdates.cpp
+    station/StatusDataPackets.cpp
     station/StatusDataReader.cpp
     station/StatusDataReader.h
 )

@@ -157,6 +157,31 @@ TEST(Cs2Command, FormatRefusesAFileThatIsNotCs2AndWritesNothing) {
     EXPECT_EQ(readFile(target.path()), "keep me");
 }
 
+// Issue 11 (found by fuzzing): a stray ".artikel" or ".fahrstrasse" line outside any record was
+// dropped by `cs2 format` although the warning said it was kept.
+TEST(Cs2Command, FormatKeepsStrayRecordLinesAsTheWarningSays) {
+    for (const std::string bytes : {"[magnetartikel]\n.artikel\nartikel\n .id=1\n .typ=standardweiche\n",
+                                    "[fahrstrassen]\n.fahrstrasse\nfahrstrasse\n .id=2\n .name=FS 2\n"}) {
+        const ScratchFile file("stray.cs2", bytes);
+        const Outcome outcome = cs2({"format", file.path()});
+        EXPECT_EQ(outcome.status, 0) << outcome.err;
+        EXPECT_NE(outcome.err.find(":2: warning: "), std::string::npos) << outcome.err;
+        EXPECT_NE(outcome.err.find("kept"), std::string::npos) << outcome.err;
+        EXPECT_EQ(outcome.out, bytes);
+    }
+}
+
+// Issue 11 (found by fuzzing): "#cc" in a CS3 loco file became the byte 0xCC, and `cs2 json` wrote
+// invalid UTF-8. Escaped bytes above 0x7F are Latin-1 characters unless they form UTF-8.
+TEST(Cs2Command, JsonOfCs3EscapesIsUtf8) {
+    const ScratchFile file("cs3.cs2", "[lokomotive]\nlokomotive\n .name=Gro#DFe#20Lok\n .dectyp=#cc\n");
+    const Outcome outcome = cs2({"json", file.path()});
+    EXPECT_EQ(outcome.status, 0) << outcome.err;
+    EXPECT_NE(outcome.out.find("\"Gro\u00dfe Lok\""), std::string::npos) << outcome.out;
+    EXPECT_EQ(outcome.out.find('\xcc'), std::string::npos) << outcome.out;
+    EXPECT_NE(outcome.out.find("\u00cc"), std::string::npos) << outcome.out;
+}
+
 TEST(Cs2Command, UsageErrors) {
     EXPECT_EQ(cs2({}).status, 2);
     EXPECT_EQ(cs2({"check"}).status, 2);

@@ -80,3 +80,16 @@ TEST(CliDecode, UnknownOptionIsAUsageError) {
     EXPECT_EQ(run.status, 2);
     EXPECT_EQ(run.err, "stellwerk-cli decode: unknown option --yaml\n");
 }
+
+// Issue 11 (found by fuzzing): a byte above 0x7F in an unreadable line was copied into the JSON as it
+// was, which is not UTF-8. Bytes that are not UTF-8 are written as their Latin-1 character.
+TEST(CliDecode, JsonEscapesBytesThatAreNotUtf8) {
+    const auto run = decode({"--json"}, "\xe4\n");
+    EXPECT_EQ(run.status, 1);
+    EXPECT_EQ(run.out.rfind("{\"input\":\"\\u00e4\",\"error\":\"'\\u00e4' is not", 0), 0u) << run.out;
+}
+
+TEST(CliDecode, JsonKeepsUtf8AndEscapesControlCharacters) {
+    const auto run = decode({"--json"}, "Gr\xc3\xbc\xc3\x9f\x1b[2J\n");
+    EXPECT_EQ(run.out.rfind("{\"input\":\"Gr\xc3\xbc\xc3\x9f\\u001b[2J\",", 0), 0u) << run.out;
+}

@@ -162,6 +162,28 @@ TEST_F(CliStream, EncodeMs2TextIsPlainWithItsFollowUpInTheAcknowledgement) {
     EXPECT_NE(frames.find("00424711 8 5B 6C 6F 6B 6F 6D 6F 74\n"), std::string::npos); // "[lokomot", plain
 }
 
+// Issue 11 (found by fuzzing): bytes 4-5 of this text ("x ") look like a zlib header after a size
+// prefix; the receiver took the plain file for a compressed one and refused it.
+TEST_F(CliStream, SmallPlainFileThatLooksCompressedRoundTrips) {
+    const fs::path text = dir_ / "ldbver.txt";
+    std::ofstream(text) << "abcdx 1\n";
+    const auto run = decode(encoded({text.string(), "--key", "ldbver"}));
+    EXPECT_EQ(run.status, 0) << run.err;
+    EXPECT_NE(run.out.find("ldbver.cs2: 8 bytes, CRC "), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find(" ok, plain, to hash 0x4711"), std::string::npos) << run.out;
+    EXPECT_EQ(readFile(dir_ / "ldbver.cs2"), "abcdx 1\n");
+}
+
+// Without a key (a broadcast) the receiver tries to inflate and takes the plain text when that fails.
+TEST_F(CliStream, SmallPlainBroadcastThatLooksCompressedRoundTrips) {
+    const fs::path text = dir_ / "lokinfo.txt";
+    std::ofstream(text) << "abcdx 1\n";
+    const auto run = decode(encoded({text.string(), "--key", "lokinfo", "--broadcast"}));
+    EXPECT_EQ(run.status, 0) << run.err;
+    EXPECT_NE(run.out.find(" ok, plain, broadcast from hash 0x4711"), std::string::npos) << run.out;
+    EXPECT_EQ(readFile(dir_ / "stream-1.cs2"), "abcdx 1\n");
+}
+
 TEST(CliStreamUsage, ErrorsAreUsageErrors) {
     EXPECT_EQ(stream({}).status, 2);
     EXPECT_EQ(stream({"frobnicate"}).status, 2);

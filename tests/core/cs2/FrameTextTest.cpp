@@ -72,6 +72,17 @@ TEST(FrameText, OversizedDlcParsesSoTheDecoderCanReportIt) {
     EXPECT_EQ(parsed("00004711 9 00 00 00 00 00 00 00 00").frame.dlc, 9);
 }
 
+// Issue 11 (found by fuzzing): the network form accepted a DLC byte of 16..255, and `decode` then
+// printed a frame it could not read back. Its data is padded to eight bytes: more cannot be written.
+TEST(FrameText, NetworkFormRefusesADlcAboveEight) {
+    EXPECT_EQ(errorOf("00004711100000000000000000"),
+              "the network form's DLC byte (digits 9-10) is 16; a CAN frame has at most 8 data bytes");
+    EXPECT_EQ(errorOf("00 00 47 11 09 00 00 00 00 00 00 00 00"),
+              "the network form's DLC byte (digits 9-10) is 9; a CAN frame has at most 8 data bytes");
+    EXPECT_EQ(errorOf("FFFFFFFF000000000000000000"), "identifier FFFFFFFF does not fit in 29 bits");
+    EXPECT_EQ(parsed("00004711080000000000000000").frame.dlc, 8);
+}
+
 TEST(FrameText, ErrorsSayWhatIsWrong) {
     EXPECT_EQ(errorOf(""), "empty line");
     EXPECT_EQ(errorOf("00004711 7 00 00 00 00 06 0A"), "DLC 7 announces 7 data bytes, only 6 given");

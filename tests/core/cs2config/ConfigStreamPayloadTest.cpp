@@ -179,3 +179,12 @@ TEST(ConfigStreamPayload, ZerosInsideAnUnalignedLengthAreData) {
     const std::vector<std::uint8_t> bytes{'a', 'b', 'c', 0};
     EXPECT_EQ(payload::plainText(bytes), std::string("abc\0", 4));
 }
+
+// Found by fuzzing (issue 11): fewer bytes than the size prefix made inflate read before and past them.
+TEST(ConfigStreamPayload, InflateOfFewerBytesThanTheSizePrefixIsAnError) {
+    const std::vector<std::uint8_t> bytes{0xFB};
+    const auto inflated = payload::inflate(bytes, 1024);
+    ASSERT_FALSE(inflated.hasValue());
+    EXPECT_EQ(inflated.error().kind, StreamErrorKind::InflateFailed);
+    EXPECT_FALSE(payload::inflate(std::span<const std::uint8_t>(), 1024).hasValue());
+}

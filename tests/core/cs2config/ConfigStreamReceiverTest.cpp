@@ -125,6 +125,36 @@ TEST(ConfigStreamReceiver, Ms2TextStreamLosesItsLinePadding) {
     EXPECT_EQ(file.length, payload::padLines(text).size());
 }
 
+// Issue 11 (found by fuzzing): "x " at bytes 4-5 looks like a zlib header after a size prefix, and the
+// receiver refused this plain text as a broken compressed file. The requested key says the format.
+TEST(ConfigStreamReceiver, PlainTextThatLooksCompressedFollowsTheKeysFormat) {
+    const std::string text = "abcdx 1\n";
+    ASSERT_TRUE(payload::isCompressed(streamPayload(text, StreamFormat::Ms2Text)));
+    ConfigStreamReceiver receiver;
+    receiver.expectFile("lokinfo", 1);
+    const auto file =
+        singleFile(receiveAll(receiver, streamFrames(text, StreamFormat::Ms2Text, StreamAddress::reply(1))));
+    EXPECT_FALSE(file.compressed);
+    EXPECT_EQ(file.contents, text);
+}
+
+TEST(ConfigStreamReceiver, WithoutAKeyWhatDoesNotInflateIsPlainText) {
+    const std::string text = "abcdx 1\n";
+    const auto file =
+        singleFile(receiveAll(streamFrames(text, StreamFormat::Ms2Text, StreamAddress::broadcast(1))));
+    EXPECT_FALSE(file.compressed);
+    EXPECT_EQ(file.contents, text);
+}
+
+TEST(ConfigStreamReceiver, BinaryKeyKeepsTrailingZeroBytes) {
+    const std::string bytes("\x01\x02\0\0\0\0\0\0", 8);
+    ConfigStreamReceiver receiver;
+    receiver.expectFile("lokdb", 1);
+    const auto file =
+        singleFile(receiveAll(receiver, streamFrames(bytes, StreamFormat::Binary, StreamAddress::reply(1))));
+    EXPECT_EQ(file.contents, bytes);
+}
+
 TEST(ConfigStreamReceiver, EmptyStreamCompletesWithItsHeader) {
     ConfigStreamReceiver receiver;
     const auto outcomes = receiver.feed(headerFrame(0x4711, 0, 0xFFFF));

@@ -5,6 +5,7 @@
 #include "ConfigTestSupport.h"
 #include "cs2config/JsonWriter.h"
 #include "cs2config/LocomotiveJson.h"
+#include "cs2config/LocomotiveValues.h"
 
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -482,6 +483,18 @@ TEST(LocomotiveFileCs3, WritesNamesEscapedAgain) {
     read.file.locomotives.front().decoder = LocomotiveDecoder::Dcc;
     EXPECT_EQ(changedLines(read.bytes, read.file.write().serialize()),
               (std::vector<std::string>{"3:  .name=260#20417-1#20DB#2F2", "6:  .dectyp=dcc"}));
+}
+
+// Issue 11 (found by fuzzing): "#xx" escapes became arbitrary bytes. A CS3 escapes ASCII; escapes that
+// form UTF-8 stay UTF-8, any other byte above 0x7F is its Latin-1 character: the text is always UTF-8.
+TEST(LocomotiveFileCs3, EscapesAlwaysDecodeToUtf8) {
+    EXPECT_EQ(loco::cs3Unescape("260#20417-1#20DB#2F2"), "260 417-1 DB/2");
+    EXPECT_EQ(loco::cs3Unescape("Gro#DFe"), "Gro\u00dfe");
+    EXPECT_EQ(loco::cs3Unescape("#cc"), "\u00cc");
+    EXPECT_EQ(loco::cs3Unescape("B#C3#A4r"), "B\u00e4r");
+    EXPECT_EQ(loco::cs3Unescape("#C3#20"), "\u00c3 ");
+    EXPECT_EQ(loco::cs3Unescape("#2"), "#2");
+    EXPECT_EQ(loco::cs3Unescape("#"), "#");
 }
 
 // --- Edits on the structure --------------------------------------------------------------------

@@ -3,6 +3,7 @@
 
 #include "ScriptedStation.h"
 #include "station/DeviceDescription.h"
+#include "station/StatusDataPackets.h"
 
 namespace stellwerk::station::test {
 namespace {
@@ -98,6 +99,30 @@ TEST(StatusData, DocumentsListAndSliderConfigChannels) {
     EXPECT_EQ(number->maximum, 660);
     EXPECT_EQ(number->value, 500);
     EXPECT_EQ(number->unit, "A");
+}
+
+// Issue 11 (found by fuzzing): the article number was copied raw, so a device on the bus could send
+// invalid UTF-8 and terminal escapes to the CLI. It keeps printable ASCII only; the texts lose their
+// control characters.
+TEST(StatusData, ArticleAndNamesKeepPrintableCharactersOnly) {
+    std::vector<std::uint8_t> summary{1, 0, 0, 0, 0, 0, 0, 1, 0x1B, '[', '2', 'J', '6', 0xFF, '0', 0x07};
+    append(summary, "Gleis\x1b]0;owned\x07"
+                    "box");
+    append(summary, "Nick\xc2\x9b"
+                    "1m");
+    const auto device = parseDeviceSummary(summary);
+    ASSERT_TRUE(device);
+    EXPECT_EQ(device->article, "[2J60");
+    EXPECT_EQ(device->name, "Gleis]0;ownedbox");
+    EXPECT_EQ(device->nickname, "Nick1m");
+}
+
+TEST(StatusData, PacketsJoinInPacketNumberOrder) {
+    StatusDataPackets packets;
+    packets.add(0x0302, cs2::RawBytes{2, {'c', 'd'}});
+    packets.add(0x0301, cs2::RawBytes{2, {'a', 'b'}});
+    packets.add(0x0302, cs2::RawBytes{1, {'C'}});
+    EXPECT_EQ(packets.assemble(), (std::vector<std::uint8_t>{'a', 'b', 'C'}));
 }
 
 TEST(StatusData, DeviceThatDoesNotAnswerIsReportedNotFatal) {

@@ -1,0 +1,52 @@
+// 13-byte network framing of a TCP byte stream: the bytes arrive cut into arbitrary segments.
+// Invariants: FrameAssembler yields the same frames as reading the whole stream at once
+// (decodeDatagram), whatever the segmentation; what waits is the incomplete rest; every frame it
+// hands on is well formed and writes back to the bytes it came from.
+#include "FuzzSupport.h"
+#include "can/FrameAssembler.h"
+#include "can/NetworkFraming.h"
+#include "cs2/FrameText.h"
+
+#include <vector>
+
+using namespace stellwerk;
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    fuzz::FuzzInput input(data, size);
+    // Segment lengths come first (one byte each, 0 ends the list), then the stream itself.
+    std::vector<std::size_t> cuts;
+    for (std::uint8_t cut = input.byte(); cut != 0 && cuts.size() < 64; cut = input.byte())
+        cuts.push_back(cut);
+    const auto stream = input.rest();
+
+    can::FrameAssembler assembler;
+    std::vector<cs2::CanFrame> assembled;
+    std::size_t malformed = 0;
+    std::size_t at = 0;
+    for (std::size_t i = 0; at < stream.size(); ++i) {
+        const std::size_t length =
+            cuts.empty() ? stream.size() : std::min(cuts[i % cuts.size()], stream.size() - at);
+        malformed += assembler.feed(stream.subspan(at, length), assembled);
+        at += length;
+    }
+
+    const std::size_t whole = stream.size() / cs2::CanFrame::NetworkSize * cs2::CanFrame::NetworkSize;
+    std::vector<cs2::CanFrame> direct;
+    const auto content = can::decodeDatagram(stream.first(whole), direct);
+    fuzz::check(assembler.pendingBytes() == stream.size() - whole, "the assembler keeps the wrong rest");
+    fuzz::check(assembled.size() == direct.size() && malformed == content.malformed,
+                "segmentation changes which frames arrive");
+    for (std::size_t i = 0; i < assembled.size(); ++i) {
+        fuzz::check(assembled[i] == direct[i], "segmentation changes a frame",
+                    cs2::formatDocument(assembled[i]));
+        fuzz::check(assembled[i].isWellFormed(), "a malformed frame was handed on",
+                    cs2::formatDocument(assembled[i]));
+    }
+    const QByteArray again = can::encodeFrames(assembled);
+    std::vector<cs2::CanFrame> reread;
+    can::decodeDatagram(can::asBytes(again), reread);
+    fuzz::check(reread.size() == assembled.size(), "frames written back do not read back");
+    for (std::size_t i = 0; i < reread.size(); ++i)
+        fuzz::check(reread[i] == assembled[i], "a frame written back reads differently");
+    return 0;
+}

@@ -1,0 +1,23 @@
+# What the fuzz targets are and which sources of Stellwerk they exercise; shared by the libFuzzer build
+# (fuzz/CMakeLists.txt) and the replay tests of the main build (fuzz/replay.cmake).
+set(STELLWERK_FUZZ_TARGETS
+    frame_decode    # 13 network bytes -> CanFrame -> decode, encode, describe, build
+    network_stream  # a TCP byte stream cut into segments -> FrameAssembler
+    frame_text      # one line in any frame notation -> parseFrame, format, `decode --json`
+    cli_arguments   # `encode NAME key=value...` and the locomotive/accessory/... words of the CLI
+    cs2_document    # a .cs2 file -> Document and the typed reader its name selects -> write, json
+    config_stream   # config-data stream frames -> ConfigStreamReceiver (CRC, inflate, limits)
+    status_data     # status-data configuration packets -> device, reading and config channels
+)
+
+file(GLOB STELLWERK_FUZZED_SOURCES CONFIGURE_DEPENDS
+    ${STELLWERK_ROOT}/core/cs2/*.cpp
+    ${STELLWERK_ROOT}/core/cs2config/*.cpp)
+list(APPEND STELLWERK_FUZZED_SOURCES
+    ${STELLWERK_ROOT}/core/can/FrameAssembler.cpp
+    ${STELLWERK_ROOT}/core/can/NetworkFraming.cpp
+    ${STELLWERK_ROOT}/core/station/DeviceDescription.cpp
+    ${STELLWERK_ROOT}/core/station/StatusDataPackets.cpp
+    ${STELLWERK_ROOT}/app/cli/DecodeCommand.cpp
+    ${STELLWERK_ROOT}/app/cli/LocArgument.cpp)
+set(STELLWERK_FUZZED_INCLUDES ${STELLWERK_ROOT}/core ${STELLWERK_ROOT}/app/cli ${CMAKE_CURRENT_LIST_DIR})
