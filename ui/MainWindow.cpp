@@ -23,6 +23,7 @@
 #include "TrafficStatus.h"
 #include "Translations.h"
 #include "TurnoutPanel.h"
+#include "WindowLayoutSettings.h"
 #include "Workspace.h"
 #include "connection/StationConnection.h"
 
@@ -66,6 +67,19 @@ void MainWindow::changeEvent(QEvent* event) {
         retranslate();
     }
     QMainWindow::changeEvent(event);
+}
+
+// Without a remembered arrangement, a large screen gives the side panels room for a third column of
+// keyboard keys and a second throttle, instead of the laptop widths of the first arrangement.
+void MainWindow::showEvent(QShowEvent* event) {
+    QMainWindow::showEvent(event);
+    if (m_shownBefore)
+        return;
+    m_shownBefore = true;
+    if (!WindowLayoutSettings::load().state.isEmpty() || width() < 1600)
+        return;
+    resizeDocks({m_workspace->dockOf(m_turnoutPanel), m_workspace->dockOf(m_throttlePanel)},
+                {width() * 24 / 100, width() * 27 / 100}, Qt::Horizontal);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

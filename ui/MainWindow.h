@@ -73,6 +73,7 @@ public:
 protected:
     void changeEvent(QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
+    void showEvent(QShowEvent* event) override;
 
 private:
     static QSize firstSize();
@@ -121,6 +122,7 @@ private:
     TrafficStatus* m_traffic = nullptr;
     PowerStatus* m_power = nullptr;
     connection::StationConnection* m_connection = nullptr;
+    bool m_shownBefore = false;
 };
 
 } // namespace stellwerk::ui
