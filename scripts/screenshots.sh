@@ -11,14 +11,18 @@ trap 'rm -rf "$config"' EXIT
 mkdir -p "$config/Stellwerk"
 printf '[throttles]\nlocomotives=0x4001, 0x4002\n' >"$config/Stellwerk/Stellwerk.conf"
 
-app() { XDG_CONFIG_HOME=$config xvfb-run -a -s "-screen 0 1600x1000x24" build/app/gui/stellwerk "$@"; }
+app() { XDG_CONFIG_HOME=$config xvfb-run -a -s "-screen 0 1920x1080x24" build/app/gui/stellwerk "$@"; }
 
-app --screenshot "$shots/main-window.png"
-LANG=de_DE.UTF-8 app --screenshot "$shots/main-window-de.png"
+# The whole desk on a laptop's screen and on a full-HD one, in English and German.
+app --size 1366x768 --screenshot "$shots/main-window.png"
+LANG=de_DE.UTF-8 app --size 1366x768 --screenshot "$shots/main-window-de.png"
+app --size 1920x1080 --screenshot "$shots/main-window-1920x1080.png"
+LANG=de_DE.UTF-8 app --size 1920x1080 --screenshot "$shots/main-window-de-1920x1080.png"
 app --decode docs/examples/bus-session.log --panel frameDecoderPanel --screenshot "$shots/frame-decoder.png"
 app --panel statusPanel --screenshot "$shots/status-gauges.png"
 app --panel busMonitorPanel --screenshot "$shots/bus-monitor.png"
 
-# The single panels, drawn offscreen by their widget tests.
+# The single panels, drawn offscreen by their widget tests; and the whole desk with the track power off and
+# with the station silent ("not reported"), at both sizes and in both languages (StationTrustTest).
 export QT_QPA_PLATFORM=offscreen STELLWERK_SCREENSHOT_DIR=$PWD/$shots
-build/tests/ui/stellwerk-ui-tests --gtest_filter='*Screenshot*:ThrottlePanelTest.ThreeThrottles*:TrackPlanPanelTest.TheDemoPlanIsDrawnInLightAndDarkPalettes'
+build/tests/ui/stellwerk-ui-tests --gtest_filter='*Screenshot*:ThrottlePanelTest.ThreeThrottles*:TrackPlanPanelTest.TheDemoPlanIsDrawnInLightAndDarkPalettes:StationTrustTest.While*:StationTrustTest.WithThePowerOff*'

@@ -159,6 +159,17 @@
     </message>
 </context>
 <context>
+    <name>NotReported</name>
+    <message>
+        <source>not reported</source>
+        <translation>nicht gemeldet</translation>
+    </message>
+    <message>
+        <source>Not reported: the station is silent or being reconnected. This is the last state it reported; it may no longer be true.</source>
+        <translation>Nicht gemeldet: Die Zentrale antwortet nicht oder wird neu verbunden. Das ist der zuletzt gemeldete Zustand; er kann inzwischen anders sein.</translation>
+    </message>
+</context>
+<context>
     <name>TrackTileInfo</name>
     <message>
         <source>Straight track</source>
@@ -794,6 +805,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>free</source>
         <translation>frei</translation>
     </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::DeviceSettingEditor</name>
@@ -944,6 +959,25 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Feedback contacts</source>
         <translation>Rückmeldekontakte</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::LayoutStateBanner</name>
+    <message>
+        <source>Not reported: the station is silent or being reconnected. Greyed states are the last it reported.</source>
+        <translation>Nicht gemeldet: Die Zentrale antwortet nicht oder wird neu verbunden. Grau Dargestelltes ist der zuletzt gemeldete Zustand.</translation>
+    </message>
+    <message>
+        <source>Track power not reported yet: the station has not said whether trains may run.</source>
+        <translation>Gleisspannung noch nicht gemeldet: Die Zentrale hat nicht gesagt, ob Züge fahren dürfen.</translation>
+    </message>
+    <message>
+        <source>LAYOUT STOPPED: track power is off. Press the power key in the toolbar to switch it on.</source>
+        <translation>ANLAGE GESTOPPT: Die Gleisspannung ist aus. Zum Einschalten die Stromtaste in der Werkzeugleiste drücken.</translation>
+    </message>
+    <message>
+        <source>LAYOUT HALTED: every train was halted. Press the power key in the toolbar to go on.</source>
+        <translation>ANLAGE ANGEHALTEN: Alle Züge wurden angehalten. Zum Weiterfahren die Stromtaste in der Werkzeugleiste drücken.</translation>
     </message>
 </context>
 <context>
@@ -1204,6 +1238,18 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>Revert</source>
         <translation>Verwerfen</translation>
     </message>
+    <message>
+        <source>The station sent its locomotive list again; your unsaved changes are kept.</source>
+        <translation>Die Zentrale hat ihre Lokliste erneut gesendet; Ihre nicht gespeicherten Änderungen bleiben erhalten.</translation>
+    </message>
+    <message>
+        <source>Unsaved locomotive changes</source>
+        <translation>Nicht gespeicherte Lok-Änderungen</translation>
+    </message>
+    <message>
+        <source>The locomotive list has changes that are not saved. Save them before %1?</source>
+        <translation>Die Lokliste hat Änderungen, die nicht gespeichert sind. Vor %1 speichern?</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::LocomotiveTableModel</name>
@@ -1238,6 +1284,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>forward</source>
         <translation>vorwärts</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -1303,10 +1353,6 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <translation>Alles &amp;anhalten</translation>
     </message>
     <message>
-        <source>Space, Esc</source>
-        <translation>Leertaste, Esc</translation>
-    </message>
-    <message>
         <source>Switch the track power off: every train stops</source>
         <translation>Gleisspannung ausschalten: alle Züge halten</translation>
     </message>
@@ -1346,6 +1392,26 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>Overview</source>
         <translation>Übersicht</translation>
     </message>
+    <message>
+        <source>quitting</source>
+        <translation>dem Beenden</translation>
+    </message>
+    <message>
+        <source>opening another layout</source>
+        <translation>dem Öffnen einer anderen Anlage</translation>
+    </message>
+    <message>
+        <source>connecting again</source>
+        <translation>dem erneuten Verbinden</translation>
+    </message>
+    <message>
+        <source>Space</source>
+        <translation>Leertaste</translation>
+    </message>
+    <message>
+        <source>Space, %1</source>
+        <translation>Leertaste, %1</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::PowerStatus</name>
@@ -1368,6 +1434,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Track power: off (stop)</source>
         <translation>Gleisspannung: aus (Stopp)</translation>
+    </message>
+    <message>
+        <source>Track power: not reported</source>
+        <translation>Gleisspannung: nicht gemeldet</translation>
     </message>
 </context>
 <context>
@@ -1725,16 +1795,43 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <translation>STOPP</translation>
     </message>
     <message>
-        <source>GO</source>
-        <translation>GO</translation>
+        <source>Track power is on. Press to switch it off: every train stops (Space)</source>
+        <translation>Die Gleisspannung ist an. Drücken schaltet sie aus: Alle Züge halten (Leertaste)</translation>
     </message>
     <message>
-        <source>Switch the track power off: every train stops (Space or Escape)</source>
-        <translation>Gleisspannung ausschalten: alle Züge halten (Leertaste oder Esc)</translation>
+        <source>TRACK POWER OFF · press to switch on</source>
+        <translation>GLEISSPANNUNG AUS · zum Einschalten drücken</translation>
     </message>
     <message>
-        <source>Switch the track power on again</source>
-        <translation>Gleisspannung wieder einschalten</translation>
+        <source>The layout is stopped: the station switched the track power off. Press to switch it on again (GO); trains resume their speeds.</source>
+        <translation>Die Anlage ist gestoppt: Die Zentrale hat die Gleisspannung abgeschaltet. Drücken schaltet sie wieder ein (GO); die Züge fahren mit ihren Geschwindigkeiten weiter.</translation>
+    </message>
+    <message>
+        <source>TRAINS HALTED · press to go on</source>
+        <translation>ZÜGE ANGEHALTEN · zum Weiterfahren drücken</translation>
+    </message>
+    <message>
+        <source>Every train was halted; the track still has power. Press to let them go on (GO).</source>
+        <translation>Alle Züge wurden angehalten; das Gleis hat noch Spannung. Drücken lässt sie weiterfahren (GO).</translation>
+    </message>
+    <message>
+        <source>STOP · power not reported</source>
+        <translation>STOPP · Spannung nicht gemeldet</translation>
+    </message>
+    <message>
+        <source>The station has not reported the track power (silent, reconnecting or not yet said). Press to switch it off anyway (Space).</source>
+        <translation>Die Zentrale hat die Gleisspannung nicht gemeldet (antwortet nicht, wird neu verbunden oder hat es noch nicht gesagt). Drücken schaltet sie trotzdem aus (Leertaste).</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::StopKeyMenu</name>
+    <message>
+        <source>Extra STOP &amp;key</source>
+        <translation>Zusätzliche STOPP-&amp;Taste</translation>
+    </message>
+    <message>
+        <source>None (Space only)</source>
+        <translation>Keine (nur Leertaste)</translation>
     </message>
 </context>
 <context>
@@ -1981,6 +2078,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Keyboard page: 16 addresses each, as on the Central Station</source>
         <translation>Keyboard-Seite: je 16 Adressen, wie auf der Central Station</translation>
+    </message>
+    <message>
+        <source>Articles on the keyboard: %1 · positions %2</source>
+        <translation>Magnetartikel im Keyboard: %1 · Stellungen %2</translation>
     </message>
 </context>
 </TS>

@@ -159,6 +159,17 @@
     </message>
 </context>
 <context>
+    <name>NotReported</name>
+    <message>
+        <source>not reported</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not reported: the station is silent or being reconnected. This is the last state it reported; it may no longer be true.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>TrackTileInfo</name>
     <message>
         <source>Straight track</source>
@@ -791,6 +802,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>free</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::DeviceSettingEditor</name>
@@ -940,6 +955,25 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Feedback contacts</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::LayoutStateBanner</name>
+    <message>
+        <source>Not reported: the station is silent or being reconnected. Greyed states are the last it reported.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track power not reported yet: the station has not said whether trains may run.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LAYOUT STOPPED: track power is off. Press the power key in the toolbar to switch it on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LAYOUT HALTED: every train was halted. Press the power key in the toolbar to go on.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1201,6 +1235,18 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>Revert</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>The station sent its locomotive list again; your unsaved changes are kept.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unsaved locomotive changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The locomotive list has changes that are not saved. Save them before %1?</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::LocomotiveTableModel</name>
@@ -1234,6 +1280,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>forward</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1300,10 +1350,6 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Space, Esc</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Switch the track power off: every train stops</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1343,6 +1389,26 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>Overview</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>quitting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>opening another layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connecting again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Space</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Space, %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::PowerStatus</name>
@@ -1364,6 +1430,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Track power: off (stop)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track power: not reported</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1722,15 +1792,42 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>GO</source>
+        <source>Track power is on. Press to switch it off: every train stops (Space)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Switch the track power off: every train stops (Space or Escape)</source>
+        <source>TRACK POWER OFF · press to switch on</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Switch the track power on again</source>
+        <source>The layout is stopped: the station switched the track power off. Press to switch it on again (GO); trains resume their speeds.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TRAINS HALTED · press to go on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every train was halted; the track still has power. Press to let them go on (GO).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP · power not reported</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The station has not reported the track power (silent, reconnecting or not yet said). Press to switch it off anyway (Space).</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::StopKeyMenu</name>
+    <message>
+        <source>Extra STOP &amp;key</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>None (Space only)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1977,6 +2074,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Keyboard page: 16 addresses each, as on the Central Station</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Articles on the keyboard: %1 · positions %2</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -55,7 +55,8 @@ bool BusMonitorLogWriter::write(std::span<const cs2::CanFrame> frames, const QDa
     lines.reserve(qsizetype(frames.size()) * 48);
     for (const cs2::CanFrame& frame : frames)
         lines += prefix + QByteArray::fromStdString(cs2::formatCandump(frame)) + mark;
-    return m_file.write(lines) == lines.size();
+    // Handed to the system with each batch: a crash of Stellwerk keeps every frame recorded so far.
+    return m_file.write(lines) == lines.size() && m_file.flush();
 }
 
 QString BusMonitorLogReader::open(const QString& path) {

@@ -25,8 +25,8 @@ public:
     void close();
     bool isOpen() const { return m_file.isOpen(); }
     QString fileName() const { return m_file.fileName(); }
-    // Appends one line per frame, all with the time `time` and the direction mark; returns false when
-    // the disk refused them.
+    // Appends one line per frame, all with the time `time` and the direction mark, and hands them to the
+    // system at once (a crash keeps them); returns false when the disk refused them.
     bool write(std::span<const cs2::CanFrame> frames, const QDateTime& time, bool outgoing);
 
 private:

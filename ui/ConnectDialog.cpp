@@ -33,13 +33,13 @@ QString describeUrl(const QString& url) {
 
 // The address for `host`, keeping the ports of `current` when it is of the same kind; just the scheme while
 // there is no host yet.
-template <class Settings>
+// (`typename`, not `class`: lupdate would read the rest of the file as that class's texts.)
+template <typename Kind>
 QString withHost(const cs2::Expected<can::TransportSettings, QString>& current, const QString& host,
                  const QString& scheme) {
     if (host.isEmpty())
         return scheme;
-    Settings settings =
-        current && std::holds_alternative<Settings>(*current) ? std::get<Settings>(*current) : Settings{};
+    Kind settings = current && std::holds_alternative<Kind>(*current) ? std::get<Kind>(*current) : Kind{};
     settings.host = host;
     return can::transportUrl(settings);
 }

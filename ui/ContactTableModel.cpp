@@ -1,15 +1,17 @@
 #include "ContactTableModel.h"
 
+#include "NotReported.h"
 #include "StatusDot.h"
 #include "model/Railway.h"
 
+#include <QPalette>
 #include <algorithm>
 
 namespace stellwerk::ui {
 
 ContactTableModel::ContactTableModel(QObject* parent)
     : QAbstractTableModel(parent), occupiedLamp_(StatusDot::icon(StatusDot::Occupied)),
-      freeLamp_(StatusDot::icon(StatusDot::Free)) {}
+      freeLamp_(StatusDot::icon(StatusDot::Free)), notReportedLamp_(StatusDot::icon(StatusDot::Unknown)) {}
 
 void ContactTableModel::setRailway(const model::Railway* railway) {
     if (railway_)
@@ -18,6 +20,7 @@ void ContactTableModel::setRailway(const model::Railway* railway) {
     if (railway_) {
         connect(railway_, &model::Railway::loaded, this, &ContactTableModel::reload);
         connect(railway_, &model::Railway::contactsChanged, this, &ContactTableModel::update);
+        connect(railway_, &model::Railway::stateReportedChanged, this, &ContactTableModel::retranslate);
         connect(railway_, &QObject::destroyed, this, [this] { setRailway(nullptr); });
     }
     reload();
@@ -67,7 +70,8 @@ void ContactTableModel::insertNew() {
 void ContactTableModel::retranslate() {
     emit headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
     if (rowCount() > 0)
-        emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1), {Qt::DisplayRole});
+        emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1),
+                         {Qt::DisplayRole, Qt::DecorationRole, Qt::ForegroundRole, Qt::ToolTipRole});
 }
 
 int ContactTableModel::rowCount(const QModelIndex& parent) const {
@@ -88,6 +92,12 @@ QVariant ContactTableModel::data(const QModelIndex& index, int role) const {
         return display(*contact, index.column());
     if (role == Qt::DecorationRole && index.column() == State)
         return lamp(*contact);
+    if (NotReported::applies(railway_) && index.column() == State) { // the last state, greyed
+        if (role == Qt::ForegroundRole)
+            return QPalette().brush(QPalette::Disabled, QPalette::Text);
+        if (role == Qt::ToolTipRole)
+            return NotReported::reason();
+    }
     if (role == Qt::TextAlignmentRole && index.column() == Number)
         return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
     return {};
@@ -100,7 +110,8 @@ QVariant ContactTableModel::display(const model::FeedbackContact& contact, int c
     case Name:
         return contact.name();
     case State:
-        return stateText(contact);
+        return NotReported::applies(railway_) ? tr("%1 (%2)").arg(stateText(contact), NotReported::word())
+                                              : stateText(contact);
     case LastChange:
         return lastChangeText(contact);
     }
@@ -110,6 +121,8 @@ QVariant ContactTableModel::display(const model::FeedbackContact& contact, int c
 QVariant ContactTableModel::lamp(const model::FeedbackContact& contact) const {
     if (!contact.known())
         return {};
+    if (NotReported::applies(railway_))
+        return notReportedLamp_;
     return contact.occupied() ? occupiedLamp_ : freeLamp_;
 }
 

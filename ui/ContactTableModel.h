@@ -14,8 +14,9 @@ class Railway;
 namespace stellwerk::ui {
 
 // The railway's S88 feedback contacts as a read-only table: number, name, occupied (a red lamp) or free,
-// and when that last changed. Sorted by device and contact number; follows the railway's batched change
-// signal with one dataChanged per batch and resets only when the layout loads.
+// and when that last changed; greyed "(not reported)" while the station is silent or reconnecting.
+// Sorted by device and contact number; follows the railway's batched change signal with one dataChanged
+// per batch and resets only when the layout loads.
 class ContactTableModel final : public QAbstractTableModel {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(ContactTableModel)
@@ -54,6 +55,7 @@ private:
     RowIndex<model::ContactKey> rows_;
     QIcon occupiedLamp_;
     QIcon freeLamp_;
+    QIcon notReportedLamp_;
 };
 
 } // namespace stellwerk::ui

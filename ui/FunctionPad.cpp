@@ -24,6 +24,9 @@ QString padStyle() {
                " background: palette(button); min-width: 44px; min-height: 44px; }"
                "QToolButton:checked { background: palette(highlight); color: palette(highlighted-text);"
                " border-color: palette(highlight); }"
+               // greyed while the station's state is not reported: "on" is then only what it last said
+               "QToolButton:checked:disabled { background: palette(mid); color: palette(window);"
+               " border-color: palette(mid); }"
                "QToolButton[unacknowledged=\"true\"] { border: 2px solid %1; }")
         .arg(QLatin1String(WarningOutline));
 }

@@ -64,10 +64,9 @@ void LayoutOverview::setRailway(const model::Railway* railway) {
     locomotives_->setRailway(railway);
     contacts_->setRailway(railway);
     if (railway_) {
-        connect(railway_, &model::Railway::loaded, this, [this] {
-            locomotiveView_->resizeColumnsToContents();
-            contactView_->resizeColumnsToContents();
-        });
+        connect(railway_, &model::Railway::loaded, this, &LayoutOverview::fitColumns);
+        // "(not reported)" comes and goes
+        connect(railway_, &model::Railway::stateReportedChanged, this, &LayoutOverview::fitColumns);
         connect(railway_, &QObject::destroyed, this, [this] { setRailway(nullptr); });
     }
     power_->setRailway(railway);
@@ -88,6 +87,14 @@ void LayoutOverview::retranslate() {
     contactBox_->setTitle(tr("Feedback contacts"));
     locomotives_->retranslate();
     contacts_->retranslate();
+    fitColumns(); // headers and texts of another language have other widths
+}
+
+// Every column but the last, which stretches over the rest.
+void LayoutOverview::fitColumns() {
+    for (QTableView* view : {locomotiveView_, contactView_})
+        for (int column = 0; column + 1 < view->model()->columnCount(); ++column)
+            view->resizeColumnToContents(column);
 }
 
 } // namespace stellwerk::ui

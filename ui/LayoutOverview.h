@@ -44,6 +44,7 @@ private:
     QGroupBox* tableBox(QTableView* view, const QString& objectName);
     QTableView* tableView(const QString& objectName);
     void retranslate();
+    void fitColumns();
 
     QPointer<const model::Railway> railway_;
     LocomotiveTableModel* locomotives_;

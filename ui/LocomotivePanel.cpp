@@ -120,15 +120,61 @@ void LocomotivePanel::setRailway(model::Railway* railway) {
     load();
 }
 
-// A new configuration from the station replaces the editor's file, unless it is our own edit.
+// A new configuration from the station replaces the editor's file, unless it is our own edit or there are
+// unsaved edits (the start-up runs again after the station was silent): those stay, and the railway follows
+// them again.
 void LocomotivePanel::railwayLoaded() {
-    if (!m_replacing)
+    if (m_replacing)
+        return;
+    if (!m_editor.modified() || !m_railway || !m_railway->locomotiveFile()) {
         load();
+        return;
+    }
+    m_stationFile = *m_railway->locomotiveFile();
+    m_replacing = true;
+    m_railway->replaceLocomotiveFile(m_editor.file());
+    m_replacing = false;
+    showMessage(tr("The station sent its locomotive list again; your unsaved changes are kept."), false);
+}
+
+// Back to the list the station sent, in the editor and in the railway.
+void LocomotivePanel::discardEdits() {
+    if (m_railway && m_stationFile) {
+        m_replacing = true;
+        m_railway->replaceLocomotiveFile(*m_stationFile);
+        m_replacing = false;
+    }
+    load();
+}
+
+bool LocomotivePanel::hasUnsavedEdits() const {
+    return m_editor.modified() || m_apply->isEnabled();
+}
+
+bool LocomotivePanel::settleUnsavedEdits(const QString& what) {
+    if (!hasUnsavedEdits())
+        return true;
+    QMessageBox box(QMessageBox::Warning, tr("Unsaved locomotive changes"),
+                    tr("The locomotive list has changes that are not saved. Save them before %1?").arg(what),
+                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
+    box.setObjectName(QStringLiteral("unsavedLocomotivesBox"));
+    box.setDefaultButton(QMessageBox::Cancel);
+    box.setEscapeButton(QMessageBox::Cancel);
+    switch (box.exec()) {
+    case QMessageBox::Save:
+        return (!m_apply->isEnabled() || applyForm()) && chooseFolderAndSave();
+    case QMessageBox::Discard:
+        discardEdits();
+        return true;
+    default:
+        return false;
+    }
 }
 
 void LocomotivePanel::load() {
     const cs2config::LocomotiveFile* file = m_railway ? m_railway->locomotiveFile() : nullptr;
     m_editor = file ? cs2config::LocomotiveEditor(*file) : cs2config::LocomotiveEditor();
+    m_stationFile = file ? std::optional(*file) : std::nullopt;
     m_adding = false;
     m_model->show(file ? &m_editor : nullptr);
     showEmptyText();
@@ -254,13 +300,12 @@ void LocomotivePanel::changed(std::optional<std::size_t> select) {
     showSelected();
 }
 
-void LocomotivePanel::chooseFolderAndSave() {
+bool LocomotivePanel::chooseFolderAndSave() {
     if (!m_save->isEnabled())
-        return;
+        return false;
     const QString folder = QFileDialog::getExistingDirectory(
         this, tr("Save lokomotive.cs2 into a CS2 configuration folder"), m_lastFolder);
-    if (!folder.isEmpty())
-        saveTo(folder);
+    return !folder.isEmpty() && saveTo(folder);
 }
 
 bool LocomotivePanel::saveTo(const QString& folder) {

@@ -49,6 +49,13 @@ public:
     bool saveTo(const QString& folder);
     // Adds an mfx decoder just bound to `sid` (from the Programming page) as a locomotive.
     void addBoundDecoder(quint32 mfxUid, quint16 sid);
+    // True while there are edits that are not in a saved lokomotive.cs2: applied ones, or a form being
+    // edited and not applied yet.
+    bool hasUnsavedEdits() const;
+    // Before something that would lose unsaved edits (quitting, connecting again, opening another layout):
+    // asks "Save / Discard / Cancel" when there are any. True when it may go on (nothing unsaved, saved,
+    // or discarded); false on Cancel or when saving failed, and then everything stays as it was.
+    bool settleUnsavedEdits(const QString& what);
     // The last message: why a change was refused, or what was saved.
     QString messageText() const;
 
@@ -65,7 +72,8 @@ private:
     void showSelected();
     void edited();
     void changed(std::optional<std::size_t> select);
-    void chooseFolderAndSave();
+    bool chooseFolderAndSave();
+    void discardEdits();
     void askAndRemove();
     void showMessage(const QString& text, bool problem);
     void updateButtons();
@@ -76,6 +84,7 @@ private:
 
     QPointer<model::Railway> m_railway;
     cs2config::LocomotiveEditor m_editor;
+    std::optional<cs2config::LocomotiveFile> m_stationFile; // as the station sent it, for Discard
     LocomotiveFileModel* m_model;
     QTableView* m_table;
     LocomotiveForm* m_form;

@@ -1,7 +1,9 @@
 #include "LocomotiveTableModel.h"
 
+#include "NotReported.h"
 #include "model/Railway.h"
 
+#include <QPalette>
 #include <algorithm>
 
 namespace stellwerk::ui {
@@ -15,6 +17,7 @@ void LocomotiveTableModel::setRailway(const model::Railway* railway) {
     if (railway_) {
         connect(railway_, &model::Railway::loaded, this, &LocomotiveTableModel::reload);
         connect(railway_, &model::Railway::locomotivesChanged, this, &LocomotiveTableModel::update);
+        connect(railway_, &model::Railway::stateReportedChanged, this, &LocomotiveTableModel::retranslate);
         connect(railway_, &QObject::destroyed, this, [this] { setRailway(nullptr); });
     }
     reload();
@@ -55,7 +58,8 @@ void LocomotiveTableModel::insertNew() {
 void LocomotiveTableModel::retranslate() {
     emit headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
     if (rowCount() > 0)
-        emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1), {Qt::DisplayRole});
+        emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1),
+                         {Qt::DisplayRole, Qt::ForegroundRole, Qt::ToolTipRole});
 }
 
 int LocomotiveTableModel::rowCount(const QModelIndex& parent) const {
@@ -76,6 +80,13 @@ QVariant LocomotiveTableModel::data(const QModelIndex& index, int role) const {
         return text(*loco, index.column());
     if (role == Qt::TextAlignmentRole && index.column() == Speed)
         return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+    const bool state = index.column() == Speed || index.column() == Direction || index.column() == Functions;
+    if (state && NotReported::applies(railway_)) { // the last state reported, greyed
+        if (role == Qt::ForegroundRole)
+            return QPalette().brush(QPalette::Disabled, QPalette::Text);
+        if (role == Qt::ToolTipRole)
+            return NotReported::reason();
+    }
     return {};
 }
 
@@ -86,7 +97,8 @@ QString LocomotiveTableModel::text(const model::Locomotive& loco, int column) co
     case Address:
         return addressText(loco);
     case Speed:
-        return speedText(loco);
+        return NotReported::applies(railway_) ? tr("%1 (%2)").arg(speedText(loco), NotReported::word())
+                                              : speedText(loco);
     case Direction:
         return directionText(loco);
     case Functions:

@@ -16,11 +16,14 @@
 #include "StartupProgress.h"
 #include "StatusPanel.h"
 #include "StopGoButton.h"
+#include "StopKeyMenu.h"
+#include "StopKeySettings.h"
 #include "ThrottlePanel.h"
 #include "TrackPlanPanel.h"
 #include "TrafficStatus.h"
 #include "Translations.h"
 #include "TurnoutPanel.h"
+#include "WindowLayoutSettings.h"
 #include "Workspace.h"
 #include "connection/StationConnection.h"
 
@@ -66,7 +69,24 @@ void MainWindow::changeEvent(QEvent* event) {
     QMainWindow::changeEvent(event);
 }
 
+// Without a remembered arrangement, a large screen gives the side panels room for a third column of
+// keyboard keys and a second throttle, instead of the laptop widths of the first arrangement.
+void MainWindow::showEvent(QShowEvent* event) {
+    QMainWindow::showEvent(event);
+    if (m_shownBefore)
+        return;
+    m_shownBefore = true;
+    if (!WindowLayoutSettings::load().state.isEmpty() || width() < 1600)
+        return;
+    resizeDocks({m_workspace->dockOf(m_turnoutPanel), m_workspace->dockOf(m_throttlePanel)},
+                {width() * 24 / 100, width() * 27 / 100}, Qt::Horizontal);
+}
+
 void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!m_locomotivePanel->settleUnsavedEdits(tr("quitting"))) {
+        event->ignore();
+        return;
+    }
     m_workspace->save();
     QMainWindow::closeEvent(event);
 }
@@ -80,6 +100,8 @@ void MainWindow::createPanels() {
     m_turnoutPanel = new TurnoutPanel(this);
     m_workspace->addPanel(m_turnoutPanel, Qt::LeftDockWidgetArea);
     m_locomotivePanel = new LocomotivePanel(this);
+    m_trackPlan->setOpenGuard(
+        [this] { return m_locomotivePanel->settleUnsavedEdits(tr("opening another layout")); });
     m_workspace->addPanel(m_locomotivePanel, Qt::LeftDockWidgetArea, m_turnoutPanel);
     m_programmingPanel = new ProgrammingPanel(this);
     m_workspace->addPanel(m_programmingPanel, Qt::LeftDockWidgetArea, m_turnoutPanel);
@@ -112,7 +134,8 @@ void MainWindow::createToolBar() {
     m_toolBar->toggleViewAction()->setEnabled(false);
     m_stopGo = new StopGoButton(m_toolBar);
     m_toolBar->addWidget(m_stopGo);
-    m_stopKeys = new EmergencyStopKeys(this);
+    m_stopKeys = new EmergencyStopKeys(this, this);
+    m_stopKeys->setExtraKey(StopKeySettings::load());
     connect(m_stopKeys, &EmergencyStopKeys::stopRequested, m_stopGo, &StopGoButton::stopEverything);
 }
 
@@ -135,6 +158,13 @@ void MainWindow::createStationMenu() {
     m_stationMenu->addSeparator();
     m_stopAction = m_stationMenu->addAction(QString(), m_stopGo, &StopGoButton::stopEverything);
     m_stopAction->setObjectName(QStringLiteral("stopAction"));
+    m_stopKeyMenu = new StopKeyMenu(m_stopKeys->extraKey(), m_stationMenu);
+    m_stationMenu->addMenu(m_stopKeyMenu);
+    connect(m_stopKeyMenu, &StopKeyMenu::keyChosen, this, [this](Qt::Key key) {
+        m_stopKeys->setExtraKey(key);
+        StopKeySettings::save(key);
+        retranslate();
+    });
 }
 
 void MainWindow::setConnection(connection::StationConnection* station) {
@@ -190,7 +220,8 @@ void MainWindow::connectionStateChanged() {
 
 void MainWindow::showConnectDialog() {
     ConnectDialog dialog(m_connection ? m_connection->address() : QString(), this);
-    if (dialog.exec() == QDialog::Accepted && m_connection)
+    if (dialog.exec() == QDialog::Accepted && m_connection &&
+        m_locomotivePanel->settleUnsavedEdits(tr("connecting again")))
         m_connection->connectTo(dialog.url());
 }
 
@@ -242,13 +273,21 @@ void MainWindow::retranslate() {
     m_aboutAction->setText(tr("&About Stellwerk"));
     m_aboutAction->setStatusTip(tr("Show the version of Stellwerk and of Qt"));
     // The keys are EmergencyStopKeys' job (from any widget); the menu only names them.
-    m_stopAction->setText(tr("&Stop everything") + QStringLiteral("\t") + tr("Space, Esc"));
+    m_stopAction->setText(tr("&Stop everything") + QStringLiteral("\t") + stopKeysText());
     m_stopAction->setStatusTip(tr("Switch the track power off: every train stops"));
     m_toolBar->setWindowTitle(tr("Stop and go"));
     m_panelsMenu->setTitle(tr("&Panels"));
     m_resetLayoutAction->setText(tr("&Reset panel layout"));
     m_resetLayoutAction->setStatusTip(tr("Put every panel back where it was at the first start"));
     retranslateDocks();
+}
+
+// The keys that stop, as the menu names them: "Space, F12" (Escape too, but only where nothing is open).
+QString MainWindow::stopKeysText() const {
+    const Qt::Key extra = m_stopKeys->extraKey();
+    return extra == Qt::Key_unknown
+               ? tr("Space")
+               : tr("Space, %1").arg(QKeySequence(extra).toString(QKeySequence::NativeText));
 }
 
 void MainWindow::retranslateDocks() {

@@ -27,6 +27,7 @@ class ProgrammingPanel;
 class StartupProgress;
 class StatusPanel;
 class StopGoButton;
+class StopKeyMenu;
 class ThrottlePanel;
 class TrackPlanPanel;
 class TrafficStatus;
@@ -36,8 +37,9 @@ class Workspace;
 
 // The station's main window: menus, the toolbar with the big STOP / GO, the track plan in the middle and
 // the other panels of a running session as docks a person arranges (kept between runs), and the status bar
-// with the station, its traffic, the configuration download and the track power. Space or Escape stop the
-// layout from anywhere.
+// with the station, its traffic, the configuration download and the track power. Space and the extra STOP
+// key stop the layout from anywhere, Escape only where no popup or dialog is open (EmergencyStopKeys).
+// Quitting, connecting again and opening another layout ask first when locomotive edits are unsaved.
 class MainWindow final : public QMainWindow {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(MainWindow)
@@ -56,6 +58,7 @@ public:
     LocomotivePanel* locomotivePanel() const { return m_locomotivePanel; }
     ProgrammingPanel* programmingPanel() const { return m_programmingPanel; }
     StopGoButton* stopGoButton() const { return m_stopGo; }
+    EmergencyStopKeys* stopKeys() const { return m_stopKeys; }
 
     // The railway the panels show and STOP / GO acts on (null: none); see RailwayBinding.
     void setRailway(model::Railway* railway);
@@ -70,6 +73,7 @@ public:
 protected:
     void changeEvent(QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
+    void showEvent(QShowEvent* event) override;
 
 private:
     static QSize firstSize();
@@ -82,6 +86,7 @@ private:
     void createStatusBar();
     void retranslate();
     void retranslateDocks();
+    QString stopKeysText() const;
     void chooseLanguage(Language language);
     void showStationProblem(const QString& message);
     void connectionStateChanged();
@@ -105,6 +110,7 @@ private:
     QMenu* m_stationMenu = nullptr;
     QAction* m_connectAction = nullptr;
     QAction* m_stopAction = nullptr;
+    StopKeyMenu* m_stopKeyMenu = nullptr;
     QMenu* m_viewMenu = nullptr;
     QMenu* m_panelsMenu = nullptr;
     QAction* m_resetLayoutAction = nullptr;
@@ -116,6 +122,7 @@ private:
     TrafficStatus* m_traffic = nullptr;
     PowerStatus* m_power = nullptr;
     connection::StationConnection* m_connection = nullptr;
+    bool m_shownBefore = false;
 };
 
 } // namespace stellwerk::ui

@@ -1,5 +1,6 @@
 #include "PowerStatus.h"
 
+#include "NotReported.h"
 #include "StatusDot.h"
 #include "model/Railway.h"
 
@@ -43,8 +44,11 @@ void PowerStatus::setRailway(const model::Railway* railway) {
     if (m_railway)
         disconnect(m_railway, nullptr, this, nullptr);
     m_railway = railway;
-    if (m_railway)
+    if (m_railway) {
         connect(m_railway, &model::Railway::powerChanged, this, &PowerStatus::refresh);
+        connect(m_railway, &model::Railway::stateReportedChanged, this, &PowerStatus::refresh);
+        connect(m_railway, &QObject::destroyed, this, &PowerStatus::refresh);
+    }
     refresh();
 }
 
@@ -55,6 +59,8 @@ QString PowerStatus::text() const {
 QString PowerStatus::powerText(const model::Railway* railway) {
     if (!railway)
         return tr("No station connected");
+    if (!railway->isStateReported())
+        return tr("Track power: not reported");
     const std::optional<station::PowerState> power = railway->power();
     if (!power)
         return tr("Track power: not reported yet");
@@ -77,9 +83,12 @@ void PowerStatus::changeEvent(QEvent* event) {
 
 void PowerStatus::refresh() {
     const int size = m_text->fontMetrics().height() * 3 / 4;
-    const QColor colour = powerColour(m_railway ? m_railway->power() : std::nullopt);
+    const bool reported = m_railway && m_railway->isStateReported();
+    const QColor colour = powerColour(reported ? m_railway->power() : std::nullopt);
     m_lamp->setPixmap(StatusDot::icon(colour, size).pixmap(size, size));
     m_text->setText(powerText(m_railway));
+    m_text->setEnabled(reported && m_railway->power().has_value()); // greyed while not reported
+    setToolTip(NotReported::applies(m_railway) ? NotReported::reason() : QString());
 }
 
 } // namespace stellwerk::ui

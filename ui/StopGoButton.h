@@ -12,13 +12,19 @@ class Railway;
 
 namespace stellwerk::ui {
 
-// The large STOP / GO key of the toolbar: red STOP while the track has power (or its state is not known
-// yet), green GO after a stop. It only asks the railway; what it shows is what the station reported.
+// The large power key of the toolbar, in one of three looks that cannot be mistaken for each other: a red
+// STOP while the station reports track power on; a dark red "TRACK POWER OFF" (or "TRAINS HALTED") after a
+// stop, which switches the power on again; and a grey STOP while the power is not reported (the station
+// is silent, reconnecting, or has not said yet), which still stops. It only asks the railway; what it
+// shows is what the station reported.
 class StopGoButton final : public QToolButton {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(StopGoButton)
 
 public:
+    enum class Look { Stop, PowerOff, Halted, NotReported };
+    Q_ENUM(Look)
+
     explicit StopGoButton(QWidget* parent = nullptr);
 
     // The railway to stop and start (null: none, the button is disabled).
@@ -27,6 +33,7 @@ public:
     void stopEverything();
     // What a click does now: true when it stops.
     bool stops() const;
+    Look look() const;
 
 protected:
     void changeEvent(QEvent* event) override;

@@ -1,5 +1,6 @@
 #include "ThrottlePanel.h"
 
+#include "LayoutStateBanner.h"
 #include "ThrottleSettings.h"
 #include "ThrottleWidget.h"
 #include "model/Railway.h"
@@ -32,6 +33,9 @@ ThrottlePanel::ThrottlePanel(QWidget* parent) : QWidget(parent) {
     bar->addWidget(m_add);
     bar->addWidget(m_keysHint, 1);
     layout->addLayout(bar);
+    m_banner = new LayoutStateBanner(this);
+    m_banner->setObjectName(QStringLiteral("throttleLayoutState"));
+    layout->addWidget(m_banner);
 
     m_emptyText = new QLabel(this);
     m_emptyText->setObjectName(QStringLiteral("throttlesEmpty"));
@@ -68,6 +72,7 @@ void ThrottlePanel::createShortcuts() {
 
 void ThrottlePanel::setRailway(model::Railway* railway) {
     m_railway = railway;
+    m_banner->setRailway(railway);
     for (ThrottleWidget* throttle : m_throttles)
         throttle->setRailway(railway);
     updateEmptyState();

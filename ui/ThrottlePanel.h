@@ -16,6 +16,7 @@ class Railway;
 
 namespace stellwerk::ui {
 
+class LayoutStateBanner;
 class ThrottleWidget;
 
 // The throttles page: several throttles side by side, added and closed by the user, each driving one
@@ -39,6 +40,8 @@ public:
     bool focusThrottle(int number);
     // What the page says while it has nothing to drive; empty while throttles drive.
     QString emptyText() const;
+    // Says when the layout is stopped, halted or not reported; hidden while trains may run.
+    LayoutStateBanner* layoutState() const { return m_banner; }
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -54,6 +57,7 @@ private:
     QList<ThrottleWidget*> m_throttles;
     QPushButton* m_add;
     QLabel* m_keysHint;
+    LayoutStateBanner* m_banner;
     QLabel* m_emptyText;
     QScrollArea* m_scroll;
     QHBoxLayout* m_row;

@@ -2,6 +2,7 @@
 
 #include "FunctionPad.h"
 #include "LocomotiveTableModel.h"
+#include "NotReported.h"
 #include "SpeedScale.h"
 #include "StyleSheetSupport.h"
 
@@ -148,6 +149,7 @@ void ThrottleWidget::setRailway(model::Railway* railway) {
     if (m_railway) {
         using model::Railway;
         connect(m_railway, &Railway::loaded, this, &ThrottleWidget::showLocomotive);
+        connect(m_railway, &Railway::stateReportedChanged, this, &ThrottleWidget::showLocomotive);
         connect(m_railway, &Railway::locomotivesChanged, this, &ThrottleWidget::locomotivesChanged);
         connect(m_railway, &Railway::locomotiveCommandSent, this, &ThrottleWidget::commandSent);
         connect(m_railway, &Railway::locomotiveCommandAcknowledged, this,
@@ -204,8 +206,13 @@ void ThrottleWidget::showLocomotive() {
     m_functions->setLocomotive(m_railway, m_loco);
     const model::Locomotive* loco = m_railway && m_loco ? m_railway->locomotive(m_loco) : nullptr;
     m_scale->setTachoMax(loco ? loco->tachoMax() : 0);
-    m_slider->setEnabled(loco != nullptr);
-    m_direction->setEnabled(loco != nullptr);
+    // While not reported, nothing shown here is vouched for: speed, direction and functions are greyed;
+    // the emergency stop stays usable.
+    const bool reported = loco && m_railway->isStateReported();
+    m_slider->setEnabled(reported);
+    m_direction->setEnabled(reported);
+    m_functions->setEnabled(reported);
+    m_speedText->setEnabled(reported);
     m_stop->setEnabled(loco != nullptr);
     for (const Control control : {Control::Speed, Control::Direction, Control::EmergencyStop})
         clearMark(control);
@@ -428,6 +435,10 @@ void ThrottleWidget::retranslate() {
     m_stop->setText(tr("Stop loco"));
     m_stop->setToolTip(tr("Emergency stop for this locomotive only (E)"));
     m_slider->setToolTip(tr("Speed: %1 % (Up/Down, +/-, PageUp/PageDown)").arg(percent));
+    m_speedText->setToolTip(NotReported::applies(m_railway) ? NotReported::reason() : QString());
+    if (NotReported::applies(m_railway))
+        for (QWidget* greyed : {static_cast<QWidget*>(m_slider), static_cast<QWidget*>(m_direction)})
+            greyed->setToolTip(NotReported::reason());
     for (const auto& [control, reason] : m_marks) {
         const QString tip = tr("The station did not acknowledge the last command: %1").arg(reason);
         markedWidget(control)->setToolTip(tip);

@@ -17,9 +17,10 @@ constexpr int MinimumRows = 15;
 
 } // namespace
 
-TrackPageView::TrackPageView(const model::LayoutPage& page, LookOf look, TextOf toolTip, QWidget* parent)
-    : QWidget(parent), m_page(page), m_look(std::move(look)), m_toolTip(std::move(toolTip)),
-      m_colors(TrackColors::from(palette())) {
+TrackPageView::TrackPageView(std::shared_ptr<const model::LayoutPage> page, LookOf look, TextOf toolTip,
+                             QWidget* parent)
+    : QWidget(parent), m_pageOwner(std::move(page)), m_page(*m_pageOwner), m_look(std::move(look)),
+      m_toolTip(std::move(toolTip)), m_colors(TrackColors::from(palette())) {
     setObjectName(QStringLiteral("trackPageView"));
     setMouseTracking(false);
     setAttribute(Qt::WA_OpaquePaintEvent);
@@ -31,6 +32,13 @@ void TrackPageView::setTileSize(int pixels) {
     m_tileSize = pixels;
     updateGeometry();
     resize(sizeHint());
+    update();
+}
+
+void TrackPageView::setDimmed(bool dimmed) {
+    if (dimmed == m_dimmed)
+        return;
+    m_dimmed = dimmed;
     update();
 }
 
@@ -91,6 +99,11 @@ void TrackPageView::paintEvent(QPaintEvent* event) {
         if (label && !m_pictures.area(look, cell.topLeft()).intersects(area))
             continue; // labels may reach into the area from elsewhere
         m_pictures.paint(painter, cell.topLeft(), look);
+    }
+    if (m_dimmed) { // a wash of the background over every state: "not reported", at a glance
+        QColor wash = m_colors.background;
+        wash.setAlpha(150);
+        painter.fillRect(area, wash);
     }
 }
 

@@ -6,6 +6,7 @@
 
 #include <QWidget>
 #include <functional>
+#include <memory>
 #include <optional>
 
 namespace stellwerk::model {
@@ -15,7 +16,8 @@ struct LayoutPage;
 namespace stellwerk::ui {
 
 // One page of the track plan on the CS2 grid. It draws the tiles it is given and says which tile was
-// clicked; what a tile looks like now and what a click does are the panel's business.
+// clicked; what a tile looks like now and what a click does are the panel's business. It shares the
+// ownership of its page, so that it can never draw a page that a replaced railway already freed.
 class TrackPageView final : public QWidget {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(TrackPageView)
@@ -24,7 +26,8 @@ public:
     using LookOf = std::function<TrackTileLook(int tile)>;
     using TextOf = std::function<QString(int tile)>;
 
-    TrackPageView(const model::LayoutPage& page, LookOf look, TextOf toolTip, QWidget* parent = nullptr);
+    TrackPageView(std::shared_ptr<const model::LayoutPage> page, LookOf look, TextOf toolTip,
+                  QWidget* parent = nullptr);
 
     int tileSize() const { return m_tileSize; }
     void setTileSize(int pixels);
@@ -36,6 +39,9 @@ public:
     QSize sizeHint() const override;
     // The size the page needs at one pixel per tile: columns x rows.
     QSize gridSize() const;
+    // Greyed: the states drawn are the last the station reported, not what it reports now.
+    void setDimmed(bool dimmed);
+    bool isDimmed() const { return m_dimmed; }
 
 signals:
     void tileClicked(int tile);
@@ -53,12 +59,14 @@ protected:
 private:
     void paintGrid(QPainter& painter, const QRect& area) const;
 
+    std::shared_ptr<const model::LayoutPage> m_pageOwner;
     const model::LayoutPage& m_page;
     LookOf m_look;
     TextOf m_toolTip;
     TrackColors m_colors;
     TrackTileCache m_pictures;
     int m_tileSize = 40;
+    bool m_dimmed = false;
 };
 
 } // namespace stellwerk::ui

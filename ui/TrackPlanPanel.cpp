@@ -1,5 +1,7 @@
 #include "TrackPlanPanel.h"
 
+#include "LayoutStateBanner.h"
+#include "NotReported.h"
 #include "TrackPageView.h"
 #include "TrackTileInfo.h"
 #include "TrackTileLook.h"
@@ -65,6 +67,9 @@ TrackPlanPanel::TrackPlanPanel(QWidget* parent) : QWidget(parent) {
                                            " border-radius: 4px; }"));
     m_banner->hide();
     layout->addWidget(m_banner);
+    m_layoutState = new LayoutStateBanner(this);
+    m_layoutState->setObjectName(QStringLiteral("trackPlanLayoutState"));
+    layout->addWidget(m_layoutState);
 
     m_emptyText = new QLabel(this);
     m_emptyText->setAlignment(Qt::AlignCenter);
@@ -90,8 +95,11 @@ void TrackPlanPanel::setRailway(model::Railway* railway) {
         connect(m_railway, &model::Railway::routeStarted, this, &TrackPlanPanel::routeChanged);
         connect(m_railway, &model::Railway::routeFinished, this, &TrackPlanPanel::routeChanged);
         connect(m_railway, &model::Railway::routeFailed, this, [this](qint64 route) { routeChanged(route); });
+        connect(m_railway, &model::Railway::stateReportedChanged, this,
+                &TrackPlanPanel::stateReportedChanged);
         connect(m_railway, &QObject::destroyed, this, [this] { setRailway(nullptr); });
     }
+    m_layoutState->setRailway(railway);
     if (!m_folder)
         rebuild();
     updateActions();
@@ -185,7 +193,10 @@ void TrackPlanPanel::rebuild() {
         m_tabs->removeTab(0);
         delete page;
     }
-    m_layout = m_folder ? &m_folderLayout : (m_railway ? &m_railway->layout() : nullptr);
+    m_live = !m_folder && m_railway;
+    m_layout = m_folder ? std::make_shared<const model::TrackLayout>(m_folderLayout)
+               : m_live ? std::make_shared<const model::TrackLayout>(m_railway->layout())
+                        : nullptr;
     indexRoutes();
     if (m_layout)
         for (int i = 0; i < int(m_layout->pages().size()); ++i)
@@ -204,15 +215,16 @@ void TrackPlanPanel::addPage(int index) {
     auto* scroll = new QScrollArea(m_tabs);
     scroll->setFrameShape(QFrame::NoFrame);
     auto* view = new TrackPageView(
-        page,
-        [this, index](int tile) {
-            return lookOf({index, tile});
+        std::shared_ptr<const model::LayoutPage>(m_layout, &page),
+        [this, index, shown = m_layout](int tile) {
+            return lookOn(*shown, {index, tile});
         },
-        [this, index](int tile) {
-            return toolTipOf({index, tile});
+        [this, index, shown = m_layout](int tile) {
+            return toolTipOn(*shown, {index, tile});
         },
         scroll);
     view->setTileSize(m_tileSize);
+    view->setDimmed(m_live && !isReported());
     scroll->setWidget(view);
     connect(view, &TrackPageView::tileClicked, this, [this, index](int tile) { tileClicked(index, tile); });
     connect(view, &TrackPageView::tileMenuRequested, this,
@@ -236,10 +248,18 @@ void TrackPlanPanel::indexRoutes() {
 }
 
 TrackTileLook TrackPlanPanel::lookOf(model::TileRef ref) const {
-    const model::LayoutTile& tile = m_layout->tile(ref);
+    return lookOn(*m_layout, ref);
+}
+
+QString TrackPlanPanel::toolTipOf(model::TileRef ref) const {
+    return toolTipOn(*m_layout, ref);
+}
+
+// `layout` may be one the panel no longer shows (a page view kept beyond a rebuild): then only its tiles.
+TrackTileLook TrackPlanPanel::lookOn(const model::TrackLayout& layout, model::TileRef ref) const {
+    const model::LayoutTile& tile = layout.tile(ref);
     TrackTileLook look{tile.type, tile.category, tile.rotation, -1, false, false, tile.text};
-    const bool live = m_railway && m_layout == &m_railway->layout();
-    if (!live)
+    if (!isLive() || &layout != m_layout.get())
         return look;
     if (tile.accessory)
         if (const model::Accessory* accessory = m_railway->accessory(*tile.accessory))
@@ -253,15 +273,33 @@ TrackTileLook TrackPlanPanel::lookOf(model::TileRef ref) const {
     return look;
 }
 
-QString TrackPlanPanel::toolTipOf(model::TileRef ref) const {
-    const model::LayoutTile& tile = m_layout->tile(ref);
+QString TrackPlanPanel::toolTipOn(const model::TrackLayout& layout, model::TileRef ref) const {
+    const model::LayoutTile& tile = layout.tile(ref);
+    if (&layout != m_layout.get())
+        return TrackTileInfo::toolTip(tile, QString());
     QString name;
     if (tile.accessory)
         name = accessoryName(*tile.accessory);
-    else if (tile.route && m_railway && m_layout == &m_railway->layout())
+    else if (tile.route && isLive())
         if (const model::Route* route = m_railway->route(*tile.route))
             name = route->name();
-    return TrackTileInfo::toolTip(tile, name);
+    const QString tip = TrackTileInfo::toolTip(tile, name);
+    const bool hasState = tile.accessory || tile.contact || tile.route;
+    return hasState && isLive() && !isReported() ? tip + QStringLiteral("\n") + NotReported::reason() : tip;
+}
+
+bool TrackPlanPanel::isLive() const {
+    return m_live && m_railway;
+}
+
+bool TrackPlanPanel::isReported() const {
+    return m_railway && m_railway->isStateReported();
+}
+
+// Greyed while not reported; the states drawn come back as they were read again.
+void TrackPlanPanel::stateReportedChanged() {
+    for (TrackPageView* view : m_views)
+        view->setDimmed(isLive() && !isReported());
 }
 
 QString TrackPlanPanel::accessoryName(std::int64_t id) const {
@@ -274,7 +312,7 @@ QString TrackPlanPanel::accessoryName(std::int64_t id) const {
 }
 
 void TrackPlanPanel::tilesChanged(const QList<model::TileRef>& tiles) {
-    if (!m_railway || m_layout != &m_railway->layout())
+    if (!isLive())
         return;
     for (const model::TileRef& ref : tiles)
         if (TrackPageView* view = pageView(ref.page))
@@ -283,7 +321,7 @@ void TrackPlanPanel::tilesChanged(const QList<model::TileRef>& tiles) {
 
 void TrackPlanPanel::routeChanged(qint64 route) {
     const auto it = m_routeTiles.find(route);
-    if (it == m_routeTiles.end() || !m_railway || m_layout != &m_railway->layout())
+    if (it == m_routeTiles.end() || !isLive())
         return;
     for (const model::TileRef& ref : it->second)
         if (TrackPageView* view = pageView(ref.page))
@@ -296,8 +334,8 @@ void TrackPlanPanel::tileClicked(int page, int tile) {
         goToPage(*t.page);
         return;
     }
-    if (!m_railway || m_layout != &m_railway->layout())
-        return;
+    if (!isLive() || !isReported())
+        return; // switching from a state nobody vouches for would be a guess
     if (t.route) {
         m_railway->runRoute(*t.route);
     } else if (t.accessory) {
@@ -309,7 +347,7 @@ void TrackPlanPanel::tileClicked(int page, int tile) {
 
 void TrackPlanPanel::showTileMenu(int page, int tile, QPoint where) {
     const model::LayoutTile& t = m_layout->tile({page, tile});
-    if (!t.accessory || !m_railway || m_layout != &m_railway->layout())
+    if (!t.accessory || !isLive() || !isReported())
         return;
     const model::Accessory* accessory = m_railway->accessory(*t.accessory);
     if (!accessory)
@@ -368,6 +406,8 @@ void TrackPlanPanel::showProblem(const QString& text) {
 }
 
 void TrackPlanPanel::chooseFolderToOpen() {
+    if (m_mayOpen && !m_mayOpen())
+        return;
     const QString folder = QFileDialog::getExistingDirectory(this, tr("Open a CS2 layout folder"));
     if (!folder.isEmpty())
         openFolder(folder);

@@ -6,7 +6,9 @@
 #include <QList>
 #include <QPointer>
 #include <QWidget>
+#include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -24,6 +26,7 @@ class Railway;
 
 namespace stellwerk::ui {
 
+class LayoutStateBanner;
 class TrackPageView;
 struct TrackTileLook;
 
@@ -46,6 +49,9 @@ public:
     // Shows the layout of a CS2 configuration folder (the folder or its `config`); false and a
     // problem shown when it cannot be read.
     bool openFolder(const QString& folder);
+    // Asked before "Open layout..." shows its folder dialog; opening goes on only when it returns true
+    // (the window asks about unsaved locomotive edits there).
+    void setOpenGuard(std::function<bool()> mayOpen) { m_mayOpen = std::move(mayOpen); }
     // Shows the station's plan again after a folder was opened.
     void showStationPlan();
     // Writes the shown layout as a CS2 configuration folder; false and a problem shown on failure.
@@ -53,7 +59,10 @@ public:
 
     QTabWidget* pageTabs() const { return m_tabs; }
     TrackPageView* pageView(int page) const;
-    const model::TrackLayout* layout() const { return m_layout; }
+    // The layout shown: the panel's own copy of the railway's or the opened folder's (null: none).
+    const model::TrackLayout* layout() const { return m_layout.get(); }
+    // Says when the layout is stopped, halted or not reported; hidden while trains may run.
+    LayoutStateBanner* layoutState() const { return m_layoutState; }
     // What a tile shows now (for tests and the screenshot tool).
     TrackTileLook lookOf(model::TileRef ref) const;
     QString toolTipOf(model::TileRef ref) const;
@@ -74,6 +83,12 @@ protected:
 
 private:
     void rebuild();
+    // True while the pages shown are the railway's, with its live states.
+    bool isLive() const;
+    bool isReported() const;
+    TrackTileLook lookOn(const model::TrackLayout& layout, model::TileRef ref) const;
+    QString toolTipOn(const model::TrackLayout& layout, model::TileRef ref) const;
+    void stateReportedChanged();
     void addPage(int index);
     void indexRoutes();
     void tilesChanged(const QList<model::TileRef>& tiles);
@@ -94,10 +109,13 @@ private:
     std::optional<cs2config::LayoutFolder::Content> m_folder;
     model::TrackLayout m_folderLayout;
     std::map<std::int64_t, QString> m_folderNames;
-    const model::TrackLayout* m_layout = nullptr;
+    // Shared with the page views, which keep their page alive whatever happens to the railway.
+    std::shared_ptr<const model::TrackLayout> m_layout;
+    bool m_live = false;
     std::map<std::int64_t, std::vector<model::TileRef>> m_routeTiles;
     std::vector<TrackPageView*> m_views;
     int m_tileSize = 40;
+    std::function<bool()> m_mayOpen;
 
     QToolBar* m_toolBar = nullptr;
     QAction* m_open = nullptr;
@@ -108,6 +126,7 @@ private:
     QAction* m_fit = nullptr;
     QLabel* m_source = nullptr;
     QLabel* m_banner = nullptr;
+    LayoutStateBanner* m_layoutState = nullptr;
     QLabel* m_emptyText = nullptr;
     QTabWidget* m_tabs = nullptr;
 };

@@ -216,7 +216,7 @@ void TurnoutKey::paintEvent(QPaintEvent*) {
     painter.setPen(frame);
     painter.setBrush(background);
     painter.drawRoundedRect(face, 6, 6);
-    if (part)
+    if (part || !isEnabled()) // greyed: part of another article, or a position nobody vouches for now
         painter.setOpacity(0.45);
     const int iconSize = m_buttons.isEmpty() && !m_menuButton ? 66 : 54;
     const QRectF icon(face.center().x() - iconSize / 2.0, face.top() + 20, iconSize, iconSize);

@@ -1,5 +1,6 @@
 #include "TurnoutPanel.h"
 
+#include "NotReported.h"
 #include "TurnoutKey.h"
 #include "model/Railway.h"
 
@@ -104,6 +105,7 @@ void TurnoutPanel::setRailway(model::Railway* railway) {
         connect(m_railway, &model::Railway::accessoriesChanged, this, &TurnoutPanel::showChanges);
         connect(m_railway, &model::Railway::addressesChanged, this, &TurnoutPanel::showChanges);
         connect(m_railway, &model::Railway::switchingEnded, this, &TurnoutPanel::switchingEnded);
+        connect(m_railway, &model::Railway::stateReportedChanged, this, &TurnoutPanel::rebuild);
         connect(m_railway, &QObject::destroyed, this, [this] { setRailway(nullptr); });
     }
     rebuild();
@@ -122,7 +124,12 @@ void TurnoutPanel::rebuild() {
     m_pageCount = std::max<int>(MinimumPages, int((last + KeysPerPage - 1) / KeysPerPage));
     m_page = std::clamp(m_page, 0, m_pageCount - 1);
     int articles = m_railway ? int(m_railway->state().accessories().size()) : 0;
-    m_summary->setText(m_railway ? tr("Articles on the keyboard: %1").arg(articles) : QString());
+    m_summary->setText(
+        !m_railway ? QString()
+        : NotReported::applies(m_railway)
+            ? tr("Articles on the keyboard: %1 · positions %2").arg(articles).arg(NotReported::word())
+            : tr("Articles on the keyboard: %1").arg(articles));
+    m_summary->setToolTip(NotReported::applies(m_railway) ? NotReported::reason() : QString());
     m_keyboard->setVisible(m_railway != nullptr);
     m_emptyText->setVisible(m_railway == nullptr);
     m_pagePicker->setEnabled(m_railway != nullptr);
@@ -165,7 +172,9 @@ void TurnoutPanel::refreshKeys() {
 
 void TurnoutPanel::refresh(TurnoutKey* key, std::int64_t address) {
     key->setFace(faceOf(address));
-    key->setEnabled(m_railway != nullptr);
+    // Greyed while not reported: a key shows the last position the station reported, and switching
+    // from it would be a guess.
+    key->setEnabled(m_railway != nullptr && m_railway->isStateReported());
     key->setPending(m_pending.contains(address));
     key->setUnconfirmed(m_unconfirmed.contains(address));
 }

@@ -33,6 +33,7 @@ struct Options {
     QString captureFile;    // a capture to open in the frame decoder
     QString stationUrl;     // the station to connect to; empty: the embedded simulated station
     QString panel;          // object name of the panel to bring to the front (for screenshots)
+    QSize size;             // the window's size (for screenshots); empty: as remembered
 };
 
 // --simulated wins over --station, which wins over the settings.
@@ -45,17 +46,48 @@ QString stationUrl(const QCommandLineParser& parser, const QCommandLineOption& s
     return stellwerk::ui::StationUrlSettings::load();
 }
 
-Options parseOptions(const QApplication& app) {
+// --size 1366x768; an empty size when not given or not readable.
+QSize windowSize(const QString& text) {
+    const QStringList parts = text.split(QLatin1Char('x'));
+    if (parts.size() != 2)
+        return {};
+    return QSize(parts[0].toInt(), parts[1].toInt()).expandedTo(QSize(0, 0));
+}
+
+// --help and --version print text and end before any window exists: they need no display.
+bool asksOnlyForText(int argc, char* argv[]) {
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray arg(argv[i]);
+        if (arg == "-h" || arg == "--help" || arg == "--help-all" || arg == "-?" || arg == "-v" ||
+            arg == "--version")
+            return true;
+    }
+    return false;
+}
+
+void nameApplication() {
+    QCoreApplication::setOrganizationName(QStringLiteral("Stellwerk"));
+    QCoreApplication::setApplicationName(QStringLiteral("Stellwerk"));
+    QCoreApplication::setApplicationVersion(stellwerk::ui::applicationVersion());
+}
+
+Options parseOptions(const QCoreApplication& app) {
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QStringLiteral("Desktop control station for Märklin CS2/CS3 model railways"));
     parser.addHelpOption();
     parser.addVersionOption();
     QCommandLineOption screenshot(QStringLiteral("screenshot"),
-                                  QStringLiteral("Save a picture of the main window to <file> and quit."),
+                                  QStringLiteral("Save a picture of the main window to <file> once the "
+                                                 "station is ready, and quit (for documentation)."),
                                   QStringLiteral("file"));
-    screenshot.setFlags(QCommandLineOption::HiddenFromHelp);
     parser.addOption(screenshot);
+    QCommandLineOption size(
+        QStringLiteral("size"),
+        QStringLiteral("Open the main window <width>x<height> pixels large, e.g. 1366x768 "
+                       "(for screenshots)."),
+        QStringLiteral("size"));
+    parser.addOption(size);
     QCommandLineOption decode(QStringLiteral("decode"),
                               QStringLiteral("Open a CAN capture (candump log, can2udp log, frames in the "
                                              "document's notation) in the frame decoder."),
@@ -71,13 +103,13 @@ Options parseOptions(const QApplication& app) {
                                  QStringLiteral("Connect to the embedded simulated station (demo layout)."));
     parser.addOption(simulated);
     QCommandLineOption panel(QStringLiteral("panel"),
-                             QStringLiteral("Panel to bring to the front (object name)."),
+                             QStringLiteral("Bring a panel to the front first (its object name: statusPanel, "
+                                            "busMonitorPanel, throttlePanel, ...)."),
                              QStringLiteral("name"));
-    panel.setFlags(QCommandLineOption::HiddenFromHelp);
     parser.addOption(panel);
     parser.process(app);
     return Options{parser.value(screenshot), parser.value(decode), stationUrl(parser, station, simulated),
-                   parser.value(panel)};
+                   parser.value(panel), windowSize(parser.value(size))};
 }
 
 void grabAndQuit(QWidget& window, const QString& file) {
@@ -116,10 +148,14 @@ void saveScreenshotAndQuit(QWidget& window, const StationConnection& connection,
 } // namespace
 
 int main(int argc, char* argv[]) {
+    if (asksOnlyForText(argc, argv)) {
+        const QCoreApplication text(argc, argv);
+        nameApplication();
+        parseOptions(text); // prints the help or the version and ends the program
+        return 0;
+    }
     QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("Stellwerk"));
-    QApplication::setApplicationName(QStringLiteral("Stellwerk"));
-    QApplication::setApplicationVersion(stellwerk::ui::applicationVersion());
+    nameApplication();
     QApplication::setWindowIcon(stellwerk::ui::applicationIcon());
     const Options options = parseOptions(app);
 
@@ -142,6 +178,8 @@ int main(int argc, char* argv[]) {
         std::fprintf(stderr, "stellwerk: there is no panel \"%s\"\n", qPrintable(options.panel));
         return 1;
     }
+    if (!options.size.isEmpty())
+        window.resize(options.size);
     window.show();
     if (!options.screenshotFile.isEmpty()) {
         saveScreenshotAndQuit(window, connection, options.screenshotFile);

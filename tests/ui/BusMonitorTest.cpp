@@ -169,6 +169,26 @@ TEST(BusMonitorPanel, ShowsTheFramesOfTheEmbeddedStation) {
     EXPECT_EQ(cell(shown, 0, BusMonitorModel::MessageColumn), QStringLiteral("feedback.s88-event"));
 }
 
+// The file holds every batch as soon as it arrived, while recording is still on: a crash keeps it.
+TEST(BusMonitorPanel, ARecordingIsOnDiskBatchByBatchWhileItRuns) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("running.log"));
+    connection::StationConnection station;
+    BusMonitorPanel recorder;
+    recorder.setConnection(&station);
+    ASSERT_EQ(recorder.startRecording(path), QString());
+    const auto linesOnDisk = [&path] {
+        QFile file(path); // a reader of its own, as after a crash
+        return file.open(QIODevice::ReadOnly) ? file.readAll().count('\n') : qsizetype(-1);
+    };
+    emit station.framesSeen({systemStop(), locoSpeed()}, false);
+    EXPECT_EQ(linesOnDisk(), 2);
+    emit station.framesSeen({locoSpeed()}, true);
+    EXPECT_EQ(linesOnDisk(), 3);
+    EXPECT_TRUE(recorder.isRecording());
+}
+
 TEST(BusMonitorPanel, RecordsACandumpLogAndOpensItAgain) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());

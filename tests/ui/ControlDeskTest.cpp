@@ -147,7 +147,7 @@ TEST_F(ControlDeskOnStationTest, StopThenGoSwitchTheTrackPowerAndTheKeyFollows) 
     EXPECT_EQ(key->text(), QStringLiteral("STOP"));
     key->click();
     ASSERT_TRUE(powerBecomes(PowerState::Stopped));
-    EXPECT_EQ(key->text(), QStringLiteral("GO"));
+    EXPECT_EQ(key->text(), QStringLiteral("TRACK POWER OFF · press to switch on"));
     EXPECT_EQ(window->findChild<PowerStatus*>(QStringLiteral("powerStatus"))->text(),
               QStringLiteral("Track power: off (stop)"));
     key->click();

@@ -47,11 +47,12 @@ class TestStation {
 public:
     TestStation() : station_(sim::StationLayout::demo()) {}
 
-    bool start() {
+    // Listens on `port` (0: a free one; a station "back" after a stop takes its old port again).
+    bool start(std::uint16_t port = 0) {
         sim::StationServerSettings settings;
         settings.listenAddress = QHostAddress(QHostAddress::LocalHost);
         settings.udp = false;
-        settings.tcpPort = 0;
+        settings.tcpPort = port;
         server_ = std::make_unique<sim::StationServer>(station_, settings);
         return server_->listen();
     }
