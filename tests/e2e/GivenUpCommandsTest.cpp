@@ -115,13 +115,13 @@ TEST(UdpStationGoneMidCommand, GivenUpCommandNeverReachesItWhenItIsBack) {
     Rig rig(Wire::Udp, impatient());
     ASSERT_TRUE(rig.start());
     StationLog log(rig.station);
-    rig.transport->setPacing(150ms); // retries would wait in the queue behind the pacing
+    rig.transport->setPacing(400ms); // retries wait in the queue behind the pacing (a Gleisbox gap)
     rig.stopServer();
     const auto gone = requestSpeed(rig, MfxLoco, 777);
     ASSERT_TRUE(waitFor([&] { return gone->has_value(); }));
     EXPECT_EQ(gone->value().status, Status::TimedOut);
     ASSERT_TRUE(rig.startServer());
-    QTest::qWait(600);
+    QTest::qWait(1000); // longer than the paced retries would have waited
     EXPECT_FALSE(log.received(MfxLoco, 777));
     EXPECT_EQ(rig.transport->queuedFrames(), 0U);
 }
