@@ -22,10 +22,15 @@ extern "C" void onInterrupt(int) {
 StationClient::StationClient(std::ostream& err, ClientSettings settings, QObject* parent)
     : QObject(parent), err_(err), settings_(settings) {}
 
+// A command that was not acknowledged may still sit in the connection: the connection is reset rather
+// than closed, so that the station never gets it after we gave up.
 StationClient::~StationClient() {
     session_.reset();
-    if (transport_)
-        transport_->close();
+    if (!transport_)
+        return;
+    if (lastStatus_ != Acknowledged)
+        transport_->resetConnection(QStringLiteral("command not acknowledged"));
+    transport_->close();
 }
 
 int StationClient::connectTo(const QString& url) {
@@ -107,6 +112,7 @@ void StationClient::finish(int status) {
     if (status_)
         return;
     status_ = status;
+    lastStatus_ = status;
     loop_.exit(status);
 }
 

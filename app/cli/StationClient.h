@@ -68,6 +68,7 @@ private:
     std::unique_ptr<station::StationSession> session_;
     QEventLoop loop_;
     std::optional<int> status_;
+    int lastStatus_ = Acknowledged; // of the last connect or command
     QString problem_;
     bool retryNoteFollows_ = false; // the next problem() repeats a connectionFailed() with a retry plan
 };

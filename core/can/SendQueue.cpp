@@ -14,7 +14,7 @@ SendQueue::SendQueue(QObject* owner, Writer writer) : writer_(std::move(writer))
     QObject::connect(timer_, &QTimer::timeout, owner, [this] { pump(); });
 }
 
-std::size_t SendQueue::push(std::span<const CanFrame> frames) {
+std::size_t SendQueue::push(std::span<const CanFrame> frames, SendTicket ticket) {
     if (writable_ && waiting_.empty() && !paced()) {
         writer_(frames);
         return frames.size();
@@ -24,13 +24,22 @@ std::size_t SendQueue::push(std::span<const CanFrame> frames) {
         if (writable_ && waiting_.empty() && gapElapsed())
             writeOne(frame);
         else if (waiting_.size() < limit_)
-            waiting_.push_back(frame);
+            waiting_.push_back({frame, ticket});
         else
             break;
         ++accepted;
     }
     pump();
     return accepted;
+}
+
+std::size_t SendQueue::withdraw(SendTicket ticket) {
+    if (ticket == 0)
+        return 0;
+    const auto removed = std::erase_if(waiting_, [ticket](const Waiting& w) { return w.ticket == ticket; });
+    if (waiting_.empty())
+        timer_->stop();
+    return removed;
 }
 
 void SendQueue::setWritable(bool writable) {
@@ -72,7 +81,7 @@ void SendQueue::pump() {
     if (!paced())
         return writeAllWaiting();
     if (gapElapsed()) {
-        const CanFrame frame = waiting_.front();
+        const CanFrame frame = waiting_.front().frame;
         waiting_.pop_front();
         writeOne(frame);
     }
@@ -81,7 +90,10 @@ void SendQueue::pump() {
 }
 
 void SendQueue::writeAllWaiting() {
-    const std::vector<CanFrame> frames(waiting_.begin(), waiting_.end());
+    std::vector<CanFrame> frames;
+    frames.reserve(waiting_.size());
+    for (const Waiting& w : waiting_)
+        frames.push_back(w.frame);
     waiting_.clear();
     writer_(frames);
 }

@@ -5,6 +5,7 @@
 #include <QElapsedTimer>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <functional>
 #include <span>
@@ -14,8 +15,14 @@ class QTimer;
 
 namespace stellwerk::can {
 
-// Frames on their way to the wire: they wait (up to a limit) while the wire is away, and are spaced out
-// when a minimum gap is set, because a Gleisbox loses frames that come too close. Order is always kept.
+// Marks the frames of one command in the queue, so that they can be withdrawn while they still wait
+// (0 = frames nobody withdraws).
+using SendTicket = std::uint64_t;
+
+// Frames on their way to the wire: they wait (up to a limit) while the wire is away or busy, and are
+// spaced out when a minimum gap is set, because a Gleisbox loses frames that come too close. Order is
+// always kept. Frames that still wait can be withdrawn by their ticket: a command given up is never
+// written later.
 class SendQueue {
 public:
     using Writer = std::function<void(std::span<const cs2::CanFrame>)>;
@@ -26,7 +33,9 @@ public:
 
     // Appends frames, writing at once what the wire and the gap allow. Returns how many were accepted:
     // a full queue refuses the rest.
-    std::size_t push(std::span<const cs2::CanFrame> frames);
+    std::size_t push(std::span<const cs2::CanFrame> frames, SendTicket ticket = 0);
+    // Removes the waiting frames with this ticket (not 0); returns how many there were.
+    std::size_t withdraw(SendTicket ticket);
     // The wire is (or is no longer) there; when it comes back, what waits is written.
     void setWritable(bool writable);
     bool isWritable() const { return writable_; }
@@ -47,9 +56,14 @@ private:
     void writeAllWaiting();
     void writeOne(const cs2::CanFrame& frame);
 
+    struct Waiting {
+        cs2::CanFrame frame;
+        SendTicket ticket = 0;
+    };
+
     Writer writer_;
     QTimer* timer_;
-    std::deque<cs2::CanFrame> waiting_;
+    std::deque<Waiting> waiting_;
     std::size_t limit_ = DefaultLimit;
     std::chrono::milliseconds gap_{0};
     bool writable_ = false;

@@ -6,9 +6,28 @@
 #include <QSignalBlocker>
 #include <QTcpSocket>
 
+#if defined(Q_OS_UNIX)
+#include <sys/socket.h>
+#endif
+
 namespace stellwerk::can {
 
 using cs2::CanFrame;
+
+namespace {
+
+// Makes the next close send a reset instead of delivering what is still buffered: the peer drops what
+// it has not read (POSIX; elsewhere the close is an ordinary one).
+void resetOnClose([[maybe_unused]] QTcpSocket& socket) {
+#if defined(Q_OS_UNIX)
+    if (socket.socketDescriptor() < 0)
+        return;
+    const linger immediately{1, 0};
+    ::setsockopt(int(socket.socketDescriptor()), SOL_SOCKET, SO_LINGER, &immediately, sizeof immediately);
+#endif
+}
+
+} // namespace
 
 TcpTransport::TcpTransport(TcpSettings settings, QObject* parent)
     : Transport(parent), settings_(std::move(settings)), socket_(new QTcpSocket(this)),
@@ -20,6 +39,7 @@ TcpTransport::TcpTransport(TcpSettings settings, QObject* parent)
     reconnector_.setTiming(settings_.reconnect);
     connect(socket_, &QTcpSocket::connected, this, &TcpTransport::onConnected);
     connect(socket_, &QTcpSocket::readyRead, this, &TcpTransport::onReadyRead);
+    connect(socket_, &QTcpSocket::bytesWritten, this, &TcpTransport::onBytesWritten);
     connect(socket_, &QTcpSocket::disconnected, this,
             [this] { connectionLost(tr("the station closed the connection")); });
     connect(socket_, &QTcpSocket::errorOccurred, this, [this] { connectionLost(socket_->errorString()); });
@@ -41,13 +61,34 @@ void TcpTransport::close() {
     socket_->disconnectFromHost();
 }
 
+bool TcpTransport::resetConnection(const QString& reason) {
+    if (state() != State::Connected)
+        return false;
+    {
+        const QSignalBlocker quiet(socket_);
+        resetOnClose(*socket_);
+        socket_->abort();
+    }
+    connectionLost(reason);
+    return true;
+}
+
 QString TcpTransport::description() const {
     return transportUrl(settings_);
 }
 
 std::size_t TcpTransport::writeFrames(std::span<const CanFrame> frames) {
     const QByteArray bytes = encodeFrames(frames);
-    return socket_->write(bytes) == bytes.size() ? frames.size() : 0;
+    const bool written = socket_->write(bytes) == bytes.size();
+    if (socket_->bytesToWrite() > BusyBytes)
+        setWireBusy(true);
+    return written ? frames.size() : 0;
+}
+
+// The peer reads again: frames that waited in the send queue follow.
+void TcpTransport::onBytesWritten() {
+    if (socket_->bytesToWrite() <= BusyBytes)
+        setWireBusy(false);
 }
 
 // The old socket is dropped quietly: its last signals belong to a loss already handled.

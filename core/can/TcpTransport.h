@@ -19,8 +19,14 @@ class TcpTransport final : public Transport {
 public:
     explicit TcpTransport(TcpSettings settings, QObject* parent = nullptr);
 
+    // Bytes the socket may hold beyond what the kernel took before the transport counts the wire as busy
+    // and keeps further frames in its send queue (where a given-up command can still be withdrawn).
+    static constexpr qint64 BusyBytes = 4096;
+
     void open() override;
     void close() override;
+    // Aborts with a reset (RST), which discards what the station has not read yet, and reconnects.
+    bool resetConnection(const QString& reason) override;
     QString description() const override;
     const TcpSettings& settings() const { return settings_; }
 
@@ -32,6 +38,7 @@ private:
     void onConnected();
     void onReadyRead();
     void connectionLost(const QString& reason);
+    void onBytesWritten();
 
     TcpSettings settings_;
     QTcpSocket* socket_;

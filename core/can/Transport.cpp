@@ -14,32 +14,59 @@ using cs2::CanFrame;
 Transport::Transport(QObject* parent)
     : QObject(parent), queue_(this, [this](std::span<const CanFrame> frames) { write(frames); }) {}
 
-bool Transport::send(const CanFrame& frame) {
-    return sendBatch(std::span(&frame, 1)) == 1;
+bool Transport::send(const CanFrame& frame, SendTicket ticket) {
+    return sendBatch(std::span(&frame, 1), ticket) == 1;
 }
 
-std::size_t Transport::sendBatch(std::span<const CanFrame> frames) {
-    const std::size_t accepted = state_ == State::Closed ? 0 : queue_.push(frames);
+std::size_t Transport::sendBatch(std::span<const CanFrame> frames, SendTicket ticket) {
+    const std::size_t accepted = refusesFrames() ? 0 : queue_.push(frames, ticket);
     counters_.dropped += frames.size() - accepted;
     return accepted;
+}
+
+std::size_t Transport::withdraw(SendTicket ticket) {
+    const std::size_t withdrawn = queue_.withdraw(ticket);
+    counters_.dropped += withdrawn;
+    return withdrawn;
+}
+
+bool Transport::resetConnection(const QString&) {
+    return false;
 }
 
 void Transport::setState(State state) {
     if (state_ == state)
         return;
+    const bool lost = state_ == State::Connected;
     state_ = state;
     if (state == State::Closed)
-        discardWaiting();
+        lostOnce_ = false;
+    else if (lost)
+        lostOnce_ = true;
+    if (state == State::Closed || lost)
+        discardWaiting(state == State::Closed);
+    wireBusy_ = false;
     queue_.setWritable(state == State::Connected);
     emit stateChanged(state);
 }
 
-void Transport::discardWaiting() {
+void Transport::setWireBusy(bool busy) {
+    if (wireBusy_ == busy)
+        return;
+    wireBusy_ = busy;
+    queue_.setWritable(state_ == State::Connected && !busy);
+}
+
+void Transport::discardWaiting(bool closed) {
     const std::size_t discarded = queue_.discard();
     if (discarded == 0)
         return;
     counters_.dropped += discarded;
-    emit problem(tr("%1: closed with %n frame(s) not sent", nullptr, int(discarded)).arg(description()));
+    emit problem(
+        closed
+            ? tr("%1: closed with %n frame(s) not sent", nullptr, int(discarded)).arg(description())
+            : tr("%1: connection lost with %n frame(s) not sent; they are dropped", nullptr, int(discarded))
+                  .arg(description()));
 }
 
 void Transport::deliver(std::vector<CanFrame>&& frames) {
@@ -57,6 +84,10 @@ void Transport::countMalformed(std::size_t count, const QString& what) {
 }
 
 void Transport::write(std::span<const CanFrame> frames) {
+    if (state_ != State::Connected) { // a loss reported from inside an earlier write of this block
+        counters_.dropped += frames.size();
+        return;
+    }
     const std::size_t written = writeFrames(frames);
     counters_.framesOut += written;
     counters_.dropped += frames.size() - written;

@@ -37,14 +37,29 @@ public:
     virtual void open() = 0;
     // Stops; frames still waiting for the wire are discarded and counted as dropped.
     virtual void close() = 0;
+    // Ends the current connection so that nothing written to it can still be read by the peer, and makes
+    // it again (after the usual back-off). For a station that stopped answering: a stream transport
+    // (TCP) would otherwise hand it, when it wakes up, the commands it did not read in time. Transports
+    // without such a buffer (UDP datagrams, a CAN bus) do nothing; returns whether a connection ended.
+    virtual bool resetConnection(const QString& reason);
 
-    // Hands a frame to the wire: at once when connected, otherwise (or while pacing holds it back) from
-    // the send queue, in order. Returns false when the frame is refused: the transport is closed or the
-    // queue is full; the frame is then counted as dropped.
-    bool send(const cs2::CanFrame& frame);
+    // Hands a frame to the wire: at once when connected, otherwise (or while pacing or a busy wire holds
+    // it back) from the send queue, in order. Returns false when the frame is refused: the transport is
+    // closed, the connection was lost and is not back yet, or the queue is full; the frame is then counted
+    // as dropped. Only before the first connection do frames wait for the wire: once a connection was
+    // made and lost, what was said before the loss is discarded (a station that comes back must not
+    // receive commands that were given up meanwhile) and new frames are refused until it is back.
+    bool send(const cs2::CanFrame& frame, SendTicket ticket = 0);
     // Sends frames in order, as one block where the wire allows it. Returns how many were accepted; the
-    // rest (from the first refused one on) are counted as dropped.
-    std::size_t sendBatch(std::span<const cs2::CanFrame> frames);
+    // rest (from the first refused one on) are counted as dropped. `ticket` marks them for withdraw().
+    std::size_t sendBatch(std::span<const cs2::CanFrame> frames, SendTicket ticket = 0);
+    // Takes back the frames with this ticket that have not reached the wire yet (counted as dropped);
+    // returns how many. Frames already written are not affected.
+    std::size_t withdraw(SendTicket ticket);
+    // Whether send() would refuse now because the connection was lost and is not back.
+    bool refusesFrames() const {
+        return state_ == State::Closed || (state_ != State::Connected && lostOnce_);
+    }
 
     State state() const { return state_; }
     const TransportCounters& counters() const { return counters_; }
@@ -73,8 +88,13 @@ signals:
     void connectionFailed(const QString& reason);
 
 protected:
-    // Connected lets waiting frames go to the wire; Closed discards them (counted as dropped).
+    // Connected lets waiting frames go to the wire; Closed, and leaving Connected, discard them (counted
+    // as dropped).
     void setState(State state);
+    // The wire takes no more for now (a TCP peer that does not read): frames wait in the send queue,
+    // where they can still be withdrawn, instead of piling up in the socket.
+    void setWireBusy(bool busy);
+    bool wireBusy() const { return wireBusy_; }
     // Puts frames on the wire; called only while Connected. Returns how many the wire took; the rest are
     // counted as dropped.
     virtual std::size_t writeFrames(std::span<const cs2::CanFrame> frames) = 0;
@@ -89,9 +109,11 @@ protected:
 private:
     void write(std::span<const cs2::CanFrame> frames);
     void reportSent(std::span<const cs2::CanFrame> frames);
-    void discardWaiting();
+    void discardWaiting(bool closed);
 
     State state_ = State::Closed;
+    bool lostOnce_ = false; // a connection was made and lost since open()
+    bool wireBusy_ = false;
     TransportCounters counters_;
     SendQueue queue_;
 };

@@ -7,8 +7,6 @@
 #include "sim/TrainMovement.h"
 #include "sim/TrainTrack.h"
 
-#include <QTimer>
-
 namespace stellwerk::connection {
 
 namespace {
@@ -34,18 +32,6 @@ void startDemoTrains(sim::SimulatedStation& station) {
         command(station, cs2::LocoFunction{cs2::LocId(run.locId), Headlights, std::uint8_t(1), {}});
         command(station, cs2::LocoSpeed{cs2::LocId(run.locId), run.speed});
     }
-}
-
-// The station announces its track power only when it is switched; a real one has a person to press Go.
-// The demo's "person" presses it whenever a controller connects, so that the app learns the power is on.
-void pressGoForNewControllers(sim::StationServer& server, sim::SimulatedStation& station) {
-    QObject::connect(&server, &sim::StationServer::tcpClientsChanged, &station,
-                     [&station, clients = 0](int count) mutable {
-                         if (count > clients)
-                             QTimer::singleShot(0, &station,
-                                                [&station] { command(station, cs2::SystemGo{}); });
-                         clients = count;
-                     });
 }
 
 } // namespace
@@ -74,12 +60,15 @@ bool EmbeddedStation::start() {
     settings.listenAddress = QHostAddress(QHostAddress::LocalHost);
     settings.udp = false;
     settings.tcpPort = 0;
+    // The CS2 protocol has no query for the track power: the station tells a controller that connects
+    // what it is now (Stop, Go or Halt) and never switches it for them, so a station whose power was
+    // turned off stays off for a controller that comes back.
+    settings.announcePowerToNewClients = true;
     server_ = std::make_unique<sim::StationServer>(*station_, settings);
     if (!server_->listen()) {
         error_ = server_->errorString();
         return false;
     }
-    pressGoForNewControllers(*server_, *station_);
     trains_ = std::make_unique<sim::TrainMovement>(*station_, sim::TrainTrack::demo());
     trains_->start();
     return true;

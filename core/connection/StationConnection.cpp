@@ -184,6 +184,7 @@ void StationConnection::transportStateChanged(can::Transport::State state) {
     } else if (state == TransportState::Reconnecting && everConnected_) {
         lost_ = true;
         reload_ = true;
+        loading_ = false; // the session abandoned the start-up that was running
         link_->session->liveness().stop();
     }
     updateState();
@@ -244,7 +245,16 @@ void StationConnection::downloadProgress(const QString& key, qsizetype received,
     emit progressChanged(progress_);
 }
 
+// A start-up during which the station fell silent read nothing reliable: it runs again once the station
+// answers, and its result is not passed on as the station's state.
 void StationConnection::startupReady(const station::StartupResult& result) {
+    if (silent_ || lost_) {
+        loading_ = false;
+        reload_ = true;
+        reloadWhenPossible();
+        updateState();
+        return;
+    }
     result_ = result;
     loading_ = false;
     loaded_ = true;

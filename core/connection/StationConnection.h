@@ -54,7 +54,8 @@ struct ConnectionSettings {
 // liveness; given none it starts the embedded simulated CS2 and reaches it over a real TCP transport.
 // Its state is in user terms; the model takes the session and the start-up result from here.
 // After the station was silent or the connection was lost, the start-up runs again (the station may
-// have restarted, and others may have changed what we missed).
+// have restarted, and others may have changed what we missed); a start-up cut short by a loss, or during
+// which the station fell silent, is thrown away and never emitted as configurationLoaded.
 class StationConnection final : public QObject {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(StationConnection)

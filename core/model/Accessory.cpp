@@ -1,6 +1,7 @@
 #include "model/Accessory.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace stellwerk::model {
 namespace {
@@ -35,8 +36,9 @@ bool Accessory::acceptsPosition(int position) const {
 }
 
 bool Accessory::confirmPosition(int position) {
+    const bool newlyReported = !std::exchange(positionReported_, true);
     if (position == position_)
-        return false;
+        return newlyReported;
     position_ = position;
     return true;
 }

@@ -35,7 +35,13 @@ public:
     bool acceptsPosition(int position) const;
 
     int position() const { return position_; }
+    // Whether the bus showed the position since the model's state was last lost (the CS2 has no query
+    // for it: after a reconnect it stays "not reported" until the accessory is switched or reported).
+    bool isPositionReported() const { return positionReported_; }
+    // Returns true when the position changed or became reported.
     bool confirmPosition(int position);
+    // The station can no longer be heard: the position becomes "not reported" (and stays as it was).
+    void forgetReported() { positionReported_ = false; }
 
     // The address and output that show `position`; nullopt when the article does not have it.
     std::optional<AccessoryOutput> outputFor(int position) const;
@@ -53,6 +59,7 @@ private:
     bool dcc_ = false;
     std::optional<std::int64_t> switchTimeMs_;
     int position_ = 0;
+    bool positionReported_ = false;
 };
 
 } // namespace stellwerk::model

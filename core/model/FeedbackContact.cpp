@@ -8,7 +8,8 @@ FeedbackContact::FeedbackContact(std::uint16_t device, std::uint16_t contact, QS
 bool FeedbackContact::confirm(bool occupied, const QDateTime& now) {
     if (known_ && occupied == occupied_)
         return false;
-    lastChange_ = now;
+    if (occupied != occupied_ || !lastChange_.isValid())
+        lastChange_ = now; // reported again unchanged: it has been so since the last change
     occupied_ = occupied;
     known_ = true;
     return true;

@@ -26,8 +26,11 @@ public:
     void setName(const QString& name) { name_ = name; }
 
     bool occupied() const { return occupied_; }
-    // False until the bus reported the contact (answer to the start-up query or an event).
+    // False until the bus reported the contact (answer to the start-up query or an event), and again
+    // from the moment the station can no longer be heard until it reports the contact again: a view
+    // shows the last state as "not reported".
     bool known() const { return known_; }
+    void forgetReported() { known_ = false; }
     // When the state last changed (local clock); invalid before the first change.
     const QDateTime& lastChange() const { return lastChange_; }
 

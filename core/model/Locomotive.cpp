@@ -1,6 +1,7 @@
 #include "model/Locomotive.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace stellwerk::model {
 namespace {
@@ -55,11 +56,21 @@ bool Locomotive::functionOn(int number) const {
     return f && f->on;
 }
 
+bool Locomotive::isFunctionReported(int number) const {
+    return number >= 0 && number < MaxFunctions && (functionsConfirmed_ >> number & 1U) != 0;
+}
+
+void Locomotive::forgetReported() {
+    speedConfirmed_ = false;
+    directionConfirmed_ = false;
+    functionsConfirmed_ = 0;
+}
+
 bool Locomotive::confirmSpeed(std::uint16_t speed) {
     speed = std::min(speed, MaxSpeed);
-    speedConfirmed_ = true;
+    const bool newlyReported = !std::exchange(speedConfirmed_, true);
     if (speed == speed_)
-        return false;
+        return newlyReported;
     speed_ = speed;
     return true;
 }
@@ -73,7 +84,7 @@ bool Locomotive::confirmDirection(cs2::Direction direction) {
     // A query's answer repeats the direction; only a change (or a direction set by us, see
     // directionSet) means that the station stopped the locomotive.
     const bool turned = directionConfirmed_ && direction != direction_;
-    const bool changed = direction != direction_ || (turned && speed_ != 0);
+    const bool changed = direction != direction_ || (turned && speed_ != 0) || !directionConfirmed_;
     directionConfirmed_ = true;
     direction_ = direction;
     if (turned)
@@ -97,9 +108,10 @@ bool Locomotive::confirmFunction(int number, bool on) {
         it = functions_.insert(std::ranges::upper_bound(functions_, number, {}, &LocomotiveFunction::number),
                                LocomotiveFunction{number, 0, cs2config::FunctionTrigger::Latching, false, 0});
     }
+    const bool newlyReported = (functionsConfirmed_ >> number & 1U) == 0;
     functionsConfirmed_ |= 1U << number;
     if (it->on == on)
-        return false;
+        return newlyReported;
     it->on = on;
     return true;
 }

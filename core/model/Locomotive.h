@@ -54,7 +54,17 @@ public:
     cs2::Direction direction() const { return direction_; }
     bool functionOn(int number) const;
 
-    // Confirmed changes; each returns true when the state changed.
+    // Whether the station reported the value shown now (since the model's state was last lost, see
+    // Railway::isStateReported). False means the value is the file's or the one last reported before the
+    // station fell silent or the connection was lost, and a view shows it as "not reported". After a
+    // reconnect, a speed query that got no answer leaves isSpeedReported() false.
+    bool isSpeedReported() const { return speedConfirmed_; }
+    bool isDirectionReported() const { return directionConfirmed_; }
+    bool isFunctionReported(int number) const;
+    // The station can no longer be heard: every value becomes "not reported" (and stays as it was).
+    void forgetReported();
+
+    // Confirmed changes; each returns true when the state changed or became reported.
     bool confirmSpeed(std::uint16_t speed);
     // A direction the bus reported; a change also means speed 0: the station stops the locomotive on a
     // direction change and does not say so (field notes).

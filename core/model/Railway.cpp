@@ -25,6 +25,9 @@ Railway::Railway(station::StationSession& session, QObject* parent)
       programmer_(new Programmer(session, this)) {
     connect(&session_, &station::StationSession::updated, this, &Railway::apply);
     connect(&session_.liveness(), &station::Liveness::stationSilent, this, &Railway::contactLost);
+    // Before the session cancels the commands that were waiting: their failures arrive at a model that
+    // already knows why.
+    connect(&session_, &station::StationSession::connectionLost, this, &Railway::contactLost);
     connect(&session_.transport(), &can::Transport::stateChanged, this, [this](can::Transport::State state) {
         if (state != can::Transport::State::Connected)
             contactLost();
@@ -48,14 +51,34 @@ void Railway::load(const station::StartupResult& startup) {
     if (!poller_->sources().empty())
         poller_->start();
     emit loaded();
-    setStateReported(true);
+    setStateReported(stationHeard());
+}
+
+bool Railway::stationHeard() const {
+    return session_.transport().state() == can::Transport::State::Connected &&
+           !session_.liveness().isStationSilent();
 }
 
 void Railway::contactLost() {
-    state_.forgetPower();
+    const bool wasReported = stateReported_;
+    state_.forgetReported();
     for (const auto& [id, runner] : std::map(runners_))
         cancelRoute(id);
     setStateReported(false);
+    if (wasReported)
+        announceAllUnreported();
+}
+
+// One signal per kind naming everything, so that views grey out what they show.
+void Railway::announceAllUnreported() {
+    RailwayChanges changes;
+    for (const Locomotive& loco : state_.locomotives().items())
+        changes.locomotives.add(loco.id().value());
+    for (const Accessory& accessory : state_.accessories().items())
+        changes.accessories.add(accessory.id());
+    for (const FeedbackContact& contact : state_.contacts().items())
+        changes.contacts.add(contact.key());
+    announce(changes);
 }
 
 void Railway::setStateReported(bool reported) {

@@ -52,9 +52,20 @@ public:
     // Unknown until the station reported its power state, and again while the state is not reported.
     std::optional<station::PowerState> power() const { return state_.power(); }
     // True while what the railway holds is what the station reports: false before the first start-up
-    // finished, and from the moment the station falls silent or the connection is lost until a start-up
-    // has read the state again (load()). While false, power() is unknown and the locomotives, accessories
-    // and contacts hold the last state reported, which views show as "not reported".
+    // finished, and from the moment the station falls silent or the connection is lost (or the transport
+    // is not connected) until a start-up has read the state again (load() while the station is heard).
+    // While false, power() is unknown and the locomotives, accessories and contacts hold the last state
+    // reported, which views show as "not reported".
+    //
+    // Per item, whether a value was reported since the state was last lost:
+    // Locomotive::isSpeedReported / isDirectionReported / isFunctionReported, Accessory::isPositionReported,
+    // FeedbackContact::known. On loss every item becomes "not reported" at once (stateReportedChanged(false),
+    // then one locomotivesChanged, accessoriesChanged, contactsChanged and tilesChanged naming all of them);
+    // the start-up's state queries make locomotives and contacts reported again one by one (with the usual
+    // change signals), and an item whose query failed stays "not reported" after load(). The CS2 has no
+    // query for track power or accessory positions: they stay unknown until the station reports them (a
+    // change, or an announcement on connect). Route runs are cancelled, and commands that were waiting for
+    // an answer fail at once (locomotiveCommandFailed, problem) and are never sent later.
     bool isStateReported() const { return stateReported_; }
     ReadingPoller& readings() { return *poller_; }
     // Decoder programming on this station: mfx discovery, bind, verify, CV read and write.
@@ -126,6 +137,8 @@ private:
     // The station went silent or the connection was lost: what we hold may no longer be true.
     void contactLost();
     void setStateReported(bool reported);
+    bool stationHeard() const;
+    void announceAllUnreported();
     void announce(const RailwayChanges& changes);
     void announceTiles(const RailwayChanges& changes);
     void readingMissed(quint32 device, quint8 channel);

@@ -14,6 +14,17 @@ void RailwayState::load(const station::StartupResult& startup) {
     loadDevices(startup);
 }
 
+void RailwayState::forgetReported() {
+    power_.reset();
+    for (Locomotive& loco : locomotives_.items())
+        loco.forgetReported();
+    for (Accessory& accessory : accessories_.items())
+        accessory.forgetReported();
+    for (FeedbackContact& contact : contacts_.items())
+        contact.forgetReported();
+    addressPositions_.clear();
+}
+
 void RailwayState::replaceLocomotiveFile(const cs2config::LocomotiveFile& file) {
     // A locomotive that left the file goes; one only the bus showed stays, as after a start-up.
     Registry<std::uint32_t, Locomotive> kept;

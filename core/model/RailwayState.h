@@ -61,6 +61,9 @@ public:
     std::optional<station::PowerState> power() const { return power_; }
     // The power state is no longer known (the station went silent or the connection was lost).
     void forgetPower() { power_.reset(); }
+    // Nothing shown is reported any more: power unknown, and every locomotive value, accessory position
+    // and contact "not reported" until the station reports it again. Keyboard addresses are forgotten.
+    void forgetReported();
     // The position last seen on the bus for an MM2 keyboard number that no article uses.
     std::optional<int> addressPosition(std::int64_t address) const;
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -30,6 +31,8 @@ public:
     }
 
     const std::vector<Item>& items() const { return items_; }
+    // The items to change in place (their keys must stay as they are).
+    std::span<Item> items() { return items_; }
     const std::vector<Key>& keys() const { return keys_; }
     std::size_t size() const { return items_.size(); }
     void clear() {

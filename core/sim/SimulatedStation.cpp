@@ -95,6 +95,7 @@ SimulatedStation::SimulatedStation(StationLayout layout, Options options, QObjec
 SimulatedStation::~SimulatedStation() = default;
 
 void SimulatedStation::receive(const cs2::CanFrame& frame) {
+    emit frameReceived(frame);
     const auto decoded = cs2::decode(frame);
     if (!decoded)
         return; // a real station drops frames it cannot read
@@ -116,6 +117,22 @@ void SimulatedStation::setTrackLoad(int milliampere) {
     Outbox out(d_->identity.hash);
     d_->devices.setTrackLoad(milliampere);
     d_->devices.watchLoad(out);
+    emitAll(out.take());
+}
+
+void SimulatedStation::announcePower() {
+    Outbox out(d_->identity.hash);
+    switch (d_->state.power) {
+    case Power::Stopped:
+        out.respond(cs2::SystemStop{0});
+        break;
+    case Power::Running:
+        out.respond(cs2::SystemGo{0});
+        break;
+    case Power::Halted:
+        out.respond(cs2::SystemHalt{0});
+        break;
+    }
     emitAll(out.take());
 }
 

@@ -61,9 +61,15 @@ public:
     // The load on the main track in milliampere, for the current reading (the train movement sets
     // it). Above the current limit the station reports an overload and switches the track off.
     void setTrackLoad(int milliampere);
+    // Says on the bus what the track power is now (Stop, Go or Halt with the response bit, as the station
+    // reports a change), without changing it: what a CS2 shows a controller that just connected.
+    void announcePower();
 
 signals:
     void framesEmitted(const std::vector<stellwerk::cs2::CanFrame>& frames);
+    // Every frame given to receive(), before it is handled: the log of what reached the station, for
+    // tests and the soak program that check nothing stale ever arrives.
+    void frameReceived(const stellwerk::cs2::CanFrame& frame);
 
 private:
     class Private;

@@ -8,6 +8,7 @@
 #include <QNetworkDatagram>
 #include <QTcpServer>
 #include <QTcpSocket>
+#include <QTimer>
 #include <QUdpSocket>
 
 namespace stellwerk::sim {
@@ -116,6 +117,8 @@ void StationServer::acceptClients() {
         ++counters_.tcpConnections;
         connect(socket, &QTcpSocket::readyRead, this, [this, socket] { readClient(socket); });
         connect(socket, &QTcpSocket::disconnected, this, [this, socket] { dropClient(socket); });
+        if (settings_.announcePowerToNewClients) // once the client's side saw the connection
+            QTimer::singleShot(0, this, [this] { station_.announcePower(); });
         emit tcpClientsChanged(int(clients_.size()));
     }
 }

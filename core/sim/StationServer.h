@@ -38,6 +38,8 @@ struct StationServerSettings {
     bool tcp = true;
     std::uint16_t tcpPort = can::StationPort; // 0 = any free port
     std::optional<can::CanBusSettings> canBus;
+    // Tell each new TCP client the track power as it is now (the CS2 protocol has no query for it).
+    bool announcePowerToNewClients = false;
 };
 
 // What the server has seen since it started listening.

@@ -23,8 +23,8 @@ const char* commandStatusName(CommandResult::Status status) {
     return "?";
 }
 
-CommandTracker::CommandTracker(FrameSink sink, QObject* parent)
-    : QObject(parent), sink_(std::move(sink)), timer_(new QTimer(this)) {
+CommandTracker::CommandTracker(FrameSink sink, FrameWithdrawal withdraw, QObject* parent)
+    : QObject(parent), sink_(std::move(sink)), withdraw_(std::move(withdraw)), timer_(new QTimer(this)) {
     timer_->setSingleShot(true);
     timer_->setTimerType(Qt::PreciseTimer);
     connect(timer_, &QTimer::timeout, this, &CommandTracker::expire);
@@ -62,10 +62,20 @@ CommandId CommandTracker::sendFrames(std::vector<cs2::CanFrame> frames, AckKey k
 bool CommandTracker::transmit(CommandId id, Pending& pending) {
     if (pending.deadline != deadlines_.end())
         deadlines_.erase(pending.deadline);
+    if (pending.attempts > 0)
+        withdraw(id); // a retry replaces what of the last attempt still waits
     ++pending.attempts;
-    pending.deadline = deadlines_.emplace(Clock::now() + pending.policy.timeout, id);
+    const auto now = Clock::now();
+    if (pending.attempts == 1)
+        pending.firstSent = now;
+    pending.deadline = deadlines_.emplace(now + pending.policy.timeout, id);
     scheduleTimer();
-    return sink_(pending.frames);
+    return sink_(pending.frames, id);
+}
+
+void CommandTracker::withdraw(CommandId id) {
+    if (withdraw_)
+        withdraw_(id);
 }
 
 bool CommandTracker::offer(const cs2::Message& answer) {
@@ -89,6 +99,7 @@ void CommandTracker::forget(CommandId id) {
         return;
     unlink(id, it->second);
     pending_.erase(it);
+    withdraw(id);
     scheduleTimer();
 }
 
@@ -108,7 +119,10 @@ void CommandTracker::expire() {
         const CommandId id = deadlines_.begin()->second;
         Pending& pending = pending_.at(id);
         if (pending.attempts > pending.policy.retries) {
+            const auto firstSent = pending.firstSent;
             finish(id, CommandResult::Status::TimedOut);
+            if (giveUpObserver_)
+                giveUpObserver_(firstSent);
             continue;
         }
         ++retriesSent_;
@@ -133,6 +147,7 @@ void CommandTracker::finish(CommandId id, CommandResult::Status status, std::opt
     CommandCallback done = std::move(it->second.done);
     unlink(id, it->second);
     pending_.erase(it);
+    withdraw(id);
     if (done)
         done(result); // last: the callback may send the next command
 }

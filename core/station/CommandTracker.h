@@ -47,17 +47,22 @@ const char* commandStatusName(CommandResult::Status status);
 
 using CommandId = std::uint64_t;
 using CommandCallback = std::function<void(const CommandResult&)>;
-// Puts frames on the bus with our current hash; false when the transport refused them.
-using FrameSink = std::function<bool(std::span<const cs2::CanFrame>)>;
+// Puts frames of a command on the bus with our current hash, marked with the command's id so that they can
+// be withdrawn while they still wait for the wire; false when the transport refused them.
+using FrameSink = std::function<bool(std::span<const cs2::CanFrame>, CommandId)>;
+// Takes back the frames of a command that have not reached the wire yet.
+using FrameWithdrawal = std::function<void(CommandId)>;
 
 // Keeps every command that waits for its acknowledgement: matches answers by AckKey (O(1) per frame),
 // sends again on timeout and reports success or failure once. Several commands with the same key are
-// answered in the order they were sent.
+// answered in the order they were sent. A command that ends (answered, given up, cancelled, forgotten)
+// has whatever of it still waits for the wire withdrawn, and a retry replaces the previous attempt's
+// waiting frames instead of piling up behind them: nothing of a finished command reaches the station later.
 class CommandTracker final : public QObject {
     Q_OBJECT
 
 public:
-    explicit CommandTracker(FrameSink sink, QObject* parent = nullptr);
+    explicit CommandTracker(FrameSink sink, FrameWithdrawal withdraw = {}, QObject* parent = nullptr);
     ~CommandTracker() override;
 
     // Sends a command and waits for its answer. Returns 0 (and reports NotSent at once) when the message
@@ -74,6 +79,11 @@ public:
     // Ends every waiting command with Cancelled.
     void cancelAll();
 
+    // Called when a command is given up (TimedOut), with the time of its first send: whoever knows
+    // whether the station was heard since can decide that the connection is no longer to be trusted.
+    using GiveUpObserver = std::function<void(std::chrono::steady_clock::time_point firstSent)>;
+    void setGiveUpObserver(GiveUpObserver observer) { giveUpObserver_ = std::move(observer); }
+
     std::size_t pendingCount() const { return pending_.size(); }
     bool isPending(CommandId id) const { return pending_.count(id) != 0; }
     // Every retry sent so far, for the status bar and tests.
@@ -89,6 +99,7 @@ private:
         CommandCallback done;
         CommandPolicy policy;
         int attempts = 0;
+        Clock::time_point firstSent;
         Deadlines::iterator deadline;
     };
 
@@ -98,7 +109,11 @@ private:
     void finish(CommandId id, CommandResult::Status status, std::optional<cs2::Message> answer = {});
     void unlink(CommandId id, Pending& pending);
 
+    void withdraw(CommandId id);
+
     FrameSink sink_;
+    FrameWithdrawal withdraw_;
+    GiveUpObserver giveUpObserver_;
     QTimer* timer_;
     CommandId nextId_ = 1;
     std::unordered_map<CommandId, Pending> pending_;

@@ -45,13 +45,22 @@ StartupSequence::StartupSequence(StationSession& session, StartupOptions options
                     emit downloadProgress(key, received, announced, filesDone_ + 1,
                                           filesDone_ + int(keys_.size()) + 1);
             });
+    connect(&session_, &StationSession::connectionLost, this, &StartupSequence::abandon);
 }
 
 void StartupSequence::start() {
     result_ = {};
+    abandoned_ = false;
     enter(Step::Devices);
     session_.ping();
     windowTimer_->start(options_.deviceWindow);
+}
+
+void StartupSequence::abandon() {
+    abandoned_ = true;
+    windowTimer_->stop();
+    queries_.clear();
+    keys_.clear();
 }
 
 void StartupSequence::enter(Step step) {
@@ -61,6 +70,8 @@ void StartupSequence::enter(Step step) {
 }
 
 void StartupSequence::devicesListed() {
+    if (abandoned_)
+        return;
     if (session_.devices().size() == 0)
         report(QStringLiteral("no device answered the ping within %1 ms").arg(options_.deviceWindow.count()));
     if (options_.wakeGleisbox)
@@ -77,7 +88,7 @@ void StartupSequence::wakeUp() {
     go.raw.bytes[4] = 0x11; // UID 0, "start the application"
     session_.send(cs2::Message{0, false, 0, go});
     session_.request(cs2::Message{0, false, 0, cs2::TrackProtocols{0, 0x07}}, [this](const CommandResult& r) {
-        if (!r.succeeded())
+        if (!r.succeeded() && !abandoned_)
             report(QStringLiteral("Gleisbox wake-up: enabling MM2, mfx and DCC: %1")
                        .arg(QLatin1String(commandStatusName(r.status))));
     });
@@ -96,6 +107,8 @@ void StartupSequence::readNextDevice() {
     const auto identity = devices[nextDevice_++].identity;
     session_.statusData().read(identity,
                                [this](const DeviceDescription& device, const QStringList& problems) {
+                                   if (abandoned_)
+                                       return;
                                    session_.devices().describe(device);
                                    for (const auto& message : problems)
                                        report(message);
@@ -117,6 +130,8 @@ void StartupSequence::downloadNext() {
 }
 
 void StartupSequence::fileArrived(const std::string& key, const DownloadResult& result) {
+    if (abandoned_)
+        return;
     ++filesDone_;
     if (result)
         keep(key, result->contents);
@@ -177,6 +192,8 @@ void StartupSequence::pumpQueries() {
         ++inFlight_;
         session_.request(query, [this, query](const CommandResult& r) {
             --inFlight_;
+            if (abandoned_)
+                return;
             if (r.succeeded())
                 ++result_.stateAnswers;
             else
@@ -187,7 +204,7 @@ void StartupSequence::pumpQueries() {
             pumpQueries();
         });
     }
-    if (inFlight_ == 0 && queries_.empty() && step_ == Step::States) {
+    if (!abandoned_ && inFlight_ == 0 && queries_.empty() && step_ == Step::States) {
         enter(Step::Ready);
         emit ready(result_);
     }

@@ -71,6 +71,10 @@ public:
     StartupSequence(StationSession& session, StartupOptions options = {}, QObject* parent = nullptr);
 
     void start();
+    // Stops here for good: nothing more is sent and ready() is not emitted. Happens by itself when the
+    // session loses its connection (a start-up cut short must not pass for the station's state).
+    void abandon();
+    bool abandoned() const { return abandoned_; }
     const StartupResult& result() const { return result_; }
     Step step() const { return step_; }
 
@@ -103,6 +107,7 @@ private:
     int filesDone_ = 0;
     std::deque<cs2::Message> queries_;
     int inFlight_ = 0;
+    bool abandoned_ = false;
 };
 
 } // namespace stellwerk::station

@@ -6,7 +6,9 @@ namespace stellwerk::station {
 
 StationSession::StationSession(can::Transport& transport, StationSettings settings, QObject* parent)
     : QObject(parent), transport_(transport), settings_(settings), identity_(settings.uid),
-      tracker_(new CommandTracker([this](std::span<const cs2::CanFrame> f) { return sendFrames(f); }, this)),
+      tracker_(new CommandTracker(
+          [this](std::span<const cs2::CanFrame> f, CommandId id) { return sendFrames(f, id); },
+          [this](CommandId id) { transport_.withdraw(id); }, this)),
       download_(new ConfigDownload(
           *tracker_, [this] { return identity_.hash(); }, this)),
       statusData_(new StatusDataReader(*tracker_, this)), liveness_(new Liveness([this] { ping(); }, this)) {
@@ -14,6 +16,10 @@ StationSession::StationSession(can::Transport& transport, StationSettings settin
     download_->setIdleTimeout(settings_.streamIdle);
     liveness_->setSettings(settings_.liveness);
     connect(&transport_, &can::Transport::framesReceived, this, &StationSession::receive);
+    connect(&transport_, &can::Transport::stateChanged, this, &StationSession::transportStateChanged);
+    connect(liveness_, &Liveness::stationSilent, this, &StationSession::stationSilent);
+    connected_ = transport_.state() == can::Transport::State::Connected;
+    tracker_->setGiveUpObserver([this](auto firstSent) { commandGivenUp(firstSent); });
 }
 
 StationSession::~StationSession() {
@@ -25,14 +31,38 @@ bool StationSession::send(const cs2::Message& message) {
     return sendFrames({&frame, 1});
 }
 
-bool StationSession::sendFrames(std::span<const cs2::CanFrame> frames) {
+bool StationSession::sendFrames(std::span<const cs2::CanFrame> frames, can::SendTicket ticket) {
     if (frames.size() == 1)
-        return transport_.send(identity_.stamp(frames.front()));
+        return transport_.send(identity_.stamp(frames.front()), ticket);
     std::vector<cs2::CanFrame> stamped;
     stamped.reserve(frames.size());
     for (const auto& frame : frames)
         stamped.push_back(identity_.stamp(frame));
-    return transport_.sendBatch(stamped) == stamped.size();
+    return transport_.sendBatch(stamped, ticket) == stamped.size();
+}
+
+void StationSession::transportStateChanged(can::Transport::State state) {
+    const bool connected = state == can::Transport::State::Connected;
+    if (connected_ && !connected) {
+        connected_ = false;
+        emit connectionLost();
+        tracker_->cancelAll();
+    }
+    connected_ = connected;
+}
+
+// What we wrote may still sit in the connection (unsent, or being retransmitted to a station that is
+// out of reach); a reset throws it away before the station is back.
+void StationSession::stationSilent() {
+    transport_.resetConnection(QStringLiteral("the station stopped answering; connection reset"));
+}
+
+// A command without an answer while the station said nothing at all since it was sent: the station may
+// not have it yet, and must never get it now.
+void StationSession::commandGivenUp(std::chrono::steady_clock::time_point firstSent) {
+    if (lastHeard_ < firstSent)
+        transport_.resetConnection(
+            QStringLiteral("no answer to a command and nothing else from the station; connection reset"));
 }
 
 CommandId StationSession::request(const cs2::Message& command, CommandCallback done,
@@ -45,6 +75,7 @@ void StationSession::ping() {
 }
 
 void StationSession::receive(const std::vector<cs2::CanFrame>& frames) {
+    lastHeard_ = std::chrono::steady_clock::now();
     for (const auto& frame : frames)
         receiveFrame(frame);
     download_->flushProgress();

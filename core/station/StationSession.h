@@ -36,7 +36,9 @@ struct SessionCounters {
 
 // One connected command station: the only place that knows the conversation rules. Sends with our
 // hash, tracks acknowledgements, watches liveness, downloads files, and turns every frame on the bus
-// (ours and other controllers') into batched StationUpdates.
+// (ours and other controllers') into batched StationUpdates. When the connection is lost, every command
+// still waiting ends at once (Cancelled) and nothing of it is sent when the station is back; when the
+// station falls silent, a stream connection is reset so that it cannot read old commands on waking up.
 class StationSession final : public QObject {
     Q_OBJECT
 
@@ -57,8 +59,8 @@ public:
 
     // Sends without waiting for an answer (ping, bootloader "go", commands nobody acknowledges).
     bool send(const cs2::Message& message);
-    // Frames as they are, with our hash written in.
-    bool sendFrames(std::span<const cs2::CanFrame> frames);
+    // Frames as they are, with our hash written in; `ticket` marks them for withdrawing (see Transport).
+    bool sendFrames(std::span<const cs2::CanFrame> frames, can::SendTicket ticket = 0);
     // Sends and tracks the acknowledgement with the session's default policy (or the given one).
     CommandId request(const cs2::Message& command, CommandCallback done,
                       std::optional<CommandPolicy> policy = std::nullopt);
@@ -69,8 +71,14 @@ signals:
     void updated(const stellwerk::station::StationUpdates& updates);
     // Another sender used our hash; we now use `newHash`.
     void hashChanged(std::uint16_t oldHash, std::uint16_t newHash);
+    // The connection was lost (the transport left Connected). Emitted before the waiting commands are
+    // cancelled, so that whoever drives a conversation (the start-up) can abandon it first.
+    void connectionLost();
 
 private:
+    void transportStateChanged(can::Transport::State state);
+    void stationSilent();
+    void commandGivenUp(std::chrono::steady_clock::time_point firstSent);
     void receive(const std::vector<cs2::CanFrame>& frames);
     void receiveFrame(const cs2::CanFrame& frame);
     void route(const cs2::Message& message, const cs2::CanFrame& frame);
@@ -85,6 +93,8 @@ private:
     DeviceDirectory directory_;
     StationEventCollector events_;
     SessionCounters counters_;
+    bool connected_ = false;
+    std::chrono::steady_clock::time_point lastHeard_; // the last frame received
 };
 
 } // namespace stellwerk::station

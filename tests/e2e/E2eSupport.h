@@ -186,6 +186,10 @@ public:
 
     // Over TCP, the app connects to this port instead of the station's (a relay in between).
     void connectAppTo(std::uint16_t tcpPort) { appTcpPort_ = tcpPort; }
+    // Over UDP, the station sends to this port instead of the app's (a relay in between).
+    void stationRepliesTo(std::uint16_t udpPort) { replyUdpPort_ = udpPort; }
+    // The station tells each new TCP client its track power (as the embedded station does).
+    bool announcePower = false;
     std::uint16_t stationTcpPort() const { return stationTcpPort_; }
     std::uint16_t stationUdpPort() const { return stationUdpPort_; }
     Wire wire() const { return wire_; }
@@ -203,7 +207,8 @@ private:
         settings.udp = wire_ == Wire::Udp;
         settings.udpPort = stationUdpPort_;
         settings.udpReplyHost = QHostAddress::LocalHost;
-        settings.udpReplyPort = appUdpPort_;
+        settings.udpReplyPort = replyUdpPort_ ? replyUdpPort_ : appUdpPort_;
+        settings.announcePowerToNewClients = announcePower;
         settings.tcp = wire_ == Wire::Tcp;
         settings.tcpPort = stationTcpPort_;
         if (wire_ == Wire::VirtualCan)
@@ -229,6 +234,7 @@ private:
     station::StationSettings settings_;
     std::uint16_t appUdpPort_ = 0;
     std::uint16_t appTcpPort_ = 0;
+    std::uint16_t replyUdpPort_ = 0;
     std::uint16_t stationTcpPort_ = 0;
     std::uint16_t stationUdpPort_ = 0;
 };

@@ -65,22 +65,59 @@ TEST(LoopbackTransport, SendOnAClosedEndIsRefusedAndCounted) {
     EXPECT_EQ(pair.app.counters().framesOut, 0u);
 }
 
-TEST(LoopbackTransport, FramesSentWhileThePeerIsAwayWaitAndArriveWhenItReturns) {
+// What is said while the peer is away is refused, never delivered when it returns (issue 11).
+TEST(LoopbackTransport, FramesSentWhileThePeerIsAwayAreRefusedAndNeverArrive) {
     Pair pair;
     pair.open();
     Recorder app(pair.app);
     pair.station.close();
     EXPECT_EQ(pair.app.state(), State::Reconnecting);
-    EXPECT_EQ(pair.app.sendBatch(numberedFrames(5)), 5u);
-    EXPECT_EQ(pair.app.queuedFrames(), 5u);
+    EXPECT_TRUE(pair.app.refusesFrames());
+    EXPECT_EQ(pair.app.sendBatch(numberedFrames(5)), 0u);
+    EXPECT_EQ(pair.app.queuedFrames(), 0u);
+    EXPECT_EQ(pair.app.counters().dropped, 5u);
     Recorder station(pair.station);
     pair.station.open();
     EXPECT_EQ(pair.app.state(), State::Connected);
-    ASSERT_TRUE(station.waitForFrames(5));
-    EXPECT_EQ(station.frames(), numberedFrames(5));
+    EXPECT_TRUE(pair.app.send(numbered(7)));
+    ASSERT_TRUE(station.waitForFrames(1));
+    EXPECT_EQ(station.frames(), std::vector{numbered(7)});
     EXPECT_EQ(pair.app.counters().reconnects, 1u);
-    EXPECT_EQ(pair.app.counters().dropped, 0u);
     EXPECT_EQ(app.states, (std::vector{State::Reconnecting, State::Connected}));
+}
+
+// Frames that still wait for the wire when the connection is lost are dropped with it.
+TEST(LoopbackTransport, FramesWaitingForPacingAreDroppedWhenTheConnectionIsLost) {
+    Pair pair;
+    pair.app.setPacing(50ms);
+    pair.open();
+    Recorder station(pair.station);
+    EXPECT_EQ(pair.app.sendBatch(numberedFrames(4)), 4u);
+    EXPECT_EQ(pair.app.queuedFrames(), 3u);
+    pair.station.close();
+    EXPECT_EQ(pair.app.queuedFrames(), 0u);
+    EXPECT_EQ(pair.app.counters().dropped, 3u);
+    pair.station.open();
+    QTest::qWait(200);
+    EXPECT_TRUE(station.frames().empty()) << "the first frame went with the station's end";
+}
+
+// A ticket takes back what of a command still waits; other frames keep their place.
+TEST(LoopbackTransport, WithdrawnFramesNeverReachTheWire) {
+    Pair pair;
+    pair.app.setPacing(20ms);
+    pair.open();
+    Recorder station(pair.station);
+    EXPECT_TRUE(pair.app.send(numbered(0), 1));
+    EXPECT_TRUE(pair.app.send(numbered(1), 2));
+    EXPECT_TRUE(pair.app.send(numbered(2), 3));
+    EXPECT_TRUE(pair.app.send(numbered(3), 2));
+    EXPECT_EQ(pair.app.withdraw(2), 2u);
+    EXPECT_EQ(pair.app.withdraw(0), 0u) << "ticket 0 marks frames nobody withdraws";
+    ASSERT_TRUE(station.waitForFrames(2));
+    QTest::qWait(60);
+    EXPECT_EQ(station.frames(), (std::vector{numbered(0), numbered(2)}));
+    EXPECT_EQ(pair.app.counters().dropped, 2u);
 }
 
 TEST(LoopbackTransport, QueueLimitRefusesAndCountsDropped) {
@@ -119,8 +156,8 @@ TEST(LoopbackTransport, DestroyedPeerLeavesTheOtherEndWaiting) {
         station.open();
     }
     EXPECT_EQ(app.state(), State::Reconnecting);
-    EXPECT_TRUE(app.send(numbered(1)));
-    EXPECT_EQ(app.queuedFrames(), 1u);
+    EXPECT_FALSE(app.send(numbered(1)));
+    EXPECT_EQ(app.queuedFrames(), 0u);
 }
 
 // Paced frames cross one by one: each arrives in its own batch, the whole run takes at least the gaps.

@@ -151,22 +151,24 @@ TEST_F(TcpTransportTest, ConnectionEndingInsideAFrameCountsItMalformed) {
     EXPECT_EQ(transport->counters().malformed, 1u);
 }
 
-TEST_F(TcpTransportTest, StationThatRestartsIsReconnectedAndGetsTheFramesSentMeanwhile) {
+// Issue 11: nothing said while the station was away reaches it when it is back.
+TEST_F(TcpTransportTest, StationThatRestartsIsReconnectedAndGetsNothingSentMeanwhile) {
     connectToStation();
     station.stop();
     ASSERT_TRUE(waitForState(*transport, State::Reconnecting));
     ASSERT_FALSE(recorder->problems.empty());
     EXPECT_TRUE(recorder->problems[0].startsWith(transport->description()))
         << recorder->problems[0].toStdString();
-    EXPECT_EQ(transport->sendBatch(numberedFrames(3)), 3u);
-    EXPECT_EQ(transport->queuedFrames(), 3u);
+    EXPECT_EQ(transport->sendBatch(numberedFrames(3)), 0u);
+    EXPECT_EQ(transport->queuedFrames(), 0u);
+    EXPECT_EQ(transport->counters().dropped, 3u);
 
     station.listen(settings.port);
     ASSERT_TRUE(waitForState(*transport, State::Connected));
-    ASSERT_TRUE(station.waitForBytes(3 * 13));
-    EXPECT_EQ(station.received(), encodeFrames(numberedFrames(3)));
     EXPECT_EQ(transport->counters().reconnects, 1u);
-    EXPECT_EQ(transport->counters().dropped, 0u);
+    EXPECT_TRUE(transport->send(numbered(4)));
+    ASSERT_TRUE(station.waitForBytes(13));
+    EXPECT_EQ(station.received(), encodeFrames(std::vector{numbered(4)}));
 
     station.write(encodeFrames(numberedFrames(2, 7)));
     ASSERT_TRUE(recorder->waitForFrames(2));
@@ -226,6 +228,48 @@ TEST_F(TcpTransportTest, CloseDiscardsWaitingFramesAsDroppedAndStopsRetrying) {
     QTest::qWait(100);
     EXPECT_EQ(transport->state(), State::Closed);
     EXPECT_TRUE(station.received().isEmpty());
+}
+
+// A peer that accepts but never reads: once the socket holds more than a little, frames wait in the
+// transport's bounded queue, where a given-up command is withdrawn, instead of piling up in memory.
+TEST(TcpTransportToAPeerThatNeverReads, KeepsFramesInItsBoundedQueueWhereTheyCanBeWithdrawn) {
+    QTcpServer deaf; // the kernel accepts the connection; nobody ever takes it or reads
+    ASSERT_TRUE(deaf.listen(QHostAddress::LocalHost, 0));
+    deaf.pauseAccepting(); // else the server would take it and read into its own buffer
+    TcpTransport transport(TcpSettings{QStringLiteral("127.0.0.1"), deaf.serverPort(), fastReconnect()});
+    transport.setQueueLimit(500);
+    transport.open();
+    ASSERT_TRUE(waitForState(transport, State::Connected));
+    std::size_t accepted = 0;
+    QElapsedTimer clock;
+    clock.start();
+    while (transport.queuedFrames() < 100 && clock.elapsed() < 10000) {
+        accepted += transport.sendBatch(numberedFrames(100), 1);
+        QCoreApplication::processEvents();
+    }
+    ASSERT_GE(transport.queuedFrames(), 100u) << "the wire never became busy after " << accepted << " frames";
+    EXPECT_LE(transport.queuedFrames(), 500u);
+    EXPECT_EQ(transport.sendBatch(numberedFrames(600), 2), 500u - transport.queuedFrames());
+    EXPECT_EQ(transport.queuedFrames(), 500u) << "the queue is bounded";
+    const auto dropped = transport.counters().dropped;
+    const std::size_t withdrawn = transport.withdraw(1) + transport.withdraw(2);
+    EXPECT_EQ(withdrawn, 500u);
+    EXPECT_EQ(transport.queuedFrames(), 0u);
+    EXPECT_EQ(transport.counters().dropped, dropped + 500u);
+}
+
+// A reset ends the connection at once (what the peer did not get is thrown away) and connects again.
+TEST_F(TcpTransportTest, ResetConnectionReconnects) {
+    connectToStation();
+    EXPECT_TRUE(transport->resetConnection(QStringLiteral("test")));
+    EXPECT_EQ(transport->state(), State::Reconnecting);
+    EXPECT_FALSE(transport->send(numbered(1)));
+    ASSERT_TRUE(waitForState(*transport, State::Connected));
+    EXPECT_EQ(transport->counters().reconnects, 1u);
+    ASSERT_TRUE(station.waitForClient());
+    EXPECT_TRUE(transport->send(numbered(2)));
+    ASSERT_TRUE(station.waitForBytes(13));
+    EXPECT_EQ(station.received(), encodeFrames(std::vector{numbered(2)}));
 }
 
 TEST_F(TcpTransportTest, ReopenedTransportConnectsAgain) {

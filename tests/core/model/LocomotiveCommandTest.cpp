@@ -55,7 +55,7 @@ TEST(LocomotiveCommands, AnUnansweredCommandFailsWithTheReasonForItsControl) {
     ASSERT_TRUE(bench.start());
     QSignalSpy failed(&bench.railway, &Railway::locomotiveCommandFailed);
     QSignalSpy acknowledged(&bench.railway, &Railway::locomotiveCommandAcknowledged);
-    bench.stationEnd.close();
+    bench.deaf = true;
     bench.railway.setFunction(Br86, 0, true);
     ASSERT_TRUE(waitFor([&] { return failed.count() == 1; }));
     EXPECT_EQ(failed.first().at(0).toUInt(), Br86);

@@ -26,6 +26,32 @@ TEST_F(LocomotiveIntents, SetSpeedShowsTheSpeedTheStationConfirmed) {
     EXPECT_EQ(changed.last().at(0).value<QList<quint32>>(), QList<quint32>{Br86});
 }
 
+// Issue 11: once the connection is lost nothing is "reported"; a start-up whose speed query got no answer
+// leaves the speed not reported, even though load() says the railway's state is reported again.
+TEST_F(LocomotiveIntents, SpeedIsNotReportedAfterALossUntilTheStationAnswersAgain) {
+    bench.railway.setSpeed(Br86, 500);
+    ASSERT_TRUE(waitFor([&] { return br86().speed() == 500; }));
+    EXPECT_TRUE(br86().isSpeedReported());
+    QSignalSpy changed(&bench.railway, &Railway::locomotivesChanged);
+    bench.stationEnd.close();
+    EXPECT_FALSE(bench.railway.isStateReported());
+    EXPECT_FALSE(br86().isSpeedReported());
+    EXPECT_EQ(br86().speed(), 500) << "the last value stays, shown as not reported";
+    ASSERT_EQ(changed.count(), 1);
+    EXPECT_TRUE(changed.first().at(0).value<QList<quint32>>().contains(Br86));
+
+    bench.stationEnd.open();
+    bench.deaf = true; // connected again, but the start-up's queries get no answer
+    ASSERT_TRUE(bench.start());
+    EXPECT_TRUE(bench.railway.isStateReported());
+    EXPECT_FALSE(br86().isSpeedReported()) << "a failed re-read is not resurrected as reported";
+
+    bench.deaf = false;
+    ASSERT_TRUE(bench.start());
+    EXPECT_TRUE(br86().isSpeedReported());
+    EXPECT_EQ(br86().speed(), 500);
+}
+
 TEST_F(LocomotiveIntents, SpeedAboveTheSystemRangeIsSentAs1000) {
     bench.railway.setSpeed(Br86, 1023);
     ASSERT_TRUE(waitFor([&] { return br86().speed() == 1000; }));

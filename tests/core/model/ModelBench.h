@@ -182,7 +182,8 @@ public:
         QObject::connect(&stationEnd, &can::Transport::framesReceived, &station,
                          [this](const std::vector<cs2::CanFrame>& frames) {
                              for (const auto& frame : frames)
-                                 station.receive(frame);
+                                 if (!deaf)
+                                     station.receive(frame);
                          });
         stationEnd.open();
         appEnd.open();
@@ -200,6 +201,8 @@ public:
         return waitFor([&] { return loaded.count() == 1; });
     }
 
+    // The station stays connected but hears nothing any more (and so answers nothing).
+    bool deaf = false;
     can::LoopbackTransport stationEnd{QStringLiteral("station")};
     can::LoopbackTransport appEnd{QStringLiteral("app")};
     sim::SimulatedStation station;

@@ -11,7 +11,7 @@ TEST(Problems, ACommandTheStationDoesNotAnswerBecomesAProblem) {
     ModelBench bench;
     ASSERT_TRUE(bench.start());
     QSignalSpy problems(&bench.railway, &Railway::problem);
-    bench.stationEnd.close();
+    bench.deaf = true;
     bench.railway.setSpeed(Br86, 300);
     ASSERT_TRUE(waitFor([&] { return problems.count() == 1; }));
     const QString message = problems.first().at(0).toString();

@@ -6,6 +6,7 @@
 #include "cs2config/Document.h"
 
 #include <QElapsedTimer>
+#include <QTest>
 
 namespace stellwerk::model::test {
 namespace {
@@ -105,11 +106,35 @@ TEST_F(RouteRuns, AStepTheStationDoesNotConfirmStopsTheRoute) {
     QSignalSpy progressed(&bench.railway, &Railway::routeProgressed);
     ASSERT_TRUE(bench.railway.runRoute(1));
     ASSERT_TRUE(waitFor([&] { return progressed.count() == 1; }));
-    bench.stationEnd.close(); // the station goes away during the 0.3 s wait
+    bench.deaf = true; // the station stops hearing during the 0.3 s wait
     ASSERT_TRUE(waitFor([&] { return failed.count() == 1; }));
     EXPECT_TRUE(failed.first().at(1).toString().contains("step 2 of 3"))
         << failed.first().at(1).toString().toStdString();
     EXPECT_FALSE(bench.railway.route(1)->running());
+}
+
+// A lost connection ends the run at once: no step of it is sent when the station is back.
+TEST_F(RouteRuns, ALostConnectionCancelsTheRouteAndNothingOfItIsSentLater) {
+    QSignalSpy failed(&bench.railway, &Railway::routeFailed);
+    QSignalSpy progressed(&bench.railway, &Railway::routeProgressed);
+    ASSERT_TRUE(bench.railway.runRoute(1));
+    ASSERT_TRUE(waitFor([&] { return progressed.count() == 1; }));
+    bench.stationEnd.close(); // the station goes away during the 0.3 s wait
+    ASSERT_EQ(failed.count(), 1) << "at once, not after the next step timed out";
+    EXPECT_TRUE(failed.first().at(1).toString().startsWith("cancelled after 1 of 3 steps"))
+        << failed.first().at(1).toString().toStdString();
+    EXPECT_FALSE(bench.railway.route(1)->running());
+    EXPECT_FALSE(bench.railway.isStateReported());
+    int switchings = 0;
+    QObject::connect(&bench.station, &sim::SimulatedStation::frameReceived, &bench.railway,
+                     [&](const cs2::CanFrame& frame) {
+                         const auto message = cs2::decode(frame);
+                         switchings += message && std::holds_alternative<cs2::AccessorySwitch>(message->body);
+                     });
+    bench.stationEnd.open();
+    ASSERT_TRUE(waitFor([&] { return bench.appEnd.state() == can::Transport::State::Connected; }));
+    QTest::qWait(500); // longer than the route's remaining waits
+    EXPECT_EQ(switchings, 0) << "switchings arrived after the loss";
 }
 
 cs2config::RouteFile routes(const char* text) {
