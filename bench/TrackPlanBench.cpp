@@ -28,6 +28,7 @@
 #include <QTimer>
 #include <algorithm>
 #include <cstdio>
+#include <memory>
 #include <vector>
 
 using namespace stellwerk;
@@ -70,12 +71,13 @@ Figures timed(int runs, Draw draw) {
 
 void benchDrawing() {
     const model::TrackLayout layout = bigLayout();
-    const model::LayoutPage& page = layout.pages()[0];
+    const auto shared = std::make_shared<const model::LayoutPage>(layout.pages()[0]);
+    const model::LayoutPage& page = *shared;
     const auto lookOf = [&page](int tile) {
         const model::LayoutTile& t = page.tiles[std::size_t(tile)];
         return ui::TrackTileLook{t.type, t.category, t.rotation, tile % 2, tile % 3 == 0, false, t.text};
     };
-    ui::TrackPageView view(page, lookOf, [](int) { return QString(); });
+    ui::TrackPageView view(shared, lookOf, [](int) { return QString(); });
     view.resize(view.sizeHint()); // the default zoom: 40 px per tile
     QImage image(view.size(), QImage::Format_ARGB32_Premultiplied);
     std::printf("draw a page of 2000 elements at %d px per tile (%dx%d px), target < 16 ms:\n",
