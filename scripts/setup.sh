@@ -2,13 +2,14 @@
 # Prepares a Debian 12 (bookworm) or Ubuntu 24.04 machine for Stellwerk and builds it into build/:
 # installs the packages with apt-get when some are missing, then configures and builds with CMake.
 #
-#   scripts/setup.sh [--werror | --no-werror] [--preset NAME]
+#   scripts/setup.sh [--werror | --no-werror] [--preset NAME] [--target NAME]...
 #
 # --werror (or STELLWERK_WERROR=ON) builds Stellwerk's own code with warnings as errors, as CI does;
 # --no-werror (or STELLWERK_WERROR=OFF) switches that off again. Without either, the choice of the last
 # configure run in build/ is kept, so switching between run-tests.sh and run-app.sh does not rebuild.
 # --preset NAME configures and builds a preset of CMakePresets.json instead, into that preset's folder
 # (e.g. --preset sanitize: build-sanitize/, with AddressSanitizer and UndefinedBehaviorSanitizer).
+# --target NAME builds only that target (repeatable), e.g. stellwerk-tests-core for the tests of tests/core.
 set -euo pipefail
 
 readonly packages=(
@@ -28,6 +29,7 @@ fail() {
 
 werror="${STELLWERK_WERROR:-}"
 preset=""
+targets=()
 while [[ $# -gt 0 ]]; do
     case "$1" in
     --werror) werror=ON ;;
@@ -37,8 +39,13 @@ while [[ $# -gt 0 ]]; do
         preset=$2
         shift
         ;;
+    --target)
+        [[ $# -ge 2 ]] || fail "--target needs a target name"
+        targets+=(--target "$2")
+        shift
+        ;;
     -h | --help)
-        sed -n '2,11s/^# \{0,1\}//p' "$0"
+        sed -n '2,12s/^# \{0,1\}//p' "$0"
         exit 0
         ;;
     *) fail "unknown option '$1' (try --help)" ;;
@@ -97,9 +104,9 @@ configure() {
 build() {
     say "Building with $(nproc) parallel jobs"
     if [[ -n "$preset" ]]; then
-        cmake --build --preset "$preset" -j"$(nproc)"
+        cmake --build --preset "$preset" -j"$(nproc)" "${targets[@]}"
     else
-        cmake --build build -j"$(nproc)"
+        cmake --build build -j"$(nproc)" "${targets[@]}"
     fi
 }
 
