@@ -7,9 +7,8 @@
 #
 # Without an argument every test runs. `core` builds and runs only the tests of tests/core, tests/e2e and
 # tests/cli (what CI runs); any other argument is a ctest -R regex over the test names. The sanitizer
-# options are the environment of the "sanitize" test preset in CMakePresets.json; scripts/lsan.supp lists
-# the leaks of system libraries that leak detection skips. The last lines printed are ctest's summary, and
-# the exit code is ctest's.
+# options are the environment of the "sanitize" test preset in CMakePresets.json. The last lines printed
+# are ctest's summary, and the exit code is ctest's.
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -19,7 +18,7 @@ selection=()
 case "${1:-}" in
 '') ;;
 -h | --help)
-    sed -n '2,12s/^# \{0,1\}//p' "$0"
+    sed -n '2,11s/^# \{0,1\}//p' "$0"
     exit 0
     ;;
 core)
