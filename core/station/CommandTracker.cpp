@@ -120,8 +120,9 @@ void CommandTracker::expire() {
         Pending& pending = pending_.at(id);
         if (pending.attempts > pending.policy.retries) {
             const auto firstSent = pending.firstSent;
+            const bool telling = pending.policy.silenceMeansTrouble;
             finish(id, CommandResult::Status::TimedOut);
-            if (giveUpObserver_)
+            if (giveUpObserver_ && telling)
                 giveUpObserver_(firstSent);
             continue;
         }

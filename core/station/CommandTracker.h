@@ -24,6 +24,9 @@ namespace stellwerk::station {
 struct CommandPolicy {
     std::chrono::milliseconds timeout{250};
     int retries = 2; // sends after the first one
+    // False for a request that one device on the bus may leave unanswered (status data of another
+    // program on the bus): its silence says nothing about the connection to the station.
+    bool silenceMeansTrouble = true;
 };
 
 // How a tracked command ended.

@@ -32,8 +32,10 @@ void StatusDataReader::requestIndex() {
     cs2::StatusDataConfig request;
     request.device = active_->device.identity.uid;
     request.index = active_->index;
+    CommandPolicy policy = policy_;
+    policy.silenceMeansTrouble = false; // a device that has no status data stays silent
     tracker_.send(
-        cs2::Message{0, false, 0, request}, [this](const CommandResult& r) { indexAnswered(r); }, policy_);
+        cs2::Message{0, false, 0, request}, [this](const CommandResult& r) { indexAnswered(r); }, policy);
 }
 
 void StatusDataReader::indexAnswered(const CommandResult& result) {

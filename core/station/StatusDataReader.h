@@ -47,7 +47,7 @@ private:
     void finishJob();
 
     CommandTracker& tracker_;
-    CommandPolicy policy_{std::chrono::milliseconds(1000), 1};
+    CommandPolicy policy_{std::chrono::milliseconds(1000), 1, false};
     std::deque<Job> queue_;
     std::optional<Job> active_;
     StatusDataPackets packets_;
