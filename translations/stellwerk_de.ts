@@ -1994,6 +1994,20 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>Live from the station</source>
         <translation>Live von der Zentrale</translation>
     </message>
+    <message numerus="yes">
+        <source>The layout&apos;s files disagree in %n place(s):</source>
+        <translation>
+            <numerusform>Die Dateien des Gleisplans widersprechen sich an %n Stelle:</numerusform>
+            <numerusform>Die Dateien des Gleisplans widersprechen sich an %n Stellen:</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>... and %n more.</source>
+        <translation>
+            <numerusform>... und %n weitere.</numerusform>
+            <numerusform>... und %n weitere.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::TrafficStatus</name>

@@ -1991,6 +1991,20 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>Live from the station</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <source>The layout&apos;s files disagree in %n place(s):</source>
+        <translation>
+            <numerusform>The layout&apos;s files disagree in %n place:</numerusform>
+            <numerusform>The layout&apos;s files disagree in %n places:</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>... and %n more.</source>
+        <translation>
+            <numerusform>... and %n more.</numerusform>
+            <numerusform>... and %n more.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::TrafficStatus</name>
