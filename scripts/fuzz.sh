@@ -16,24 +16,11 @@ seconds="${1:-60}"
     exit 2
 }
 
+# shellcheck source=common.sh
+source "$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/common.sh"
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 readonly build=build-fuzz shared="${STELLWERK_SHARED_DIR:-../shared}"
 
-say() { printf '==> %s\n' "$*"; }
-fail() {
-    printf 'fuzz.sh: %s\n' "$*" >&2
-    exit 1
-}
-
-as_root() {
-    if [[ $(id -u) -eq 0 ]]; then
-        "$@"
-    elif command -v sudo >/dev/null; then
-        sudo "$@"
-    else
-        fail "need root rights to install packages, but this is not root and sudo is missing"
-    fi
-}
 
 apt_install() {
     command -v apt-get >/dev/null || fail "apt-get not found: install clang and its libFuzzer runtime by hand"

@@ -21,11 +21,8 @@ readonly packages=(
     xvfb xauth
 )
 
-say() { printf '==> %s\n' "$*"; }
-fail() {
-    printf 'setup.sh: %s\n' "$*" >&2
-    exit 1
-}
+# shellcheck source=common.sh
+source "$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/common.sh"
 
 werror="${STELLWERK_WERROR:-}"
 preset=""
@@ -55,16 +52,6 @@ done
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-# Runs a command as root: directly when we are root, else through sudo.
-as_root() {
-    if [[ $(id -u) -eq 0 ]]; then
-        "$@"
-    elif command -v sudo >/dev/null; then
-        sudo "$@"
-    else
-        fail "need root rights to install packages, but this is not root and sudo is missing"
-    fi
-}
 
 # Lists the packages that dpkg does not show as fully installed (removed ones keep a status entry too).
 missing_packages() {
