@@ -16,7 +16,7 @@ std::atomic<std::size_t> allocations{0};
 
 // A mix like a busy layout: throttles, functions, turnouts, feedback, status readings, pings,
 // config-stream data and an unknown command.
-std::vector<stellwerk::cs2::CanFrame> busTraffic() {
+std::vector<stellwerk::can::CanFrame> busTraffic() {
     const char* lines[] = {"00084711 6 00 00 C0 03 01 20",
                            "00094711 6 00 00 40 05 02 58",
                            "000C4711 6 00 00 40 05 03 01",
@@ -33,7 +33,7 @@ std::vector<stellwerk::cs2::CanFrame> busTraffic() {
                            "00104711 8 00 00 C0 03 00 1D 06 A0",
                            "00FE4711 3 01 02 03",
                            "00084711 5 00 00 C0 03 01"};
-    std::vector<stellwerk::cs2::CanFrame> frames;
+    std::vector<stellwerk::can::CanFrame> frames;
     for (int repeat = 0; repeat < 256; ++repeat)
         for (const char* line : lines)
             frames.push_back(stellwerk::cs2::parseFrame(line)->frame);
@@ -90,7 +90,7 @@ void BM_NetworkFormRoundTrip(benchmark::State& state) {
     std::size_t i = 0;
     for (auto _ : state) {
         const auto bytes = frames[i].toNetwork();
-        auto frame = stellwerk::cs2::CanFrame::fromNetwork(bytes);
+        auto frame = stellwerk::can::CanFrame::fromNetwork(bytes);
         benchmark::DoNotOptimize(frame);
         i = (i + 1) % frames.size();
     }

@@ -13,7 +13,7 @@
 #include "BusMonitorFilter.h"
 #include "BusMonitorModel.h"
 #include "BusMonitorPanel.h"
-#include "cs2/CanFrame.h"
+#include "cs2/Header.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -44,24 +44,24 @@ long residentKb() {
 }
 
 // A mix as on a busy layout: speeds for a dozen locos, S88 events, accessory switching.
-std::vector<cs2::CanFrame> floodFrames(std::size_t count) {
-    std::vector<cs2::CanFrame> frames(count);
+std::vector<can::CanFrame> floodFrames(std::size_t count) {
+    std::vector<can::CanFrame> frames(count);
     for (std::size_t i = 0; i < count; ++i) {
-        cs2::CanFrame& frame = frames[i];
+        can::CanFrame& frame = frames[i];
         const auto n = std::uint8_t(i);
         switch (i % 3) {
         case 0: // loco.speed
-            frame.id = cs2::CanFrame::makeId(0, 0x04, false, 0x4711);
+            frame.id = cs2::makeId(0, 0x04, false, 0x4711);
             frame.dlc = 6;
             frame.data = {0, 0, 0x40, std::uint8_t(n % 12), std::uint8_t(i >> 8 & 3), n};
             break;
         case 1: // feedback.s88-event
-            frame.id = cs2::CanFrame::makeId(0, 0x11, true, 0x0300);
+            frame.id = cs2::makeId(0, 0x11, true, 0x0300);
             frame.dlc = 8;
             frame.data = {0, 1, 0, std::uint8_t(n % 16), 0, 1, 0, 0x32};
             break;
         default: // accessory.switch
-            frame.id = cs2::CanFrame::makeId(0, 0x0B, false, 0x4711);
+            frame.id = cs2::makeId(0, 0x0B, false, 0x4711);
             frame.dlc = 6;
             frame.data = {0, 0, 0x30, std::uint8_t(n % 64), std::uint8_t(n & 1), 1};
         }
@@ -77,7 +77,7 @@ void releaseFreed() {
 }
 
 // Feeds `frames` into the model as a flood would: batches, and a flush now and then. Frames per second.
-double feed(ui::BusMonitorModel& model, const std::vector<cs2::CanFrame>& frames) {
+double feed(ui::BusMonitorModel& model, const std::vector<can::CanFrame>& frames) {
     QElapsedTimer clock;
     clock.start();
     std::size_t batches = 0;
@@ -96,7 +96,7 @@ void report(const char* what, double perSecond, long beforeKb, long afterKb) {
                 double(afterKb - beforeKb) / 1024.0);
 }
 
-void benchModel(const std::vector<cs2::CanFrame>& frames) {
+void benchModel(const std::vector<can::CanFrame>& frames) {
     const long start = residentKb();
     auto model = std::make_unique<ui::BusMonitorModel>();
     model->setHistoryLimit(int(frames.size()));
@@ -119,7 +119,7 @@ void benchModel(const std::vector<cs2::CanFrame>& frames) {
     (void)formatted;
 }
 
-void benchFiltered(const std::vector<cs2::CanFrame>& frames) {
+void benchFiltered(const std::vector<can::CanFrame>& frames) {
     releaseFreed();
     const long start = residentKb();
     auto model = std::make_unique<ui::BusMonitorModel>();
@@ -150,7 +150,7 @@ void benchFiltered(const std::vector<cs2::CanFrame>& frames) {
     scan("text alone");
 }
 
-void benchPanel(const std::vector<cs2::CanFrame>& frames) {
+void benchPanel(const std::vector<can::CanFrame>& frames) {
     releaseFreed();
     const long start = residentKb();
     ui::BusMonitorPanel panel;
@@ -188,7 +188,7 @@ int main(int argc, char* argv[]) {
         qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     const auto count = std::size_t(argc > 1 ? std::atoll(argv[1]) : 1000000);
-    const std::vector<cs2::CanFrame> frames = floodFrames(count);
+    const std::vector<can::CanFrame> frames = floodFrames(count);
     benchModel(frames);
     benchFiltered(frames);
     benchPanel(frames);

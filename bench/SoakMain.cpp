@@ -128,7 +128,7 @@ public:
         clock_.start();
         watchConnection();
         QObject::connect(&station_.station, &sim::SimulatedStation::frameReceived, this,
-                         [this](const cs2::CanFrame& frame) { stationReceived(frame); });
+                         [this](const can::CanFrame& frame) { stationReceived(frame); });
         QObject::connect(&drive_, &QTimer::timeout, this, [this] { driveLocos(); });
         QObject::connect(&restart_, &QTimer::timeout, this, [this] { killStation(); });
         QObject::connect(&sample_, &QTimer::timeout, this, [this] {
@@ -200,7 +200,7 @@ private:
         inFlight_.erase(it);
     }
 
-    void stationReceived(const cs2::CanFrame& frame) {
+    void stationReceived(const can::CanFrame& frame) {
         const auto message = cs2::decode(frame);
         const auto* speed = message ? std::get_if<cs2::LocoSpeed>(&message->body) : nullptr;
         if (!speed || message->response || !speed->speed)

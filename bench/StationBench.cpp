@@ -6,9 +6,9 @@
 // A plain harness printing figures: each measurement runs the Qt event loop, which Google Benchmark's
 // loop does not fit. Run: build/bench/stellwerk-station-bench [round-trip count] [frame count]
 
-#include "can/NetworkFraming.h"
-#include "can/TcpTransport.h"
-#include "can/UdpTransport.h"
+#include "transport/NetworkFraming.h"
+#include "transport/TcpTransport.h"
+#include "transport/UdpTransport.h"
 #include "cs2/Codec.h"
 #include "cs2config/ConfigStreamRequest.h"
 #include "sim/SimulatedStation.h"
@@ -90,12 +90,12 @@ struct Loopback {
         server = std::make_unique<sim::StationServer>(station, settings);
         listening = server->listen();
         if (wire == Wire::Tcp)
-            transport = std::make_unique<can::TcpTransport>(
-                can::TcpSettings{"127.0.0.1", server->tcpPort(), can::ReconnectTiming{}});
+            transport = std::make_unique<transport::TcpTransport>(
+                transport::TcpSettings{"127.0.0.1", server->tcpPort(), transport::ReconnectTiming{}});
         else
-            transport = std::make_unique<can::UdpTransport>(
-                can::UdpSettings{"127.0.0.1", server->udpPort(), appUdpPort,
-                                 QHostAddress(QHostAddress::LocalHost), can::ReconnectTiming{}});
+            transport = std::make_unique<transport::UdpTransport>(
+                transport::UdpSettings{"127.0.0.1", server->udpPort(), appUdpPort,
+                                 QHostAddress(QHostAddress::LocalHost), transport::ReconnectTiming{}});
         session = std::make_unique<station::StationSession>(*transport, sessionSettings());
         transport->open();
     }
@@ -106,12 +106,12 @@ struct Loopback {
 
     bool connected() {
         return listening &&
-               runUntil([&] { return transport->state() == can::Transport::State::Connected; }, 5000ms);
+               runUntil([&] { return transport->state() == transport::Transport::State::Connected; }, 5000ms);
     }
 
     sim::SimulatedStation station;
     std::unique_ptr<sim::StationServer> server;
-    std::unique_ptr<can::Transport> transport;
+    std::unique_ptr<transport::Transport> transport;
     std::unique_ptr<station::StationSession> session;
     bool listening = false;
 };
@@ -162,7 +162,7 @@ void benchRoundTrip(Loopback::Wire wire, const char* name, int count) {
 
 // What a busy bus carries: S88 events (contacts 1..1000 occupied/free) and speed answers, mixed.
 QByteArray busTraffic(std::size_t count) {
-    std::vector<cs2::CanFrame> frames;
+    std::vector<can::CanFrame> frames;
     frames.reserve(count);
     for (std::size_t i = 0; i < count; ++i) {
         const auto n = std::uint16_t(i % 1000);
@@ -175,7 +175,7 @@ QByteArray busTraffic(std::size_t count) {
             frames.push_back(cs2::encode({0, true, 0x2F11, cs2::LocoSpeed{cs2::LocId(0x4000 + n % 64), n}}));
         }
     }
-    return can::encodeFrames(frames);
+    return transport::encodeFrames(frames);
 }
 
 // A peer that accepts one connection and writes everything as fast as the kernel takes it, on its own
@@ -221,7 +221,7 @@ private:
 
 void benchThroughput(std::size_t count) {
     Blaster blaster(busTraffic(count));
-    can::TcpTransport transport(can::TcpSettings{"127.0.0.1", blaster.port(), can::ReconnectTiming{}});
+    transport::TcpTransport transport(transport::TcpSettings{"127.0.0.1", blaster.port(), transport::ReconnectTiming{}});
     station::StationSession session(transport, sessionSettings());
     std::size_t changes = 0;
     std::size_t batches = 0;

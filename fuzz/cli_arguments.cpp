@@ -35,7 +35,7 @@ void checkEncode(std::uint8_t choice, const std::vector<std::string>& lines) {
     const auto message = cs2::buildMessage(names[choice % names.size()], arguments);
     if (!message)
         return;
-    const cs2::CanFrame frame = cs2::encode(*message);
+    const can::CanFrame frame = cs2::encode(*message);
     const auto decoded = cs2::decode(frame);
     if (!decoded)
         return; // `encode` reports this as an error, with the decoder's reason

@@ -5,7 +5,7 @@
 //  - round trip: the rest is a file sent the way `stream encode` sends it (the key's format, or a
 //    broadcast). Invariant: the receiver gives back exactly that file (`stream decode` round-trips).
 #include "FuzzSupport.h"
-#include "can/NetworkFraming.h"
+#include "transport/NetworkFraming.h"
 #include "cs2config/ConfigStreamPayload.h"
 #include "cs2config/ConfigStreamReceiver.h"
 #include "cs2config/ConfigStreamSender.h"
@@ -27,11 +27,11 @@ void checkOutcomes(const std::vector<StreamOutcome>& outcomes) {
 }
 
 void feedFrames(std::span<const std::uint8_t> bytes) {
-    std::vector<cs2::CanFrame> frames;
-    can::decodeDatagram(bytes.first(bytes.size() / 13 * 13), frames);
+    std::vector<can::CanFrame> frames;
+    transport::decodeDatagram(bytes.first(bytes.size() / 13 * 13), frames);
     ConfigStreamReceiver receiver(StreamLimits{Limit});
     receiver.expectFile("loks", 0x4711);
-    for (const cs2::CanFrame& frame : frames)
+    for (const can::CanFrame& frame : frames)
         checkOutcomes(receiver.feed(frame));
     if (auto outcome = receiver.finish())
         checkOutcomes({*outcome});
@@ -74,7 +74,7 @@ void roundTrip(std::uint8_t choice, std::string_view contents) {
     if (!sending.broadcast)
         receiver.expectFile(sending.key, 0x4711);
     std::vector<StreamOutcome> outcomes;
-    for (const cs2::CanFrame& frame : streamFrames(contents, format, address))
+    for (const can::CanFrame& frame : streamFrames(contents, format, address))
         for (auto& outcome : receiver.feed(frame))
             outcomes.push_back(std::move(outcome));
     fuzz::check(outcomes.size() == 1, "a stream as sent does not give one outcome");

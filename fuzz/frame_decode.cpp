@@ -36,9 +36,9 @@ std::string argumentText(const Field& field) {
 }
 
 void checkRebuild(const CanFrame& frame, const Message& message) {
-    std::vector<KeyValue> arguments{{"prio", std::to_string(frame.prio())},
-                                    {"response", frame.isResponse() ? "true" : "false"},
-                                    {"hash", std::to_string(frame.hash())}};
+    std::vector<KeyValue> arguments{{"prio", std::to_string(cs2::prio(frame))},
+                                    {"response", cs2::isResponse(frame) ? "true" : "false"},
+                                    {"hash", std::to_string(cs2::hash(frame))}};
     for (const Field& field : describe(message))
         if (!field.derived)
             arguments.emplace_back(std::string(field.key), argumentText(field));

@@ -3,8 +3,8 @@
 // (decodeDatagram), whatever the segmentation; what waits is the incomplete rest; every frame it
 // hands on is well formed and writes back to the bytes it came from.
 #include "FuzzSupport.h"
-#include "can/FrameAssembler.h"
-#include "can/NetworkFraming.h"
+#include "transport/FrameAssembler.h"
+#include "transport/NetworkFraming.h"
 #include "cs2/FrameText.h"
 
 #include <vector>
@@ -19,8 +19,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         cuts.push_back(cut);
     const auto stream = input.rest();
 
-    can::FrameAssembler assembler;
-    std::vector<cs2::CanFrame> assembled;
+    transport::FrameAssembler assembler;
+    std::vector<can::CanFrame> assembled;
     std::size_t malformed = 0;
     std::size_t at = 0;
     for (std::size_t i = 0; at < stream.size(); ++i) {
@@ -30,9 +30,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         at += length;
     }
 
-    const std::size_t whole = stream.size() / cs2::CanFrame::NetworkSize * cs2::CanFrame::NetworkSize;
-    std::vector<cs2::CanFrame> direct;
-    const auto content = can::decodeDatagram(stream.first(whole), direct);
+    const std::size_t whole = stream.size() / can::CanFrame::NetworkSize * can::CanFrame::NetworkSize;
+    std::vector<can::CanFrame> direct;
+    const auto content = transport::decodeDatagram(stream.first(whole), direct);
     fuzz::check(assembler.pendingBytes() == stream.size() - whole, "the assembler keeps the wrong rest");
     fuzz::check(assembled.size() == direct.size() && malformed == content.malformed,
                 "segmentation changes which frames arrive");
@@ -42,9 +42,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         fuzz::check(assembled[i].isWellFormed(), "a malformed frame was handed on",
                     cs2::formatDocument(assembled[i]));
     }
-    const QByteArray again = can::encodeFrames(assembled);
-    std::vector<cs2::CanFrame> reread;
-    can::decodeDatagram(can::asBytes(again), reread);
+    const QByteArray again = transport::encodeFrames(assembled);
+    std::vector<can::CanFrame> reread;
+    transport::decodeDatagram(transport::asBytes(again), reread);
     fuzz::check(reread.size() == assembled.size(), "frames written back do not read back");
     for (std::size_t i = 0; i < reread.size(); ++i)
         fuzz::check(reread[i] == assembled[i], "a frame written back reads differently");

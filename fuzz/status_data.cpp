@@ -4,7 +4,7 @@
 // Invariant: every text read from a device is printable UTF-8 (no terminal escapes reach the CLI or the
 // UI) and the article number is printable ASCII.
 #include "FuzzSupport.h"
-#include "can/NetworkFraming.h"
+#include "transport/NetworkFraming.h"
 #include "cs2/Codec.h"
 #include "station/DeviceDescription.h"
 #include "station/StatusDataPackets.h"
@@ -46,16 +46,16 @@ void checkConfig(const ConfigChannel& config) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size > 64 * 13)
         return -1;
-    std::vector<cs2::CanFrame> frames;
-    can::decodeDatagram({data, size / 13 * 13}, frames);
+    std::vector<can::CanFrame> frames;
+    transport::decodeDatagram({data, size / 13 * 13}, frames);
     StatusDataPackets packets;
-    for (const cs2::CanFrame& frame : frames) {
+    for (const can::CanFrame& frame : frames) {
         const auto message = cs2::decode(frame);
         if (!message)
             continue;
         if (const auto* status = std::get_if<cs2::StatusDataConfig>(&message->body))
             if (status->form == cs2::StatusDataConfig::Form::Packet)
-                packets.add(frame.hash(), status->packet);
+                packets.add(cs2::hash(frame), status->packet);
     }
     const std::vector<std::uint8_t> bytes = packets.assemble();
     fuzz::check(bytes.size() <= frames.size() * 8, "more bytes assembled than packets carried");

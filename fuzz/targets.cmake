@@ -14,8 +14,8 @@ file(GLOB STELLWERK_FUZZED_SOURCES CONFIGURE_DEPENDS
     ${STELLWERK_ROOT}/core/cs2/*.cpp
     ${STELLWERK_ROOT}/core/cs2config/*.cpp)
 list(APPEND STELLWERK_FUZZED_SOURCES
-    ${STELLWERK_ROOT}/core/can/FrameAssembler.cpp
-    ${STELLWERK_ROOT}/core/can/NetworkFraming.cpp
+    ${STELLWERK_ROOT}/core/transport/FrameAssembler.cpp
+    ${STELLWERK_ROOT}/core/transport/NetworkFraming.cpp
     ${STELLWERK_ROOT}/core/station/DeviceDescription.cpp
     ${STELLWERK_ROOT}/core/station/StatusDataPackets.cpp
     ${STELLWERK_ROOT}/app/cli/DecodeCommand.cpp

@@ -43,7 +43,7 @@ void BusMonitorLogWriter::close() {
         m_file.close();
 }
 
-bool BusMonitorLogWriter::write(std::span<const cs2::CanFrame> frames, const QDateTime& time, bool outgoing) {
+bool BusMonitorLogWriter::write(std::span<const can::CanFrame> frames, const QDateTime& time, bool outgoing) {
     if (!m_file.isOpen())
         return false;
     const qint64 ms = time.toMSecsSinceEpoch();
@@ -53,7 +53,7 @@ bool BusMonitorLogWriter::write(std::span<const cs2::CanFrame> frames, const QDa
     const QByteArray mark = outgoing ? QByteArrayLiteral(" T\n") : QByteArrayLiteral(" R\n");
     QByteArray lines;
     lines.reserve(qsizetype(frames.size()) * 48);
-    for (const cs2::CanFrame& frame : frames)
+    for (const can::CanFrame& frame : frames)
         lines += prefix + QByteArray::fromStdString(cs2::formatCandump(frame)) + mark;
     // Handed to the system with each batch: a crash of Stellwerk keeps every frame recorded so far.
     return m_file.write(lines) == lines.size() && m_file.flush();

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cs2/CanFrame.h"
+#include "can/CanFrame.h"
 
 #include <QDateTime>
 #include <QFile>
@@ -27,7 +27,7 @@ public:
     QString fileName() const { return m_file.fileName(); }
     // Appends one line per frame, all with the time `time` and the direction mark, and hands them to the
     // system at once (a crash keeps them); returns false when the disk refused them.
-    bool write(std::span<const cs2::CanFrame> frames, const QDateTime& time, bool outgoing);
+    bool write(std::span<const can::CanFrame> frames, const QDateTime& time, bool outgoing);
 
 private:
     QFile m_file;
@@ -36,7 +36,7 @@ private:
 // One line of a log that was not blank and not a # comment.
 struct BusMonitorLogLine {
     int number = 0;                     // 1-based
-    std::optional<cs2::CanFrame> frame; // empty when the line held no frame
+    std::optional<can::CanFrame> frame; // empty when the line held no frame
     std::optional<qint64> timeUs;       // the "(seconds.micros)" stamp as microseconds, if the line had one
     bool sent = false;                  // the line ends with the "T" mark (transmitted)
     QString problem;                    // why the line held no frame

@@ -58,8 +58,8 @@ QColor directionColour(BusMonitorModel::Direction direction) {
     return sent ? QColor::fromHsv(24, 255, 180) : QColor::fromHsv(210, 255, 160);
 }
 
-cs2::CanFrame frameOf(std::uint32_t id, std::uint8_t dlc, const std::array<std::uint8_t, 8>& data) {
-    cs2::CanFrame frame;
+can::CanFrame frameOf(std::uint32_t id, std::uint8_t dlc, const std::array<std::uint8_t, 8>& data) {
+    can::CanFrame frame;
     frame.id = id;
     frame.dlc = dlc;
     frame.data = data;
@@ -75,21 +75,21 @@ BusMonitorModel::BusMonitorModel(QObject* parent)
     connect(m_flushTimer, &QTimer::timeout, this, &BusMonitorModel::flush);
 }
 
-BusMonitorModel::Record BusMonitorModel::record(const cs2::CanFrame& frame, Direction direction,
+BusMonitorModel::Record BusMonitorModel::record(const can::CanFrame& frame, Direction direction,
                                                 qint64 timeMs) {
     return Record{timeMs, frame.id, frame.dlc, direction, frame.data};
 }
 
-void BusMonitorModel::addFrames(std::span<const cs2::CanFrame> frames, Direction direction) {
+void BusMonitorModel::addFrames(std::span<const can::CanFrame> frames, Direction direction) {
     addFrames(frames, direction, QDateTime::currentDateTime());
 }
 
-void BusMonitorModel::addFrames(std::span<const cs2::CanFrame> frames, Direction direction,
+void BusMonitorModel::addFrames(std::span<const can::CanFrame> frames, Direction direction,
                                 const QDateTime& time) {
     if (frames.empty())
         return;
     const qint64 timeMs = time.toMSecsSinceEpoch();
-    for (const cs2::CanFrame& frame : frames)
+    for (const can::CanFrame& frame : frames)
         m_queued.push_back(record(frame, direction, timeMs));
     // Never hold more than the table could show: the oldest queued frames would be dropped anyway.
     const auto limit = std::size_t(m_historyLimit);
@@ -163,7 +163,7 @@ void BusMonitorModel::clear() {
     emit countsChanged();
 }
 
-cs2::CanFrame BusMonitorModel::frameAt(int row) const {
+can::CanFrame BusMonitorModel::frameAt(int row) const {
     const Record& r = m_rows.at(std::size_t(row));
     return frameOf(r.id, r.dlc, r.data);
 }

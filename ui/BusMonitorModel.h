@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cs2/CanFrame.h"
+#include "can/CanFrame.h"
 
 #include <QAbstractTableModel>
 #include <QDateTime>
@@ -43,8 +43,8 @@ public:
     explicit BusMonitorModel(QObject* parent = nullptr);
 
     // Queues frames seen now; they appear at the next flush (at most FlushIntervalMs later).
-    void addFrames(std::span<const cs2::CanFrame> frames, Direction direction);
-    void addFrames(std::span<const cs2::CanFrame> frames, Direction direction, const QDateTime& time);
+    void addFrames(std::span<const can::CanFrame> frames, Direction direction);
+    void addFrames(std::span<const can::CanFrame> frames, Direction direction, const QDateTime& time);
     // Moves the queued frames into the table now: one row insertion (and at most one removal of the
     // oldest rows) per call. Nothing moves while paused.
     void flush();
@@ -63,7 +63,7 @@ public:
     // Forgets all rows, queued frames and counters.
     void clear();
 
-    cs2::CanFrame frameAt(int row) const;
+    can::CanFrame frameAt(int row) const;
     QDateTime timeAt(int row) const;
     Direction directionAt(int row) const;
     // The Loc-ID field of the frame in `row`, read by the core's decoder; nullopt when it has none.
@@ -96,7 +96,7 @@ private:
         std::array<std::uint8_t, 8> data;
     };
 
-    static Record record(const cs2::CanFrame& frame, Direction direction, qint64 timeMs);
+    static Record record(const can::CanFrame& frame, Direction direction, qint64 timeMs);
     void dropOldest(std::size_t count);
     QVariant display(const Record& record, int column) const;
 

@@ -220,7 +220,7 @@ void BusMonitorPanel::setConnection(connection::StationConnection* station) {
 }
 
 // Live frames go to the recording always, and to the table unless a log is shown instead.
-void BusMonitorPanel::receive(const std::vector<cs2::CanFrame>& frames, bool outgoing) {
+void BusMonitorPanel::receive(const std::vector<can::CanFrame>& frames, bool outgoing) {
     const QDateTime now = QDateTime::currentDateTime();
     if (m_replay->state() == BusMonitorReplay::State::Idle)
         m_model->addFrames(
@@ -233,7 +233,7 @@ void BusMonitorPanel::receive(const std::vector<cs2::CanFrame>& frames, bool out
     }
 }
 
-void BusMonitorPanel::replayed(const std::vector<cs2::CanFrame>& frames, const QDateTime& time,
+void BusMonitorPanel::replayed(const std::vector<can::CanFrame>& frames, const QDateTime& time,
                                bool outgoing) {
     m_model->addFrames(
         frames, outgoing ? BusMonitorModel::Direction::Sent : BusMonitorModel::Direction::Received, time);

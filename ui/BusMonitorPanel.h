@@ -16,7 +16,7 @@ class QSpinBox;
 class QTableView;
 class QTimer;
 
-namespace stellwerk::cs2 {
+namespace stellwerk::can {
 struct CanFrame;
 }
 namespace stellwerk::connection {
@@ -76,8 +76,8 @@ private:
     QLayout* createFileBar();
     QWidget* createReplayBar();
     void createTable();
-    void receive(const std::vector<cs2::CanFrame>& frames, bool outgoing);
-    void replayed(const std::vector<cs2::CanFrame>& frames, const QDateTime& time, bool outgoing);
+    void receive(const std::vector<can::CanFrame>& frames, bool outgoing);
+    void replayed(const std::vector<can::CanFrame>& frames, const QDateTime& time, bool outgoing);
     void lineSkipped(int line, const QString& reason);
     void replayStateChanged();
     void chooseRecording(bool start);

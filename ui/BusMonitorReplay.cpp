@@ -129,7 +129,7 @@ void BusMonitorReplay::playDue() {
             m_anchorLogUs = std::max(m_anchorLogUs, due);
         const QDateTime time =
             m_haveLogTime ? QDateTime::fromMSecsSinceEpoch((due + 500) / 1000) : QDateTime::currentDateTime();
-        std::vector<cs2::CanFrame> batch{*m_pending->frame};
+        std::vector<can::CanFrame> batch{*m_pending->frame};
         const bool outgoing = m_pending->sent;
         m_lastLogUs = due;
         m_playedEnd = m_pendingEnd;

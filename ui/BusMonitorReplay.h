@@ -1,7 +1,7 @@
 #pragma once
 
 #include "BusMonitorLog.h"
-#include "cs2/CanFrame.h"
+#include "can/CanFrame.h"
 
 #include <QDateTime>
 #include <QElapsedTimer>
@@ -53,7 +53,7 @@ public:
 signals:
     // Frames of the log that are due now, all stamped `time` in the log (a line without a stamp has the
     // time of the stamped line before it, or now when there is none), and all sent (`outgoing`) or not.
-    void framesReplayed(const std::vector<stellwerk::cs2::CanFrame>& frames, const QDateTime& time,
+    void framesReplayed(const std::vector<stellwerk::can::CanFrame>& frames, const QDateTime& time,
                         bool outgoing);
     // A line that held no frame was skipped; `reason` says why.
     void lineSkipped(int line, const QString& reason);

@@ -2,8 +2,8 @@
 
 #include "ConnectionStatus.h"
 #include "StationUrlSettings.h"
-#include "can/CanBusTransport.h"
-#include "can/TransportAddress.h"
+#include "transport/CanBusTransport.h"
+#include "transport/TransportAddress.h"
 
 #include <QButtonGroup>
 #include <QComboBox>
@@ -25,7 +25,7 @@ namespace {
 QString describeUrl(const QString& url) {
     if (url.isEmpty())
         return ConnectionStatus::describe(connection::StationEndpoint::simulated());
-    const auto parsed = can::parseTransportUrl(url);
+    const auto parsed = transport::parseTransportUrl(url);
     const auto endpoint =
         parsed ? connection::StationEndpoint::of(*parsed) : connection::StationEndpoint::unusable(url);
     return ConnectionStatus::describe(endpoint);
@@ -35,13 +35,13 @@ QString describeUrl(const QString& url) {
 // there is no host yet.
 // (`typename`, not `class`: lupdate would read the rest of the file as that class's texts.)
 template <typename Kind>
-QString withHost(const cs2::Expected<can::TransportSettings, QString>& current, const QString& host,
+QString withHost(const cs2::Expected<transport::TransportSettings, QString>& current, const QString& host,
                  const QString& scheme) {
     if (host.isEmpty())
         return scheme;
     Kind settings = current && std::holds_alternative<Kind>(*current) ? std::get<Kind>(*current) : Kind{};
     settings.host = host;
-    return can::transportUrl(settings);
+    return transport::transportUrl(settings);
 }
 
 QRadioButton* radio(QWidget* parent, const char* name) {
@@ -170,7 +170,7 @@ void ConnectDialog::refreshInterfaces() {
     const QString typed = m_interface->currentText();
     const bool wasSyncing = std::exchange(m_syncing, true);
     m_interface->clear();
-    for (const can::CanBusInterface& found : can::CanBusTransport::availableInterfaces()) {
+    for (const transport::CanBusInterface& found : transport::CanBusTransport::availableInterfaces()) {
         const QString name = found.plugin + QLatin1Char('/') + found.name;
         m_interface->addItem(name, name);
         if (!found.description.isEmpty())
@@ -245,16 +245,16 @@ void ConnectDialog::composeUrl() {
         check();
         return;
     }
-    const auto current = can::parseTransportUrl(m_url->text().trimmed());
+    const auto current = transport::parseTransportUrl(m_url->text().trimmed());
     QString url;
     switch (kind()) {
     case Kind::Simulated:
         break;
     case Kind::Udp:
-        url = withHost<can::UdpSettings>(current, m_host->text().trimmed(), QStringLiteral("udp://"));
+        url = withHost<transport::UdpSettings>(current, m_host->text().trimmed(), QStringLiteral("udp://"));
         break;
     case Kind::Tcp:
-        url = withHost<can::TcpSettings>(current, m_host->text().trimmed(), QStringLiteral("tcp://"));
+        url = withHost<transport::TcpSettings>(current, m_host->text().trimmed(), QStringLiteral("tcp://"));
         break;
     case Kind::CanBus:
         url = QStringLiteral("can://") + m_interface->currentText().trimmed();
@@ -270,17 +270,17 @@ void ConnectDialog::composeUrl() {
 void ConnectDialog::readUrl() {
     if (m_syncing)
         return;
-    const auto parsed = can::parseTransportUrl(m_url->text().trimmed());
+    const auto parsed = transport::parseTransportUrl(m_url->text().trimmed());
     if (!parsed)
         return;
     const bool wasSyncing = std::exchange(m_syncing, true);
-    if (const auto* udp = std::get_if<can::UdpSettings>(&*parsed)) {
+    if (const auto* udp = std::get_if<transport::UdpSettings>(&*parsed)) {
         m_udp->setChecked(true);
         m_host->setText(udp->host);
-    } else if (const auto* tcp = std::get_if<can::TcpSettings>(&*parsed)) {
+    } else if (const auto* tcp = std::get_if<transport::TcpSettings>(&*parsed)) {
         m_tcp->setChecked(true);
         m_host->setText(tcp->host);
-    } else if (const auto* bus = std::get_if<can::CanBusSettings>(&*parsed)) {
+    } else if (const auto* bus = std::get_if<transport::CanBusSettings>(&*parsed)) {
         m_can->setChecked(true);
         m_interface->setCurrentText(bus->plugin + QLatin1Char('/') + bus->interfaceName);
     }
@@ -301,7 +301,7 @@ void ConnectDialog::check() {
         const QString text = m_url->text().trimmed();
         if (text.isEmpty())
             error = tr("Enter the station's address, or use the simulated station.");
-        else if (const auto parsed = can::parseTransportUrl(text); !parsed)
+        else if (const auto parsed = transport::parseTransportUrl(text); !parsed)
             error = tr("This address cannot be used: %1").arg(parsed.error());
     }
     m_error->setText(error);

@@ -122,7 +122,7 @@ void FrameDecoderPanel::refresh() {
         const cs2::FrameReport report(parsed->frame);
         const QString frame = QString::fromStdString(report.frameText());
         QString message = QString::fromStdString(std::string(report.name()));
-        if (parsed->frame.isResponse())
+        if (cs2::isResponse(parsed->frame))
             message = tr("%1 (response)").arg(message);
         const QString details = QString::fromStdString(report.detailText());
         if (!report.ok()) {

@@ -42,8 +42,8 @@ void TrafficStatus::changeEvent(QEvent* event) {
 }
 
 void TrafficStatus::refresh() {
-    const can::TransportCounters counters =
-        m_connection ? m_connection->transportCounters() : can::TransportCounters{};
+    const transport::TransportCounters counters =
+        m_connection ? m_connection->transportCounters() : transport::TransportCounters{};
     const QLocale locale;
     m_text->setText(tr("Frames in %1 · out %2")
                         .arg(locale.toString(qulonglong(counters.framesIn)),

@@ -50,7 +50,7 @@ int runEncode(const std::vector<std::string>& arguments, std::ostream& out, std:
         err << "stellwerk-cli encode: " << message.error() << '\n';
         return 1;
     }
-    const cs2::CanFrame frame = cs2::encode(*message);
+    const can::CanFrame frame = cs2::encode(*message);
     const cs2::FrameReport check(frame);
     if (!check.ok()) {
         err << "stellwerk-cli encode: " << arguments[0] << ": " << check.result().error().message() << '\n';

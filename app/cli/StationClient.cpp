@@ -1,6 +1,6 @@
 #include "StationClient.h"
 
-#include "can/TransportFactory.h"
+#include "transport/TransportFactory.h"
 
 #include <QTimer>
 #include <atomic>
@@ -34,7 +34,7 @@ StationClient::~StationClient() {
 }
 
 int StationClient::connectTo(const QString& url) {
-    auto created = can::createTransport(url);
+    auto created = transport::createTransport(url);
     if (!created) {
         err_ << "stellwerk-cli: " << created.error().toStdString() << '\n';
         return UsageError;
@@ -45,11 +45,11 @@ int StationClient::connectTo(const QString& url) {
     session_ = std::make_unique<station::StationSession>(*transport_, settings);
     // A lost connection is reported twice: the reason, then the same with the transport's retry plan,
     // which the command line does not follow. Only the reason is shown.
-    connect(transport_.get(), &can::Transport::connectionFailed, this, [this](const QString& reason) {
+    connect(transport_.get(), &transport::Transport::connectionFailed, this, [this](const QString& reason) {
         retryNoteFollows_ = true;
         report(reason);
     });
-    connect(transport_.get(), &can::Transport::problem, this, [this](const QString& message) {
+    connect(transport_.get(), &transport::Transport::problem, this, [this](const QString& message) {
         if (!std::exchange(retryNoteFollows_, false))
             report(message);
     });
@@ -57,7 +57,7 @@ int StationClient::connectTo(const QString& url) {
 }
 
 void StationClient::report(const QString& message) {
-    if (transport_->state() == can::Transport::State::Connected || status_)
+    if (transport_->state() == transport::Transport::State::Connected || status_)
         err_ << "stellwerk-cli: " << message.toStdString() << '\n';
     else
         problem_ = message;
@@ -73,14 +73,14 @@ int StationClient::waitForConnection() {
                            .arg(settings_.connectTimeout.count());
         finish(CannotOpen);
     });
-    const auto watch = connect(transport_.get(), &can::Transport::stateChanged, this, [this](auto state) {
-        if (state == can::Transport::State::Connected)
+    const auto watch = connect(transport_.get(), &transport::Transport::stateChanged, this, [this](auto state) {
+        if (state == transport::Transport::State::Connected)
             finish(Acknowledged);
-        else if (state == can::Transport::State::Reconnecting || !problem_.isEmpty())
+        else if (state == transport::Transport::State::Reconnecting || !problem_.isEmpty())
             finish(CannotOpen);
     });
     transport_->open();
-    if (transport_->state() == can::Transport::State::Connected)
+    if (transport_->state() == transport::Transport::State::Connected)
         status_ = Acknowledged;
     else if (!problem_.isEmpty())
         status_ = CannotOpen;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "can/Transport.h"
+#include "transport/Transport.h"
 #include "cs2/Expected.h"
 #include "station/StationSession.h"
 
@@ -54,7 +54,7 @@ public:
     void finishOnInterrupt(int status);
 
     station::StationSession& session() { return *session_; }
-    can::Transport& transport() { return *transport_; }
+    transport::Transport& transport() { return *transport_; }
     const ClientSettings& settings() const { return settings_; }
 
 private:
@@ -64,7 +64,7 @@ private:
 
     std::ostream& err_;
     ClientSettings settings_;
-    std::unique_ptr<can::Transport> transport_;
+    std::unique_ptr<transport::Transport> transport_;
     std::unique_ptr<station::StationSession> session_;
     QEventLoop loop_;
     std::optional<int> status_;

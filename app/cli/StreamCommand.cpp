@@ -82,15 +82,15 @@ public:
     bool allGood() const { return allGood_; }
 
 private:
-    void frame(const cs2::CanFrame& frame) {
-        if (frame.command() == std::uint8_t(cs2::Command::ConfigDataRequest)) {
+    void frame(const can::CanFrame& frame) {
+        if (cs2::command(frame) == std::uint8_t(cs2::Command::ConfigDataRequest)) {
             if (const auto message = cs2::decode(frame))
                 if (const auto request = requests_.feed(*message))
                     receivers_[request->hash].expectFile(request->request.key(), request->hash);
             return;
         }
-        if (frame.command() == std::uint8_t(cs2::Command::ConfigDataStream))
-            for (const auto& outcome : receivers_[frame.hash()].feed(frame))
+        if (cs2::command(frame) == std::uint8_t(cs2::Command::ConfigDataStream))
+            for (const auto& outcome : receivers_[cs2::hash(frame)].feed(frame))
                 report(outcome);
     }
 
@@ -250,7 +250,7 @@ std::optional<EncodeOptions> parseEncodeOptions(const std::vector<std::string>& 
     return options;
 }
 
-std::vector<cs2::CanFrame> framesFor(const EncodeOptions& options, const cs2config::ConfigRequest& request,
+std::vector<can::CanFrame> framesFor(const EncodeOptions& options, const cs2config::ConfigRequest& request,
                                      const std::string& contents) {
     if (!options.broadcast)
         return cs2config::answerFrames(request, contents, options.hash);

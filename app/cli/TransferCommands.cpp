@@ -111,9 +111,9 @@ ParsedJob monitor(const Arguments& a, std::ostream& out) {
     auto start = [json, count, &out](StationClient& client) {
         client.finishOnInterrupt(Acknowledged);
         auto seen = std::make_shared<std::uint64_t>(0);
-        QObject::connect(&client.transport(), &can::Transport::framesReceived, &client,
-                         [json, count, seen, &out, &client](const std::vector<cs2::CanFrame>& frames) {
-                             for (const cs2::CanFrame& frame : frames) {
+        QObject::connect(&client.transport(), &transport::Transport::framesReceived, &client,
+                         [json, count, seen, &out, &client](const std::vector<can::CanFrame>& frames) {
+                             for (const can::CanFrame& frame : frames) {
                                  if (count && *seen >= *count)
                                      return;
                                  const cs2::FrameReport report(frame);

@@ -85,7 +85,7 @@ std::optional<QString> readCan(const Parser& p, SimOptions& options) {
     const qsizetype colon = text.indexOf(':');
     if (colon <= 0 || colon == text.size() - 1)
         return "--can: '" + text + "' is not plugin:interface (e.g. socketcan:can0)";
-    options.server.canBus = can::CanBusSettings{text.left(colon), text.mid(colon + 1), std::nullopt, {}};
+    options.server.canBus = transport::CanBusSettings{text.left(colon), text.mid(colon + 1), std::nullopt, {}};
     return std::nullopt;
 }
 

@@ -1,9 +1,9 @@
 #include "connection/StationConnection.h"
 
-#include "can/TransportAddress.h"
-#include "can/TransportFactory.h"
 #include "connection/EmbeddedStation.h"
 #include "cs2config/ConfigStreamKeys.h"
+#include "transport/TransportAddress.h"
+#include "transport/TransportFactory.h"
 
 namespace stellwerk::connection {
 
@@ -28,7 +28,7 @@ public:
     }
 
     std::unique_ptr<EmbeddedStation> embedded;
-    std::unique_ptr<can::Transport> transport;
+    std::unique_ptr<transport::Transport> transport;
     std::unique_ptr<station::StationSession> session;
     std::unique_ptr<station::StartupSequence> startup;
 };
@@ -94,21 +94,21 @@ void StationConnection::connectTo(const QString& url) {
         if (!embedded->start())
             return fail(
                 QStringLiteral("the simulated station cannot start: %1").arg(embedded->errorString()));
-        can::TcpSettings tcp;
+        transport::TcpSettings tcp;
         tcp.host = QStringLiteral("127.0.0.1");
         tcp.port = embedded->tcpPort();
         link_ = std::make_unique<StationLink>();
         link_->embedded = std::move(embedded);
-        return open(can::createTransport(can::TcpSettings(tcp)));
+        return open(transport::createTransport(transport::TcpSettings(tcp)));
     }
-    const auto settings = can::parseTransportUrl(address);
+    const auto settings = transport::parseTransportUrl(address);
     if (!settings) {
         endpoint_ = StationEndpoint::unusable(address);
         return fail(settings.error());
     }
     endpoint_ = StationEndpoint::of(settings.value());
     link_ = std::make_unique<StationLink>();
-    open(can::createTransport(settings.value()));
+    open(transport::createTransport(settings.value()));
 }
 
 // Ends the connection; its parts go at the next turn of the event loop, since this may be called from
@@ -134,15 +134,15 @@ std::uint16_t StationConnection::embeddedPort() const {
     return link_ && link_->embedded ? link_->embedded->tcpPort() : 0;
 }
 
-can::TransportCounters StationConnection::transportCounters() const {
-    return link_ && link_->transport ? link_->transport->counters() : can::TransportCounters{};
+transport::TransportCounters StationConnection::transportCounters() const {
+    return link_ && link_->transport ? link_->transport->counters() : transport::TransportCounters{};
 }
 
 station::StationSession* StationConnection::session() const {
     return link_ ? link_->session.get() : nullptr;
 }
 
-void StationConnection::open(std::unique_ptr<can::Transport> transport) {
+void StationConnection::open(std::unique_ptr<transport::Transport> transport) {
     link_->transport = std::move(transport);
     link_->session = std::make_unique<station::StationSession>(*link_->transport, settings_.session);
     watchTransport();
@@ -158,20 +158,20 @@ void StationConnection::fail(const QString& reason) {
 }
 
 void StationConnection::watchTransport() {
-    connect(link_->transport.get(), &can::Transport::stateChanged, this,
+    connect(link_->transport.get(), &transport::Transport::stateChanged, this,
             &StationConnection::transportStateChanged);
-    connect(link_->transport.get(), &can::Transport::problem, this, &StationConnection::report);
-    connect(link_->transport.get(), &can::Transport::framesReceived, this,
-            [this](const std::vector<cs2::CanFrame>& frames) { emit framesSeen(frames, false); });
-    connect(link_->transport.get(), &can::Transport::framesSent, this,
-            [this](const std::vector<cs2::CanFrame>& frames) { emit framesSeen(frames, true); });
+    connect(link_->transport.get(), &transport::Transport::problem, this, &StationConnection::report);
+    connect(link_->transport.get(), &transport::Transport::framesReceived, this,
+            [this](const std::vector<can::CanFrame>& frames) { emit framesSeen(frames, false); });
+    connect(link_->transport.get(), &transport::Transport::framesSent, this,
+            [this](const std::vector<can::CanFrame>& frames) { emit framesSeen(frames, true); });
     station::Liveness& liveness = link_->session->liveness();
     connect(&liveness, &station::Liveness::stationSilent, this, &StationConnection::stationSilent);
     connect(&liveness, &station::Liveness::stationRecovered, this, &StationConnection::stationRecovered);
 }
 
-void StationConnection::transportStateChanged(can::Transport::State state) {
-    using TransportState = can::Transport::State;
+void StationConnection::transportStateChanged(transport::Transport::State state) {
+    using TransportState = transport::Transport::State;
     if (state == TransportState::Connected) {
         lost_ = false;
         link_->session->liveness().start();

@@ -92,7 +92,7 @@ public:
     std::uint16_t embeddedPort() const;
     // What the transport of the current connection counted (frames in and out, ...); zeros while there is
     // none.
-    can::TransportCounters transportCounters() const;
+    transport::TransportCounters transportCounters() const;
 
 signals:
     void stateChanged(stellwerk::connection::StationConnection::State state);
@@ -105,13 +105,13 @@ signals:
     void configurationLoaded(const stellwerk::station::StartupResult& result);
     // Frames on the wire, for a bus monitor: one signal per batch the transport read (`outgoing` false)
     // and per block it wrote after pacing (`outgoing` true), in the order they passed.
-    void framesSeen(const std::vector<stellwerk::cs2::CanFrame>& frames, bool outgoing);
+    void framesSeen(const std::vector<stellwerk::can::CanFrame>& frames, bool outgoing);
 
 private:
-    void open(std::unique_ptr<can::Transport> transport);
+    void open(std::unique_ptr<transport::Transport> transport);
     void fail(const QString& reason);
     void watchTransport();
-    void transportStateChanged(can::Transport::State state);
+    void transportStateChanged(transport::Transport::State state);
     void stationSilent();
     void stationRecovered();
     void runStartup();

@@ -5,7 +5,7 @@ namespace {
 
 // The host, with the port only when it is not the CS2's usual one.
 QString hostAndPort(const QString& host, std::uint16_t port) {
-    return port == can::StationPort ? host : QStringLiteral("%1:%2").arg(host).arg(port);
+    return port == transport::StationPort ? host : QStringLiteral("%1:%2").arg(host).arg(port);
 }
 
 } // namespace
@@ -14,12 +14,12 @@ StationEndpoint StationEndpoint::simulated() {
     return {Kind::Simulated, QString()};
 }
 
-StationEndpoint StationEndpoint::of(const can::TransportSettings& settings) {
-    if (const auto* udp = std::get_if<can::UdpSettings>(&settings))
+StationEndpoint StationEndpoint::of(const transport::TransportSettings& settings) {
+    if (const auto* udp = std::get_if<transport::UdpSettings>(&settings))
         return {Kind::Udp, hostAndPort(udp->host, udp->remotePort)};
-    if (const auto* tcp = std::get_if<can::TcpSettings>(&settings))
+    if (const auto* tcp = std::get_if<transport::TcpSettings>(&settings))
         return {Kind::Tcp, hostAndPort(tcp->host, tcp->port)};
-    const auto& bus = std::get<can::CanBusSettings>(settings);
+    const auto& bus = std::get<transport::CanBusSettings>(settings);
     return {Kind::CanBus, QStringLiteral("%1/%2").arg(bus.plugin, bus.interfaceName)};
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "can/TransportSettings.h"
+#include "transport/TransportSettings.h"
 
 #include <QString>
 
@@ -15,7 +15,7 @@ struct StationEndpoint {
     QString place; // "192.168.2.5", "192.168.2.5:15732", "socketcan/can0"; the text as typed when Unusable
 
     static StationEndpoint simulated();
-    static StationEndpoint of(const can::TransportSettings& settings);
+    static StationEndpoint of(const transport::TransportSettings& settings);
     static StationEndpoint unusable(const QString& text);
 
     // "Simulated CS2 (demo layout)", "CS2 at 192.168.2.5 (UDP)", "CAN interface socketcan/can0".

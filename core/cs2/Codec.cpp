@@ -23,7 +23,7 @@ namespace {
 
 detail::BodyResult decodeBody(const CanFrame& frame) {
     const detail::Reader r(frame);
-    const std::uint8_t command = frame.command();
+    const std::uint8_t command = cs2::command(frame);
     switch (Command(command)) {
     case Command::System:
         return detail::decodeSystem(r);
@@ -64,21 +64,20 @@ detail::BodyResult decodeBody(const CanFrame& frame) {
 
 DecodeResult decode(const CanFrame& frame) {
     if (frame.dlc > 8)
-        return DecodeError{DecodeErrorKind::DlcOutOfRange, frame.command(), frame.dlc,
+        return DecodeError{DecodeErrorKind::DlcOutOfRange, cs2::command(frame), frame.dlc,
                            "a CAN frame has at most 8 data bytes"};
-    if (frame.id & ~CanFrame::IdMask)
-        return DecodeError{DecodeErrorKind::IdOutOfRange, frame.command(), frame.dlc,
+    if (frame.id & ~CanFrame::ExtendedIdMask)
+        return DecodeError{DecodeErrorKind::IdOutOfRange, cs2::command(frame), frame.dlc,
                            "a CAN identifier has 29 bits; bits 29..31 must be zero"};
     auto body = decodeBody(frame);
     if (!body)
         return body.error();
-    return Message{frame.prio(), frame.isResponse(), frame.hash(), std::move(*body)};
+    return Message{cs2::prio(frame), cs2::isResponse(frame), cs2::hash(frame), std::move(*body)};
 }
 
 CanFrame encode(const Message& message) {
     CanFrame frame;
-    frame.id =
-        CanFrame::makeId(message.prio, detail::commandOf(message.body), message.response, message.hash);
+    frame.id = makeId(message.prio, detail::commandOf(message.body), message.response, message.hash);
     detail::Writer writer(frame);
     std::visit([&](const auto& body) { detail::encode(body, writer); }, message.body);
     return frame;

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "cs2/CanFrame.h"
 #include "cs2/DecodeError.h"
 #include "cs2/Expected.h"
+#include "cs2/Header.h"
 #include "cs2/Messages.h"
 
 namespace stellwerk::cs2 {

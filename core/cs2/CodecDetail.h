@@ -2,9 +2,9 @@
 
 // Internal to the codec: byte access for decoders and encoders, and the per-message functions.
 
-#include "cs2/CanFrame.h"
 #include "cs2/DecodeError.h"
 #include "cs2/Expected.h"
+#include "cs2/Header.h"
 #include "cs2/Messages.h"
 
 #include <string_view>
@@ -26,7 +26,7 @@ public:
     explicit Reader(const CanFrame& frame) : frame_(frame) {}
 
     std::size_t size() const { return frame_.dlc; }
-    bool response() const { return frame_.isResponse(); }
+    bool response() const { return cs2::isResponse(frame_); }
     std::uint8_t u8(std::size_t i) const { return frame_.data[i]; }
     std::uint16_t u16(std::size_t i) const {
         return std::uint16_t((frame_.data[i] << 8) | frame_.data[i + 1]);
@@ -54,7 +54,7 @@ public:
 
 private:
     DecodeError error(DecodeErrorKind kind, std::string_view detail) const {
-        return {kind, frame_.command(), frame_.dlc, detail};
+        return {kind, cs2::command(frame_), frame_.dlc, detail};
     }
     const CanFrame& frame_;
 };

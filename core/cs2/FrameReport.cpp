@@ -84,7 +84,7 @@ std::string_view systemName(std::uint8_t sub) {
 } // namespace
 
 std::string_view intendedName(const CanFrame& frame) {
-    switch (Command(frame.command())) {
+    switch (Command(cs2::command(frame))) {
     case Command::System:
         return frame.dlc >= 5 && frame.dlc <= 8 ? systemName(frame.data[4]) : "unknown";
     case Command::LocoDiscovery:
@@ -158,7 +158,7 @@ std::string FrameReport::detailText() const {
 
 std::string FrameReport::text() const {
     std::string line = frameText() + "  " + std::string(name());
-    if (frame_.isResponse())
+    if (cs2::isResponse(frame_))
         line += " (response)";
     if (!result_)
         return line + "  ERROR " + detailText();
@@ -168,10 +168,10 @@ std::string FrameReport::text() const {
 
 std::string FrameReport::json() const {
     std::string out = "{\"id\":\"" + hex(frame_.id, 8) + "\"";
-    out += ",\"prio\":" + std::to_string(frame_.prio());
-    out += ",\"command\":" + std::to_string(frame_.command());
-    out += std::string(",\"response\":") + (frame_.isResponse() ? "true" : "false");
-    out += ",\"hash\":\"" + hex(frame_.hash(), 4) + "\"";
+    out += ",\"prio\":" + std::to_string(cs2::prio(frame_));
+    out += ",\"command\":" + std::to_string(cs2::command(frame_));
+    out += std::string(",\"response\":") + (cs2::isResponse(frame_) ? "true" : "false");
+    out += ",\"hash\":\"" + hex(cs2::hash(frame_), 4) + "\"";
     out += ",\"dlc\":" + std::to_string(frame_.dlc);
     std::string data;
     for (auto byte : frame_.payload())

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "cs2/CanFrame.h"
 #include "cs2/Codec.h"
+#include "cs2/Header.h"
 
 #include <string>
 #include <string_view>

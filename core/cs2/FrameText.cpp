@@ -51,13 +51,21 @@ std::optional<std::uint8_t> byteValue(std::string_view text) {
     return std::uint8_t(*hexValue(text));
 }
 
-Expected<std::uint32_t, std::string> parseId(std::string_view text) {
+// A frame with the identifier written as `text`: up to 3 hex digits make a standard (11-bit) identifier,
+// more make an extended (29-bit) one (the candump convention, "123#..." vs "00000123#...").
+Expected<CanFrame, std::string> parseId(std::string_view text) {
     const auto value = hexValue(text);
     if (!value)
         return "'" + std::string(text) + "' is not a hexadecimal CAN identifier";
-    if (*value > CanFrame::IdMask)
+    const std::string_view digits = text.starts_with("0x") || text.starts_with("0X") ? text.substr(2) : text;
+    CanFrame frame;
+    frame.extended = digits.size() > 3;
+    if (!frame.extended && *value > CanFrame::StandardIdMask)
+        return "standard identifier " + std::string(text) + " does not fit in 11 bits (7FF at most)";
+    if (*value > CanFrame::ExtendedIdMask)
         return "identifier " + std::string(text) + " does not fit in 29 bits";
-    return std::uint32_t(*value);
+    frame.id = std::uint32_t(*value);
+    return frame;
 }
 
 // Fills frame.data from byte tokens, checking them against the DLC.
@@ -93,9 +101,9 @@ Result parseCandump(const Tokens& tokens, std::size_t at) {
         return std::string("CAN FD frames (##) do not occur on a CS2 bus");
     if (!dataText.empty() && (dataText[0] == 'R' || dataText[0] == 'r'))
         return std::string("remote frames (#R) are not used by the CS2 protocol");
-    const auto id = parseId(idText);
-    if (!id)
-        return id.error();
+    auto parsed = parseId(idText);
+    if (!parsed)
+        return parsed.error();
     std::string digits;
     for (char c : dataText)
         if (c != '.')
@@ -104,7 +112,8 @@ Result parseCandump(const Tokens& tokens, std::size_t at) {
         return "candump data '" + std::string(dataText) + "' is not a sequence of hex bytes";
     if (digits.size() > 16)
         return "candump data has " + std::to_string(digits.size() / 2) + " bytes; a CAN frame has at most 8";
-    CanFrame frame{*id, std::uint8_t(digits.size() / 2), {}};
+    CanFrame frame = *parsed;
+    frame.dlc = std::uint8_t(digits.size() / 2);
     for (std::size_t i = 0; i < frame.dlc; ++i)
         frame.data[i] = *byteValue(std::string_view(digits).substr(2 * i, 2));
     return ParsedFrame{frame, FrameNotation::Candump};
@@ -118,10 +127,11 @@ Result parseBracketed(const Tokens& tokens, std::size_t dlcAt) {
     const auto [end, ec] = std::from_chars(dlcText.data(), dlcText.data() + dlcText.size(), dlc);
     if (ec != std::errc() || end != dlcText.data() + dlcText.size() || dlc > 15)
         return "'" + std::string(tokens[dlcAt]) + "' is not a DLC of 0..15";
-    const auto id = parseId(tokens[dlcAt - 1]);
-    if (!id)
-        return id.error();
-    CanFrame frame{*id, std::uint8_t(dlc), {}};
+    auto parsed = parseId(tokens[dlcAt - 1]);
+    if (!parsed)
+        return parsed.error();
+    CanFrame frame = *parsed;
+    frame.dlc = std::uint8_t(dlc);
     if (const auto error = fillData(frame, tokens, dlcAt + 1))
         return *error;
     return ParsedFrame{frame, FrameNotation::Bracketed};
@@ -137,22 +147,23 @@ Result parseNetwork(std::string_view hex) {
     if (frame.dlc > 8)
         return "the network form's DLC byte (digits 9-10) is " + std::to_string(frame.dlc) +
                "; a CAN frame has at most 8 data bytes";
-    if ((frame.id & ~CanFrame::IdMask) != 0)
+    if ((frame.id & ~CanFrame::ExtendedIdMask) != 0)
         return "identifier " + std::string(hex.substr(0, 8)) + " does not fit in 29 bits";
     return ParsedFrame{frame, FrameNotation::Network};
 }
 
 Result parseDocument(const Tokens& tokens) {
-    const auto id = parseId(tokens[0]);
-    if (!id)
-        return id.error();
+    auto parsed = parseId(tokens[0]);
+    if (!parsed)
+        return parsed.error();
     if (tokens.size() < 2)
         return "'" + std::string(tokens[0]) + "' needs a DLC after it (document notation: ID DLC BYTES...)";
     unsigned dlc = 0;
     const auto [end, ec] = std::from_chars(tokens[1].data(), tokens[1].data() + tokens[1].size(), dlc);
     if (ec != std::errc() || end != tokens[1].data() + tokens[1].size() || dlc > 15)
         return "'" + std::string(tokens[1]) + "' is not a DLC of 0..15";
-    CanFrame frame{*id, std::uint8_t(dlc), {}};
+    CanFrame frame = *parsed;
+    frame.dlc = std::uint8_t(dlc);
     if (const auto error = fillData(frame, tokens, 2))
         return *error;
     return ParsedFrame{frame, FrameNotation::Document};
@@ -174,9 +185,10 @@ std::string hexBytes(const CanFrame& frame, const char* separator) {
     return out;
 }
 
+// Standard identifiers with 3 hex digits, extended ones with 8 (the candump convention).
 std::string hexId(const CanFrame& frame) {
     char buffer[12];
-    std::snprintf(buffer, sizeof buffer, "%08X", frame.id);
+    std::snprintf(buffer, sizeof buffer, frame.extended ? "%08X" : "%03X", frame.id);
     return buffer;
 }
 

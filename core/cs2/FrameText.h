@@ -1,7 +1,7 @@
 #pragma once
 
-#include "cs2/CanFrame.h"
 #include "cs2/Expected.h"
+#include "cs2/Header.h"
 
 #include <string>
 #include <string_view>
@@ -21,12 +21,15 @@ struct ParsedFrame {
     FrameNotation notation;
 };
 
-// Reads one frame from a line in any of the notations. Text after the data bytes is taken as a
+// Reads one frame from a line in any of the notations. An identifier of up to 3 hex digits is a standard
+// (11-bit) one, a longer one extended (29-bit); the network form carries extended frames only. Text after the data bytes is taken as a
 // comment (the document's examples carry one). The error says what is wrong with the line.
 Expected<ParsedFrame, std::string> parseFrame(std::string_view line);
 
+// Standard identifiers are written with 3 hex digits ("123 2 01 02", "123#0102"), extended with 8.
 std::string formatDocument(const CanFrame& frame); // "00004711 5 00 00 00 00 00"
 std::string formatCandump(const CanFrame& frame);  // "00004711#0000000000"
-std::string formatNetwork(const CanFrame& frame);  // "00004711050000000000000000"
+// Extended frames only (check CanFrame::fitsNetworkForm()).
+std::string formatNetwork(const CanFrame& frame); // "00004711050000000000000000"
 
 } // namespace stellwerk::cs2

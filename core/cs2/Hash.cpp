@@ -8,12 +8,12 @@ std::uint16_t hashFromUid(std::uint32_t uid) {
 }
 
 bool hashIsStreamPosition(const CanFrame& frame) {
-    const auto command = Command(frame.command());
+    const auto command = Command(cs2::command(frame));
     if (command == Command::ConfigDataStream || command == Command::Connect6021Stream)
         return true;
-    if (command == Command::BootloaderCan && !frame.isResponse() && frame.dlc == 8)
+    if (command == Command::BootloaderCan && !cs2::isResponse(frame) && frame.dlc == 8)
         return true; // firmware block data: hash = 0x0300 + frame index
-    return command == Command::StatusDataConfig && frame.isResponse() && frame.dlc != 5 && frame.dlc != 6;
+    return command == Command::StatusDataConfig && cs2::isResponse(frame) && frame.dlc != 5 && frame.dlc != 6;
 }
 
 HashGuard::HashGuard(std::uint32_t uid) : uid_(uid), hash_(hashFromUid(uid)) {}
@@ -21,8 +21,8 @@ HashGuard::HashGuard(std::uint32_t uid) : uid_(uid), hash_(hashFromUid(uid)) {}
 bool HashGuard::observe(const CanFrame& frame) {
     if (hashIsStreamPosition(frame))
         return false;
-    seen_.set(frame.hash());
-    return frame.hash() == hash_ && !frame.isResponse();
+    seen_.set(cs2::hash(frame));
+    return cs2::hash(frame) == hash_ && !cs2::isResponse(frame);
 }
 
 std::uint16_t HashGuard::chooseNewHash() {

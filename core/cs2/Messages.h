@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cs2/CanFrame.h"
+#include "cs2/Header.h"
 #include "cs2/LocId.h"
 
 #include <array>

@@ -45,13 +45,13 @@ std::vector<StreamOutcome> ConfigStreamReceiver::feed(const cs2::ConfigDataStrea
     return stray(hash);
 }
 
-std::vector<StreamOutcome> ConfigStreamReceiver::feed(const cs2::CanFrame& frame) {
-    if (frame.command() != std::uint8_t(cs2::Command::ConfigDataStream))
+std::vector<StreamOutcome> ConfigStreamReceiver::feed(const can::CanFrame& frame) {
+    if (cs2::command(frame) != std::uint8_t(cs2::Command::ConfigDataStream))
         return {};
     const auto decoded = cs2::decode(frame);
     if (decoded)
-        return feed(std::get<cs2::ConfigDataStream>(decoded->body), frame.hash());
-    if (state_ != State::Collecting || frame.hash() != hash_)
+        return feed(std::get<cs2::ConfigDataStream>(decoded->body), cs2::hash(frame));
+    if (state_ != State::Collecting || cs2::hash(frame) != hash_)
         return {};
     return {fail(StreamErrorKind::Interrupted, "a frame with DLC " + std::to_string(frame.dlc) +
                                                    " arrived after " +

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "cs2/CanFrame.h"
 #include "cs2/Expected.h"
+#include "cs2/Header.h"
 #include "cs2/Messages.h"
 #include "cs2config/ConfigStreamError.h"
 
@@ -65,7 +65,7 @@ public:
     std::vector<StreamOutcome> feed(const cs2::ConfigDataStream& frame, std::uint16_t hash);
     // A raw frame: 0x21 frames are decoded and fed; one with another length (not 6, 7 or 8) aborts
     // the stream it belongs to. Other commands are ignored.
-    std::vector<StreamOutcome> feed(const cs2::CanFrame& frame);
+    std::vector<StreamOutcome> feed(const can::CanFrame& frame);
     // The input ended: an unfinished stream is reported as incomplete.
     std::optional<StreamOutcome> finish();
 

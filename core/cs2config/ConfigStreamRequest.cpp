@@ -18,7 +18,7 @@ std::string_view cutUtf8(std::string_view text, std::size_t limit) {
     return text.substr(0, end);
 }
 
-cs2::CanFrame requestFrame(std::string_view eightBytes, std::uint16_t hash, bool response) {
+can::CanFrame requestFrame(std::string_view eightBytes, std::uint16_t hash, bool response) {
     cs2::ConfigDataRequest body;
     for (std::size_t i = 0; i < eightBytes.size() && i < body.filename.size(); ++i)
         body.filename[i] = eightBytes[i];
@@ -83,8 +83,8 @@ std::optional<RequestRange> ConfigRequest::range() const {
     return RequestRange{*first, *count};
 }
 
-std::vector<cs2::CanFrame> ConfigRequest::frames(std::uint16_t hash, bool response) const {
-    std::vector<cs2::CanFrame> out{requestFrame(key_, hash, response)};
+std::vector<can::CanFrame> ConfigRequest::frames(std::uint16_t hash, bool response) const {
+    std::vector<can::CanFrame> out{requestFrame(key_, hash, response)};
     for (std::size_t i = 0; i < followUpFrames(); ++i) {
         const std::string_view part =
             i * 8 < qualifier_.size() ? std::string_view(qualifier_).substr(i * 8, 8) : std::string_view();

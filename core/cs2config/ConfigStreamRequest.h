@@ -1,7 +1,7 @@
 #pragma once
 
-#include "cs2/CanFrame.h"
 #include "cs2/Expected.h"
+#include "cs2/Header.h"
 
 #include <cstdint>
 #include <optional>
@@ -42,7 +42,7 @@ public:
 
     // The key frame and the follow-up frames, DLC 8, zero padded. With `response` set they are the
     // station's acknowledgement (same bytes and hash, response bit set).
-    std::vector<cs2::CanFrame> frames(std::uint16_t hash, bool response = false) const;
+    std::vector<can::CanFrame> frames(std::uint16_t hash, bool response = false) const;
 
     friend bool operator==(const ConfigRequest&, const ConfigRequest&) = default;
 

@@ -13,7 +13,7 @@ using Form = cs2::ConfigDataStream::Form;
 
 constexpr std::size_t FrameBytes = 8;
 
-cs2::CanFrame streamFrame(const cs2::ConfigDataStream& body, std::uint16_t hash) {
+can::CanFrame streamFrame(const cs2::ConfigDataStream& body, std::uint16_t hash) {
     return cs2::encode(cs2::Message{0, false, hash, body});
 }
 
@@ -36,11 +36,11 @@ std::vector<std::uint8_t> streamPayload(std::string_view contents, StreamFormat 
     return std::vector<std::uint8_t>(text.begin(), text.end());
 }
 
-std::vector<cs2::CanFrame> payloadFrames(std::span<const std::uint8_t> payload, StreamAddress address) {
+std::vector<can::CanFrame> payloadFrames(std::span<const std::uint8_t> payload, StreamAddress address) {
     std::vector<std::uint8_t> bytes(payload.begin(), payload.end());
     bytes.resize((payload.size() + FrameBytes - 1) / FrameBytes * FrameBytes, 0);
 
-    std::vector<cs2::CanFrame> frames;
+    std::vector<can::CanFrame> frames;
     frames.reserve(1 + bytes.size() / FrameBytes);
     frames.push_back(streamFrame(header(payload.size(), cs2::crc16(bytes), address), address.hash));
     cs2::ConfigDataStream data;
@@ -51,14 +51,14 @@ std::vector<cs2::CanFrame> payloadFrames(std::span<const std::uint8_t> payload, 
     return frames;
 }
 
-std::vector<cs2::CanFrame> streamFrames(std::string_view contents, StreamFormat format,
+std::vector<can::CanFrame> streamFrames(std::string_view contents, StreamFormat format,
                                         StreamAddress address) {
     return payloadFrames(streamPayload(contents, format), address);
 }
 
-std::vector<cs2::CanFrame> answerFrames(const ConfigRequest& request, std::string_view contents,
+std::vector<can::CanFrame> answerFrames(const ConfigRequest& request, std::string_view contents,
                                         std::uint16_t requesterHash) {
-    std::vector<cs2::CanFrame> frames = request.frames(requesterHash, true);
+    std::vector<can::CanFrame> frames = request.frames(requesterHash, true);
     const auto stream =
         streamFrames(contents, streamFormatForKey(request.key()), StreamAddress::reply(requesterHash));
     frames.insert(frames.end(), stream.begin(), stream.end());

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cs2/CanFrame.h"
+#include "cs2/Header.h"
 #include "cs2config/ConfigStreamKeys.h"
 #include "cs2config/ConfigStreamRequest.h"
 
@@ -30,16 +30,16 @@ struct StreamAddress {
 std::vector<std::uint8_t> streamPayload(std::string_view contents, StreamFormat format);
 
 // Header and data frames for payload bytes as they are (the receiver's streamBytes, or test data).
-std::vector<cs2::CanFrame> payloadFrames(std::span<const std::uint8_t> payload, StreamAddress address);
+std::vector<can::CanFrame> payloadFrames(std::span<const std::uint8_t> payload, StreamAddress address);
 
 // The frames a CS2 sends for a file (document 7.2): the header with the payload length and the
 // CRC over the zero-padded payload, then DLC-8 data frames; priority 0, no response bit.
-std::vector<cs2::CanFrame> streamFrames(std::string_view contents, StreamFormat format,
+std::vector<can::CanFrame> streamFrames(std::string_view contents, StreamFormat format,
                                         StreamAddress address);
 
 // The station's whole answer to a request: its acknowledgement (the request frames with the
 // response bit) and the stream in the key's format (compressed for unknown keys).
-std::vector<cs2::CanFrame> answerFrames(const ConfigRequest& request, std::string_view contents,
+std::vector<can::CanFrame> answerFrames(const ConfigRequest& request, std::string_view contents,
                                         std::uint16_t requesterHash);
 
 // The format a station uses for a key: from the document's table, compressed when unknown.

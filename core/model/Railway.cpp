@@ -28,10 +28,11 @@ Railway::Railway(station::StationSession& session, QObject* parent)
     // Before the session cancels the commands that were waiting: their failures arrive at a model that
     // already knows why.
     connect(&session_, &station::StationSession::connectionLost, this, &Railway::contactLost);
-    connect(&session_.transport(), &can::Transport::stateChanged, this, [this](can::Transport::State state) {
-        if (state != can::Transport::State::Connected)
-            contactLost();
-    });
+    connect(&session_.transport(), &transport::Transport::stateChanged, this,
+            [this](transport::Transport::State state) {
+                if (state != transport::Transport::State::Connected)
+                    contactLost();
+            });
     connect(poller_, &ReadingPoller::readingMissed, this, &Railway::readingMissed);
 }
 
@@ -55,7 +56,7 @@ void Railway::load(const station::StartupResult& startup) {
 }
 
 bool Railway::stationHeard() const {
-    return session_.transport().state() == can::Transport::State::Connected &&
+    return session_.transport().state() == transport::Transport::State::Connected &&
            !session_.liveness().isStationSilent();
 }
 

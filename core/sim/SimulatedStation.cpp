@@ -62,9 +62,10 @@ public:
     }
 
     // 1.2.4: another sender with our hash makes us choose a new one nobody uses.
-    void watchHash(const cs2::CanFrame& frame) {
+    void watchHash(const can::CanFrame& frame) {
         hashGuard.observe(frame); // remembers every hash in use
-        if (frame.hash() == identity.hash && !frame.isResponse() && !cs2::hashIsStreamPosition(frame)) {
+        if (cs2::hash(frame) == identity.hash && !cs2::isResponse(frame) &&
+            !cs2::hashIsStreamPosition(frame)) {
             std::uint16_t fresh = hashGuard.chooseNewHash();
             while (fresh == identity.hash)
                 fresh = hashGuard.chooseNewHash();
@@ -94,7 +95,7 @@ SimulatedStation::SimulatedStation(StationLayout layout, Options options, QObjec
 
 SimulatedStation::~SimulatedStation() = default;
 
-void SimulatedStation::receive(const cs2::CanFrame& frame) {
+void SimulatedStation::receive(const can::CanFrame& frame) {
     emit frameReceived(frame);
     const auto decoded = cs2::decode(frame);
     if (!decoded)
@@ -136,7 +137,7 @@ void SimulatedStation::announcePower() {
     emitAll(out.take());
 }
 
-void SimulatedStation::emitAll(std::vector<cs2::CanFrame> frames) {
+void SimulatedStation::emitAll(std::vector<can::CanFrame> frames) {
     if (!frames.empty())
         emit framesEmitted(frames);
 }

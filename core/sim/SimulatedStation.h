@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cs2/CanFrame.h"
+#include "cs2/Header.h"
 #include "sim/StationLayout.h"
 #include "sim/StationState.h"
 
@@ -39,7 +39,7 @@ public:
 
     // A frame from the bus (any sender; responses, including our own echoes, are not commands).
     // The answer goes out in one framesEmitted before this returns.
-    void receive(const cs2::CanFrame& frame);
+    void receive(const can::CanFrame& frame);
 
     std::uint32_t uid() const;
     // The hash the station sends with; a new one after another sender used it (document 1.2.4).
@@ -66,14 +66,14 @@ public:
     void announcePower();
 
 signals:
-    void framesEmitted(const std::vector<stellwerk::cs2::CanFrame>& frames);
+    void framesEmitted(const std::vector<stellwerk::can::CanFrame>& frames);
     // Every frame given to receive(), before it is handled: the log of what reached the station, for
     // tests and the soak program that check nothing stale ever arrives.
-    void frameReceived(const stellwerk::cs2::CanFrame& frame);
+    void frameReceived(const stellwerk::can::CanFrame& frame);
 
 private:
     class Private;
-    void emitAll(std::vector<cs2::CanFrame> frames);
+    void emitAll(std::vector<can::CanFrame> frames);
 
     std::unique_ptr<Private> d_;
 };

@@ -1,8 +1,8 @@
 #include "sim/StationServer.h"
 
-#include "can/CanBusTransport.h"
-#include "can/NetworkFraming.h"
 #include "sim/SimulatedStation.h"
+#include "transport/CanBusTransport.h"
+#include "transport/NetworkFraming.h"
 
 #include <QLoggingCategory>
 #include <QNetworkDatagram>
@@ -26,7 +26,7 @@ QString endpoint(const QHostAddress& address, std::uint16_t port) {
 StationServer::StationServer(SimulatedStation& station, StationServerSettings settings, QObject* parent)
     : QObject(parent), station_(station), settings_(std::move(settings)) {
     connect(&station_, &SimulatedStation::framesEmitted, this,
-            [this](const std::vector<cs2::CanFrame>& frames) {
+            [this](const std::vector<can::CanFrame>& frames) {
                 counters_.framesOut += frames.size();
                 broadcast(frames, std::nullopt);
             });
@@ -68,10 +68,10 @@ bool StationServer::listenTcp() {
 }
 
 void StationServer::openCanBus() {
-    canBus_ = new can::CanBusTransport(*settings_.canBus, this);
-    connect(canBus_, &can::Transport::framesReceived, this,
-            [this](const std::vector<cs2::CanFrame>& frames) { received(frames, {Origin::Kind::Can}); });
-    connect(canBus_, &can::Transport::problem, this, &StationServer::problem);
+    canBus_ = new transport::CanBusTransport(*settings_.canBus, this);
+    connect(canBus_, &transport::Transport::framesReceived, this,
+            [this](const std::vector<can::CanFrame>& frames) { received(frames, {Origin::Kind::Can}); });
+    connect(canBus_, &transport::Transport::problem, this, &StationServer::problem);
     canBus_->open();
 }
 
@@ -99,8 +99,9 @@ QStringList StationServer::listeners() const {
 void StationServer::readDatagrams() {
     while (udp_->hasPendingDatagrams()) {
         const QNetworkDatagram datagram = udp_->receiveDatagram();
-        std::vector<cs2::CanFrame> frames;
-        const can::DatagramContent content = can::decodeDatagram(can::asBytes(datagram.data()), frames);
+        std::vector<can::CanFrame> frames;
+        const transport::DatagramContent content =
+            transport::decodeDatagram(transport::asBytes(datagram.data()), frames);
         if (!content.wholeFrames) {
             ++counters_.malformedDatagrams;
             qCInfo(serverLog) << "dropped a UDP datagram of" << datagram.data().size() << "bytes from"
@@ -113,7 +114,7 @@ void StationServer::readDatagrams() {
 
 void StationServer::acceptClients() {
     while (QTcpSocket* socket = tcp_->nextPendingConnection()) {
-        clients_.emplace(socket, can::FrameAssembler{});
+        clients_.emplace(socket, transport::FrameAssembler{});
         ++counters_.tcpConnections;
         connect(socket, &QTcpSocket::readyRead, this, [this, socket] { readClient(socket); });
         connect(socket, &QTcpSocket::disconnected, this, [this, socket] { dropClient(socket); });
@@ -129,8 +130,8 @@ void StationServer::readClient(QTcpSocket* socket) {
     if (client == clients_.end())
         return;
     const QByteArray bytes = socket->readAll();
-    std::vector<cs2::CanFrame> frames;
-    counters_.malformedFrames += client->second.feed(can::asBytes(bytes), frames);
+    std::vector<can::CanFrame> frames;
+    counters_.malformedFrames += client->second.feed(transport::asBytes(bytes), frames);
     received(frames, {Origin::Kind::Tcp, socket});
 }
 
@@ -141,16 +142,16 @@ void StationServer::dropClient(QTcpSocket* socket) {
     emit tcpClientsChanged(int(clients_.size()));
 }
 
-void StationServer::received(const std::vector<cs2::CanFrame>& frames, Origin origin) {
+void StationServer::received(const std::vector<can::CanFrame>& frames, Origin origin) {
     if (frames.empty())
         return;
     counters_.framesIn += frames.size();
     broadcast(frames, origin);
-    for (const cs2::CanFrame& frame : frames)
+    for (const can::CanFrame& frame : frames)
         station_.receive(frame);
 }
 
-void StationServer::broadcast(std::span<const cs2::CanFrame> frames, const std::optional<Origin>& except) {
+void StationServer::broadcast(std::span<const can::CanFrame> frames, const std::optional<Origin>& except) {
     const auto from = [&except](Origin::Kind kind) { return except && except->kind == kind; };
     if (udp_ && !from(Origin::Kind::Udp))
         sendUdp(frames);
@@ -158,16 +159,16 @@ void StationServer::broadcast(std::span<const cs2::CanFrame> frames, const std::
         canBus_->sendBatch(frames);
     if (clients_.empty())
         return;
-    const QByteArray bytes = can::encodeFrames(frames);
+    const QByteArray bytes = transport::encodeFrames(frames);
     for (auto& [socket, assembler] : clients_)
         if (!except || except->socket != socket)
             socket->write(bytes);
 }
 
 // One frame per datagram, as a CS2 sends them.
-void StationServer::sendUdp(std::span<const cs2::CanFrame> frames) {
-    for (const cs2::CanFrame& frame : frames)
-        udp_->writeDatagram(can::encodeFrames(std::span(&frame, 1)), settings_.udpReplyHost,
+void StationServer::sendUdp(std::span<const can::CanFrame> frames) {
+    for (const can::CanFrame& frame : frames)
+        udp_->writeDatagram(transport::encodeFrames(std::span(&frame, 1)), settings_.udpReplyHost,
                             settings_.udpReplyPort);
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "can/FrameAssembler.h"
-#include "can/TransportSettings.h"
-#include "cs2/CanFrame.h"
+#include "cs2/Header.h"
+#include "transport/FrameAssembler.h"
+#include "transport/TransportSettings.h"
 
 #include <QHostAddress>
 #include <QObject>
@@ -19,7 +19,7 @@ class QTcpServer;
 class QTcpSocket;
 class QUdpSocket;
 
-namespace stellwerk::can {
+namespace stellwerk::transport {
 class CanBusTransport;
 }
 
@@ -32,12 +32,12 @@ class SimulatedStation;
 struct StationServerSettings {
     QHostAddress listenAddress{QHostAddress::AnyIPv4};
     bool udp = true;
-    std::uint16_t udpPort = can::StationPort;           // 0 = any free port
+    std::uint16_t udpPort = transport::StationPort;     // 0 = any free port
     QHostAddress udpReplyHost{QHostAddress::Broadcast}; // where UDP frames go
-    std::uint16_t udpReplyPort = can::ListenPort;
+    std::uint16_t udpReplyPort = transport::ListenPort;
     bool tcp = true;
-    std::uint16_t tcpPort = can::StationPort; // 0 = any free port
-    std::optional<can::CanBusSettings> canBus;
+    std::uint16_t tcpPort = transport::StationPort; // 0 = any free port
+    std::optional<transport::CanBusSettings> canBus;
     // Tell each new TCP client the track power as it is now (the CS2 protocol has no query for it).
     bool announcePowerToNewClients = false;
 };
@@ -91,16 +91,16 @@ private:
     void acceptClients();
     void readClient(QTcpSocket* socket);
     void dropClient(QTcpSocket* socket);
-    void received(const std::vector<cs2::CanFrame>& frames, Origin origin);
-    void broadcast(std::span<const cs2::CanFrame> frames, const std::optional<Origin>& except);
-    void sendUdp(std::span<const cs2::CanFrame> frames);
+    void received(const std::vector<can::CanFrame>& frames, Origin origin);
+    void broadcast(std::span<const can::CanFrame> frames, const std::optional<Origin>& except);
+    void sendUdp(std::span<const can::CanFrame> frames);
 
     SimulatedStation& station_;
     StationServerSettings settings_;
     QUdpSocket* udp_ = nullptr;
     QTcpServer* tcp_ = nullptr;
-    can::CanBusTransport* canBus_ = nullptr;
-    std::map<QTcpSocket*, can::FrameAssembler> clients_;
+    transport::CanBusTransport* canBus_ = nullptr;
+    std::map<QTcpSocket*, transport::FrameAssembler> clients_;
     StationServerCounters counters_;
     QString error_;
 };

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "cs2/CanFrame.h"
 #include "cs2/Codec.h"
+#include "cs2/Header.h"
 #include "cs2/Messages.h"
 
 #include <array>
@@ -72,18 +72,18 @@ public:
     void respond(const cs2::MessageBody& body, std::uint8_t prio = 0) {
         frames_.push_back(cs2::encode(cs2::Message{prio, true, hash_, body}));
     }
-    void add(const cs2::CanFrame& frame) { frames_.push_back(frame); }
-    void add(const std::vector<cs2::CanFrame>& frames) {
+    void add(const can::CanFrame& frame) { frames_.push_back(frame); }
+    void add(const std::vector<can::CanFrame>& frames) {
         frames_.insert(frames_.end(), frames.begin(), frames.end());
     }
 
     std::uint16_t hash() const { return hash_; }
-    const std::vector<cs2::CanFrame>& frames() const { return frames_; }
-    std::vector<cs2::CanFrame> take() { return std::move(frames_); }
+    const std::vector<can::CanFrame>& frames() const { return frames_; }
+    std::vector<can::CanFrame> take() { return std::move(frames_); }
 
 private:
     std::uint16_t hash_;
-    std::vector<cs2::CanFrame> frames_;
+    std::vector<can::CanFrame> frames_;
 };
 
 } // namespace stellwerk::sim

@@ -42,7 +42,7 @@ CommandId CommandTracker::send(const cs2::Message& command, CommandCallback done
     return sendFrames({cs2::encode(command)}, *key, std::move(done), policy);
 }
 
-CommandId CommandTracker::sendFrames(std::vector<cs2::CanFrame> frames, AckKey key, CommandCallback done,
+CommandId CommandTracker::sendFrames(std::vector<can::CanFrame> frames, AckKey key, CommandCallback done,
                                      CommandPolicy policy) {
     const CommandId id = nextId_++;
     Pending& pending = pending_[id];

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cs2/CanFrame.h"
+#include "cs2/Header.h"
 #include "cs2/Messages.h"
 #include "station/AckKey.h"
 
@@ -52,7 +52,7 @@ using CommandId = std::uint64_t;
 using CommandCallback = std::function<void(const CommandResult&)>;
 // Puts frames of a command on the bus with our current hash, marked with the command's id so that they can
 // be withdrawn while they still wait for the wire; false when the transport refused them.
-using FrameSink = std::function<bool(std::span<const cs2::CanFrame>, CommandId)>;
+using FrameSink = std::function<bool(std::span<const can::CanFrame>, CommandId)>;
 // Takes back the frames of a command that have not reached the wire yet.
 using FrameWithdrawal = std::function<void(CommandId)>;
 
@@ -72,7 +72,7 @@ public:
     // has no one-to-one answer or the transport refused it.
     CommandId send(const cs2::Message& command, CommandCallback done, CommandPolicy policy = {});
     // Sends frames (a request with follow-up frames) answered by one acknowledgement with this key.
-    CommandId sendFrames(std::vector<cs2::CanFrame> frames, AckKey key, CommandCallback done,
+    CommandId sendFrames(std::vector<can::CanFrame> frames, AckKey key, CommandCallback done,
                          CommandPolicy policy = {});
 
     // Offers a received answer; completes the oldest command waiting for it. Returns true if it did.
@@ -97,7 +97,7 @@ private:
     using Deadlines = std::multimap<Clock::time_point, CommandId>;
 
     struct Pending {
-        std::vector<cs2::CanFrame> frames;
+        std::vector<can::CanFrame> frames;
         AckKey key;
         CommandCallback done;
         CommandPolicy policy;

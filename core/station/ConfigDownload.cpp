@@ -51,7 +51,7 @@ void ConfigDownload::requestAnswered(const CommandResult& result) {
         idleTimer_->start(idle_);
 }
 
-void ConfigDownload::feed(const cs2::CanFrame& frame) {
+void ConfigDownload::feed(const can::CanFrame& frame) {
     if (!active_ || !isOurs(frame))
         return;
     Job& job = *active_;
@@ -72,9 +72,9 @@ void ConfigDownload::feed(const cs2::CanFrame& frame) {
     }
 }
 
-bool ConfigDownload::isOurs(const cs2::CanFrame& frame) const {
+bool ConfigDownload::isOurs(const can::CanFrame& frame) const {
     // An MS2 answers with hash 0 (field notes); broadcasts (DLC 7 headers) are not answers to us.
-    return (frame.hash() == active_->hash || frame.hash() == 0) && frame.dlc != 7;
+    return (cs2::hash(frame) == active_->hash || cs2::hash(frame) == 0) && frame.dlc != 7;
 }
 
 void ConfigDownload::flushProgress() {

@@ -38,7 +38,7 @@ public:
     // Queues a request; `done` gets the file or a sentence saying what went wrong.
     void fetch(cs2config::ConfigRequest request, Done done);
     // A received 0x21 frame (any hash; frames of other requesters are ignored).
-    void feed(const cs2::CanFrame& frame);
+    void feed(const can::CanFrame& frame);
     // Called once per received batch: reports progress if it changed.
     void flushProgress();
 
@@ -61,7 +61,7 @@ private:
     void requestAnswered(const CommandResult& result);
     void idleExpired();
     void complete(const DownloadResult& result);
-    bool isOurs(const cs2::CanFrame& frame) const;
+    bool isOurs(const can::CanFrame& frame) const;
 
     CommandTracker& tracker_;
     HashSource ownHash_;

@@ -15,19 +15,19 @@ std::uint32_t randomUid() {
 StationIdentity::StationIdentity(std::optional<std::uint32_t> uid)
     : uid_(uid.value_or(randomUid())), guard_(uid_) {}
 
-cs2::CanFrame StationIdentity::stamp(cs2::CanFrame frame) {
+can::CanFrame StationIdentity::stamp(can::CanFrame frame) {
     frame.id = (frame.id & ~std::uint32_t(0xFFFF)) | guard_.hash();
     sent_[sentCount_++ % EchoMemory] = frame;
     return frame;
 }
 
-std::optional<std::uint16_t> StationIdentity::observe(const cs2::CanFrame& frame) {
+std::optional<std::uint16_t> StationIdentity::observe(const can::CanFrame& frame) {
     if (!guard_.observe(frame) || isOwnEcho(frame))
         return std::nullopt;
     return guard_.chooseNewHash();
 }
 
-bool StationIdentity::isOwnEcho(const cs2::CanFrame& frame) const {
+bool StationIdentity::isOwnEcho(const can::CanFrame& frame) const {
     const std::size_t count = std::min(sentCount_, EchoMemory);
     for (std::size_t i = 0; i < count; ++i)
         if (sent_[i] == frame)

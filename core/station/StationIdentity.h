@@ -1,7 +1,7 @@
 #pragma once
 
-#include "cs2/CanFrame.h"
 #include "cs2/Hash.h"
+#include "cs2/Header.h"
 
 #include <array>
 #include <cstdint>
@@ -21,18 +21,18 @@ public:
 
     // Writes our current hash into a frame we are about to send and remembers the frame, so that a
     // gateway that echoes our own frames back does not look like a collision.
-    cs2::CanFrame stamp(cs2::CanFrame frame);
+    can::CanFrame stamp(can::CanFrame frame);
     // Looks at a received frame; returns the new hash when it showed another sender using ours.
-    std::optional<std::uint16_t> observe(const cs2::CanFrame& frame);
+    std::optional<std::uint16_t> observe(const can::CanFrame& frame);
 
 private:
     static constexpr std::size_t EchoMemory = 32;
 
-    bool isOwnEcho(const cs2::CanFrame& frame) const;
+    bool isOwnEcho(const can::CanFrame& frame) const;
 
     std::uint32_t uid_;
     cs2::HashGuard guard_;
-    std::array<cs2::CanFrame, EchoMemory> sent_{};
+    std::array<can::CanFrame, EchoMemory> sent_{};
     std::size_t sentCount_ = 0;
 };
 

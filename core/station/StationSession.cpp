@@ -4,10 +4,10 @@
 
 namespace stellwerk::station {
 
-StationSession::StationSession(can::Transport& transport, StationSettings settings, QObject* parent)
+StationSession::StationSession(transport::Transport& transport, StationSettings settings, QObject* parent)
     : QObject(parent), transport_(transport), settings_(settings), identity_(settings.uid),
       tracker_(new CommandTracker(
-          [this](std::span<const cs2::CanFrame> f, CommandId id) { return sendFrames(f, id); },
+          [this](std::span<const can::CanFrame> f, CommandId id) { return sendFrames(f, id); },
           [this](CommandId id) { transport_.withdraw(id); }, this)),
       download_(new ConfigDownload(
           *tracker_, [this] { return identity_.hash(); }, this)),
@@ -15,10 +15,10 @@ StationSession::StationSession(can::Transport& transport, StationSettings settin
     download_->setRequestPolicy(settings_.commands);
     download_->setIdleTimeout(settings_.streamIdle);
     liveness_->setSettings(settings_.liveness);
-    connect(&transport_, &can::Transport::framesReceived, this, &StationSession::receive);
-    connect(&transport_, &can::Transport::stateChanged, this, &StationSession::transportStateChanged);
+    connect(&transport_, &transport::Transport::framesReceived, this, &StationSession::receive);
+    connect(&transport_, &transport::Transport::stateChanged, this, &StationSession::transportStateChanged);
     connect(liveness_, &Liveness::stationSilent, this, &StationSession::stationSilent);
-    connected_ = transport_.state() == can::Transport::State::Connected;
+    connected_ = transport_.state() == transport::Transport::State::Connected;
     tracker_->setGiveUpObserver([this](auto firstSent) { commandGivenUp(firstSent); });
 }
 
@@ -27,22 +27,22 @@ StationSession::~StationSession() {
 }
 
 bool StationSession::send(const cs2::Message& message) {
-    const cs2::CanFrame frame = cs2::encode(message);
+    const can::CanFrame frame = cs2::encode(message);
     return sendFrames({&frame, 1});
 }
 
-bool StationSession::sendFrames(std::span<const cs2::CanFrame> frames, can::SendTicket ticket) {
+bool StationSession::sendFrames(std::span<const can::CanFrame> frames, transport::SendTicket ticket) {
     if (frames.size() == 1)
         return transport_.send(identity_.stamp(frames.front()), ticket);
-    std::vector<cs2::CanFrame> stamped;
+    std::vector<can::CanFrame> stamped;
     stamped.reserve(frames.size());
     for (const auto& frame : frames)
         stamped.push_back(identity_.stamp(frame));
     return transport_.sendBatch(stamped, ticket) == stamped.size();
 }
 
-void StationSession::transportStateChanged(can::Transport::State state) {
-    const bool connected = state == can::Transport::State::Connected;
+void StationSession::transportStateChanged(transport::Transport::State state) {
+    const bool connected = state == transport::Transport::State::Connected;
     if (connected_ && !connected) {
         connected_ = false;
         emit connectionLost();
@@ -74,7 +74,7 @@ void StationSession::ping() {
     send(cs2::Message{0, false, 0, cs2::Ping{}});
 }
 
-void StationSession::receive(const std::vector<cs2::CanFrame>& frames) {
+void StationSession::receive(const std::vector<can::CanFrame>& frames) {
     lastHeard_ = std::chrono::steady_clock::now();
     for (const auto& frame : frames)
         receiveFrame(frame);
@@ -85,11 +85,11 @@ void StationSession::receive(const std::vector<cs2::CanFrame>& frames) {
     }
 }
 
-void StationSession::receiveFrame(const cs2::CanFrame& frame) {
+void StationSession::receiveFrame(const can::CanFrame& frame) {
     ++counters_.frames;
     if (const auto newHash = identity_.observe(frame)) {
         ++counters_.hashCollisions;
-        emit hashChanged(frame.hash(), *newHash);
+        emit hashChanged(cs2::hash(frame), *newHash);
     }
     const auto decoded = cs2::decode(frame);
     if (!decoded) {
@@ -100,7 +100,7 @@ void StationSession::receiveFrame(const cs2::CanFrame& frame) {
     route(*decoded, frame);
 }
 
-void StationSession::route(const cs2::Message& message, const cs2::CanFrame& frame) {
+void StationSession::route(const cs2::Message& message, const can::CanFrame& frame) {
     if (const auto* stream = std::get_if<cs2::ConfigDataStream>(&message.body)) {
         download_->feed(frame);
         if (stream->form == cs2::ConfigDataStream::Form::BroadcastHeader)
@@ -109,7 +109,7 @@ void StationSession::route(const cs2::Message& message, const cs2::CanFrame& fra
     }
     if (const auto* status = std::get_if<cs2::StatusDataConfig>(&message.body);
         status && status->form == cs2::StatusDataConfig::Form::Packet) {
-        statusData_->feedPacket(*status, frame.hash());
+        statusData_->feedPacket(*status, cs2::hash(frame));
         return;
     }
     if (const auto* ping = std::get_if<cs2::Ping>(&message.body);

@@ -1,6 +1,5 @@
 #pragma once
 
-#include "can/Transport.h"
 #include "station/CommandTracker.h"
 #include "station/ConfigDownload.h"
 #include "station/DeviceDirectory.h"
@@ -8,6 +7,7 @@
 #include "station/StationIdentity.h"
 #include "station/StationUpdates.h"
 #include "station/StatusDataReader.h"
+#include "transport/Transport.h"
 
 #include <QObject>
 #include <chrono>
@@ -43,7 +43,7 @@ class StationSession final : public QObject {
     Q_OBJECT
 
 public:
-    explicit StationSession(can::Transport& transport, StationSettings settings = {},
+    explicit StationSession(transport::Transport& transport, StationSettings settings = {},
                             QObject* parent = nullptr);
     ~StationSession() override;
 
@@ -55,12 +55,12 @@ public:
     DeviceDirectory& devices() { return directory_; }
     const DeviceDirectory& devices() const { return directory_; }
     const SessionCounters& counters() const { return counters_; }
-    can::Transport& transport() { return transport_; }
+    transport::Transport& transport() { return transport_; }
 
     // Sends without waiting for an answer (ping, bootloader "go", commands nobody acknowledges).
     bool send(const cs2::Message& message);
     // Frames as they are, with our hash written in; `ticket` marks them for withdrawing (see Transport).
-    bool sendFrames(std::span<const cs2::CanFrame> frames, can::SendTicket ticket = 0);
+    bool sendFrames(std::span<const can::CanFrame> frames, transport::SendTicket ticket = 0);
     // Sends and tracks the acknowledgement with the session's default policy (or the given one).
     CommandId request(const cs2::Message& command, CommandCallback done,
                       std::optional<CommandPolicy> policy = std::nullopt);
@@ -76,14 +76,14 @@ signals:
     void connectionLost();
 
 private:
-    void transportStateChanged(can::Transport::State state);
+    void transportStateChanged(transport::Transport::State state);
     void stationSilent();
     void commandGivenUp(std::chrono::steady_clock::time_point firstSent);
-    void receive(const std::vector<cs2::CanFrame>& frames);
-    void receiveFrame(const cs2::CanFrame& frame);
-    void route(const cs2::Message& message, const cs2::CanFrame& frame);
+    void receive(const std::vector<can::CanFrame>& frames);
+    void receiveFrame(const can::CanFrame& frame);
+    void route(const cs2::Message& message, const can::CanFrame& frame);
 
-    can::Transport& transport_;
+    transport::Transport& transport_;
     StationSettings settings_;
     StationIdentity identity_;
     CommandTracker* tracker_;

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "can/FrameAssembler.h"
-#include "can/NetworkFraming.h"
 #include "cs2/Codec.h"
+#include "transport/FrameAssembler.h"
+#include "transport/NetworkFraming.h"
 
 #include <QHostAddress>
 #include <QTcpSocket>
@@ -32,21 +32,21 @@ public:
 private:
     void answer() {
         const QByteArray bytes = socket_.readAll();
-        std::vector<cs2::CanFrame> frames;
-        assembler_.feed(can::asBytes(bytes), frames);
-        for (const cs2::CanFrame& frame : frames) {
+        std::vector<can::CanFrame> frames;
+        assembler_.feed(transport::asBytes(bytes), frames);
+        for (const can::CanFrame& frame : frames) {
             const cs2::DecodeResult message = cs2::decode(frame);
             if (!message || message->response || !std::holds_alternative<cs2::Ping>(message->body))
                 continue;
             const cs2::Message reply{0, true, 0x0300, cs2::Ping{cs2::DeviceIdentity{Uid, 4, 1, Type}}};
-            const cs2::CanFrame encoded = cs2::encode(reply);
-            socket_.write(can::encodeFrames(std::span(&encoded, 1)));
+            const can::CanFrame encoded = cs2::encode(reply);
+            socket_.write(transport::encodeFrames(std::span(&encoded, 1)));
             ++answered_;
         }
     }
 
     QTcpSocket socket_;
-    can::FrameAssembler assembler_;
+    transport::FrameAssembler assembler_;
     bool connected_ = false;
     int answered_ = 0;
 };

@@ -142,17 +142,17 @@ TEST(EmbeddedStation, NewControllerDoesNotSwitchThePowerOn) {
     app.connection.connectToSimulator();
     ASSERT_TRUE(app.ready());
     ASSERT_TRUE(waitFor([&] { return app.railway->power() == PowerState::Running; })) << "announced";
-    auto other = can::createTransport(
-        can::TcpSettings{QStringLiteral("127.0.0.1"), app.connection.embeddedPort(), fastReconnect()});
+    auto other = transport::createTransport(
+        transport::TcpSettings{QStringLiteral("127.0.0.1"), app.connection.embeddedPort(), fastReconnect()});
     other->open();
-    ASSERT_TRUE(waitFor([&] { return other->state() == can::Transport::State::Connected; }));
+    ASSERT_TRUE(waitFor([&] { return other->state() == transport::Transport::State::Connected; }));
     other->send(cs2::encode(cs2::Message{0, false, 0x2F11, cs2::SystemStop{0}}));
     ASSERT_TRUE(waitFor([&] { return app.railway->power() == PowerState::Stopped; }));
     app.powers.clear();
-    auto another = can::createTransport(
-        can::TcpSettings{QStringLiteral("127.0.0.1"), app.connection.embeddedPort(), fastReconnect()});
+    auto another = transport::createTransport(
+        transport::TcpSettings{QStringLiteral("127.0.0.1"), app.connection.embeddedPort(), fastReconnect()});
     another->open();
-    ASSERT_TRUE(waitFor([&] { return another->state() == can::Transport::State::Connected; }));
+    ASSERT_TRUE(waitFor([&] { return another->state() == transport::Transport::State::Connected; }));
     QTest::qWait(300);
     EXPECT_EQ(app.railway->power(), PowerState::Stopped);
     for (const PowerState state : app.powers)

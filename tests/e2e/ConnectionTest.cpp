@@ -15,7 +15,7 @@
 namespace stellwerk::e2e {
 namespace {
 
-using State = can::Transport::State;
+using State = transport::Transport::State;
 using Status = CommandResult::Status;
 
 // Another controller on the station's bus (an MS2) sets a loco's speed while we are away.
@@ -44,7 +44,7 @@ TEST(TcpStation, ThatRestartsIsReconnectedAndResynchronised) {
     Rig rig(Wire::Tcp);
     ASSERT_TRUE(rig.start());
     ASSERT_TRUE(rig.acknowledge(command(cs2::LocoSpeed{cs2::LocId(MfxLoco), 400})).succeeded());
-    QSignalSpy problems(rig.transport.get(), &can::Transport::problem);
+    QSignalSpy problems(rig.transport.get(), &transport::Transport::problem);
 
     rig.stopServer(); // the station goes away with its connections
     ASSERT_TRUE(waitFor([&] { return rig.transport->state() == State::Reconnecting; }));

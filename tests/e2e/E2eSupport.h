@@ -4,16 +4,16 @@
 // SimulatedStation behind its StationServer) over real loopback sockets or Qt's virtualcan bus. Each
 // rig picks free ports; each test process has its own virtual CAN bus.
 
-#include "can/Transport.h"
-#include "can/TransportFactory.h"
-#include "can/TransportSettings.h"
-#include "cs2/CanFrame.h"
 #include "cs2/FrameText.h"
+#include "cs2/Header.h"
 #include "cs2/Messages.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
 #include "station/StationSession.h"
+#include "transport/Transport.h"
+#include "transport/TransportFactory.h"
+#include "transport/TransportSettings.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -96,14 +96,14 @@ inline std::uint16_t freeUdpPort() {
 }
 
 // Retries quickly so that reconnection takes milliseconds.
-inline can::ReconnectTiming fastReconnect() {
+inline transport::ReconnectTiming fastReconnect() {
     return {20ms, 100ms, 1000ms};
 }
 
 // The virtual bus of this test process: "can0" of a virtualcan relay on a port nobody else uses.
-inline can::CanBusSettings virtualBus() {
+inline transport::CanBusSettings virtualBus() {
     static const std::uint16_t relayPort = freeTcpPort();
-    can::CanBusSettings settings;
+    transport::CanBusSettings settings;
     settings.plugin = QStringLiteral("virtualcan");
     settings.interfaceName = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(relayPort);
     settings.reconnect = fastReconnect();
@@ -141,10 +141,10 @@ public:
 
     // Makes the app's transport and session, opens the transport and waits for the station's answer.
     bool connectApp() {
-        transport = can::createTransport(transportSettings());
+        transport = transport::createTransport(transportSettings());
         session = std::make_unique<station::StationSession>(*transport, settings_);
         transport->open();
-        return waitFor([&] { return transport->state() == can::Transport::State::Connected; }) &&
+        return waitFor([&] { return transport->state() == transport::Transport::State::Connected; }) &&
                hearStation();
     }
 
@@ -197,7 +197,7 @@ public:
 
     sim::SimulatedStation station{sim::StationLayout::demo()};
     std::unique_ptr<sim::StationServer> server;
-    std::unique_ptr<can::Transport> transport;
+    std::unique_ptr<transport::Transport> transport;
     std::unique_ptr<station::StationSession> session;
 
 private:
@@ -216,14 +216,14 @@ private:
         return settings;
     }
 
-    can::TransportSettings transportSettings() const {
+    transport::TransportSettings transportSettings() const {
         switch (wire_) {
         case Wire::Tcp:
-            return can::TcpSettings{QStringLiteral("127.0.0.1"), appTcpPort_ ? appTcpPort_ : stationTcpPort_,
-                                    fastReconnect()};
+            return transport::TcpSettings{QStringLiteral("127.0.0.1"),
+                                          appTcpPort_ ? appTcpPort_ : stationTcpPort_, fastReconnect()};
         case Wire::Udp:
-            return can::UdpSettings{QStringLiteral("127.0.0.1"), stationUdpPort_, appUdpPort_,
-                                    QHostAddress(QHostAddress::LocalHost), fastReconnect()};
+            return transport::UdpSettings{QStringLiteral("127.0.0.1"), stationUdpPort_, appUdpPort_,
+                                          QHostAddress(QHostAddress::LocalHost), fastReconnect()};
         case Wire::VirtualCan:
             break;
         }

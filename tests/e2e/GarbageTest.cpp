@@ -4,8 +4,8 @@
 
 #include "E2eSupport.h"
 #include "JunkRelay.h"
-#include "can/NetworkFraming.h"
 #include "cs2/Codec.h"
+#include "transport/NetworkFraming.h"
 
 #include <QTcpSocket>
 #include <QUdpSocket>
@@ -14,7 +14,7 @@
 namespace stellwerk::e2e {
 namespace {
 
-using State = can::Transport::State;
+using State = transport::Transport::State;
 
 // Datagram sizes that are not a multiple of 13 bytes.
 const std::vector<int> WrongSizes{1, 12, 14, 25, 27, 100};
@@ -26,15 +26,15 @@ QByteArray bytes(int size, char fill = '\x5A') {
 // A frame in network form whose DLC byte says 9 (at most 8 is allowed).
 QByteArray frameWithDlcNine() {
     QByteArray frame =
-        can::encodeFrames(std::vector{cs2::encode(command(cs2::LocoSpeed{cs2::LocId(MfxLoco), 100}))});
+        transport::encodeFrames(std::vector{cs2::encode(command(cs2::LocoSpeed{cs2::LocId(MfxLoco), 100}))});
     frame[4] = 9;
     return frame;
 }
 
 // A speed command with three data bytes: no form of document 3.4 has that length.
-cs2::CanFrame undecodableFrame() {
-    cs2::CanFrame frame;
-    frame.id = cs2::CanFrame::makeId(0, 0x04, false, 0x2F11);
+can::CanFrame undecodableFrame() {
+    can::CanFrame frame;
+    frame.id = cs2::makeId(0, 0x04, false, 0x2F11);
     frame.dlc = 3;
     frame.data = {0x00, 0x00, 0x40};
     return frame;
@@ -103,7 +103,7 @@ TEST(Garbage, FrameNoCommandHasIsIgnoredByStationAndCountedBySession) {
     otherController.connectToHost(QHostAddress::LocalHost, rig.stationTcpPort());
     ASSERT_TRUE(waitFor([&] { return rig.server->tcpClientCount() == 2; }));
     const auto answersBefore = rig.server->counters().framesOut;
-    otherController.write(can::encodeFrames(std::vector{undecodableFrame()}));
+    otherController.write(transport::encodeFrames(std::vector{undecodableFrame()}));
     // The gateway passes it on to the app, whose session cannot read it and leaves it; the station
     // (which got it first) did not answer it.
     ASSERT_TRUE(waitFor([&] { return rig.session->counters().undecodable == 1; }));

@@ -10,7 +10,7 @@
 namespace stellwerk::e2e {
 namespace {
 
-using State = can::Transport::State;
+using State = transport::Transport::State;
 using Status = CommandResult::Status;
 
 // Short give-up deadlines keep the tests fast: 3 attempts, 100 ms apart.
@@ -65,8 +65,8 @@ TEST(TcpPeerThatNeverReads, CommandsFailAndNothingPilesUp) {
     QTcpServer deaf;
     ASSERT_TRUE(deaf.listen(QHostAddress::LocalHost, 0));
     deaf.pauseAccepting(); // the kernel completes connections; nobody takes or reads them
-    auto transport = can::createTransport(
-        can::TcpSettings{QStringLiteral("127.0.0.1"), deaf.serverPort(), fastReconnect()});
+    auto transport = transport::createTransport(
+        transport::TcpSettings{QStringLiteral("127.0.0.1"), deaf.serverPort(), fastReconnect()});
     station::StationSession session(*transport, impatient());
     transport->open();
     ASSERT_TRUE(waitFor([&] { return transport->state() == State::Connected; }));

@@ -16,16 +16,16 @@ class StationLog {
 public:
     explicit StationLog(sim::SimulatedStation& station) {
         QObject::connect(&station, &sim::SimulatedStation::frameReceived, &context_,
-                         [this](const cs2::CanFrame& frame) { frames_.push_back(frame); });
+                         [this](const can::CanFrame& frame) { frames_.push_back(frame); });
     }
 
-    const std::vector<cs2::CanFrame>& frames() const { return frames_; }
+    const std::vector<can::CanFrame>& frames() const { return frames_; }
     void clear() { frames_.clear(); }
 
     // Every speed command (not a query) for the loco that reached the station, in order.
     std::vector<std::uint16_t> speedsSet(std::uint32_t locId) const {
         std::vector<std::uint16_t> speeds;
-        for (const cs2::CanFrame& frame : frames_) {
+        for (const can::CanFrame& frame : frames_) {
             const auto message = cs2::decode(frame);
             const auto* speed = message ? std::get_if<cs2::LocoSpeed>(&message->body) : nullptr;
             if (speed && !message->response && speed->loco.value() == locId && speed->speed)
@@ -43,7 +43,7 @@ public:
 
 private:
     QObject context_;
-    std::vector<cs2::CanFrame> frames_;
+    std::vector<can::CanFrame> frames_;
 };
 
 } // namespace stellwerk::e2e

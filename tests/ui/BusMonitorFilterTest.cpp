@@ -23,12 +23,12 @@ using Direction = BusMonitorModel::Direction;
 
 namespace {
 
-cs2::CanFrame frame(const char* text) {
+can::CanFrame frame(const char* text) {
     return cs2::parseFrame(text).value().frame;
 }
 
 // loco.speed DCC 3 speed 288, loco.speed MM2 24 speed 0, loco.direction DCC 3, system.stop.
-std::vector<cs2::CanFrame> mixedFrames() {
+std::vector<can::CanFrame> mixedFrames() {
     return {frame("00084711 6 00 00 C0 03 01 20"), frame("00084711 6 00 00 00 18 00 00"),
             frame("000A4711 5 00 00 C0 03 01"), frame("00004711 5 00 00 00 00 00")};
 }
@@ -123,9 +123,9 @@ TEST(BusMonitorHistory, TheOldestFramesGoWhenTheHistoryIsFull) {
     ASSERT_NE(history, nullptr);
     EXPECT_EQ(history->maximum(), 1000000);
     history->setValue(BusMonitorSettings::MinimumHistory);
-    std::vector<cs2::CanFrame> frames;
+    std::vector<can::CanFrame> frames;
     for (int i = 0; i < 2500; ++i) {
-        cs2::CanFrame numbered = frame("00084711 6 00 00 C0 03 00 00");
+        can::CanFrame numbered = frame("00084711 6 00 00 C0 03 00 00");
         numbered.data[4] = std::uint8_t(i >> 8);
         numbered.data[5] = std::uint8_t(i);
         frames.push_back(numbered);
@@ -145,7 +145,7 @@ TEST(BusMonitorHistory, AMillionFramesCanBeKept) {
     BusMonitorModel model;
     model.setHistoryLimit(BusMonitorSettings::MaximumHistory);
     EXPECT_EQ(model.historyLimit(), 1000000);
-    const std::vector<cs2::CanFrame> batch(10001, frame("00004711 5 00 00 00 00 00"));
+    const std::vector<can::CanFrame> batch(10001, frame("00004711 5 00 00 00 00 00"));
     for (int i = 0; i < 100; ++i) {
         model.addFrames(batch, Direction::Received);
         model.flush();
@@ -157,17 +157,17 @@ TEST(BusMonitorHistory, AMillionFramesCanBeKept) {
 namespace {
 
 // Frame n of a numbered run: loco.speed for DCC 3 when n is even (speed n % 1000), system.stop when odd.
-cs2::CanFrame numbered(int n) {
+can::CanFrame numbered(int n) {
     if (n % 2 == 1)
         return frame("00004711 5 00 00 00 00 00");
-    cs2::CanFrame speed = frame("00084711 6 00 00 C0 03 00 00");
+    can::CanFrame speed = frame("00084711 6 00 00 C0 03 00 00");
     speed.data[4] = std::uint8_t((n % 1000) >> 8);
     speed.data[5] = std::uint8_t(n % 1000);
     return speed;
 }
 
-std::vector<cs2::CanFrame> numberedRun(int first, int count) {
-    std::vector<cs2::CanFrame> frames;
+std::vector<can::CanFrame> numberedRun(int first, int count) {
+    std::vector<can::CanFrame> frames;
     for (int n = first; n < first + count; ++n)
         frames.push_back(numbered(n));
     return frames;

@@ -47,9 +47,9 @@ struct Arrivals {
         clock.start();
         QObject::connect(
             &replay, &BusMonitorReplay::framesReplayed, &context,
-            [this](const std::vector<cs2::CanFrame>& frames, const QDateTime& time, bool outgoing) {
+            [this](const std::vector<can::CanFrame>& frames, const QDateTime& time, bool outgoing) {
                 ++batches;
-                for (const cs2::CanFrame& frame : frames) {
+                for (const can::CanFrame& frame : frames) {
                     texts.push_back(cs2::formatCandump(frame));
                     times.push_back(time.toMSecsSinceEpoch());
                     arrivedMs.push_back(clock.elapsed());

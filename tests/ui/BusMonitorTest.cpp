@@ -31,17 +31,17 @@ constexpr int FramesMs = 10000;
 
 constexpr quint32 V100 = 0x18; // V 100 2023, MM2 address 24: stands still in the demo
 
-cs2::CanFrame frame(const char* text) {
+can::CanFrame frame(const char* text) {
     const auto parsed = cs2::parseFrame(text);
     EXPECT_TRUE(parsed.hasValue()) << text;
-    return parsed.hasValue() ? parsed.value().frame : cs2::CanFrame{};
+    return parsed.hasValue() ? parsed.value().frame : can::CanFrame{};
 }
 
 // loco.speed for Loc-ID 0xC003 (DCC 3), speed 288, as in the protocol document.
-cs2::CanFrame locoSpeed() {
+can::CanFrame locoSpeed() {
     return frame("00084711 6 00 00 C0 03 01 20");
 }
-cs2::CanFrame systemStop() {
+can::CanFrame systemStop() {
     return frame("00004711 5 00 00 00 00 00");
 }
 
@@ -54,7 +54,7 @@ QString cell(const QAbstractItemModel& model, int row, int column) {
 TEST(BusMonitorModel, TenThousandFramesInOneBatchAreOneInsertion) {
     BusMonitorModel model;
     QSignalSpy inserted(&model, &QAbstractItemModel::rowsInserted);
-    const std::vector<cs2::CanFrame> frames(10000, locoSpeed());
+    const std::vector<can::CanFrame> frames(10000, locoSpeed());
     model.addFrames(frames, Direction::Received);
     EXPECT_EQ(model.rowCount(), 0); // not before the flush
     ASSERT_TRUE(QTest::qWaitFor([&] { return model.rowCount() == 10000; }, 2000));
@@ -69,13 +69,13 @@ TEST(BusMonitorModel, TenThousandFramesInOneBatchAreOneInsertion) {
 TEST(BusMonitorModel, HistoryLimitDropsTheOldestInOneRemoval) {
     BusMonitorModel model;
     model.setHistoryLimit(100);
-    const std::vector<cs2::CanFrame> stops(80, systemStop());
+    const std::vector<can::CanFrame> stops(80, systemStop());
     model.addFrames(stops, Direction::Received);
     model.flush();
     ASSERT_EQ(model.rowCount(), 80);
     QSignalSpy removed(&model, &QAbstractItemModel::rowsRemoved);
     QSignalSpy inserted(&model, &QAbstractItemModel::rowsInserted);
-    const std::vector<cs2::CanFrame> speeds(50, locoSpeed());
+    const std::vector<can::CanFrame> speeds(50, locoSpeed());
     model.addFrames(speeds, Direction::Sent);
     model.flush();
     EXPECT_EQ(model.rowCount(), 100);
@@ -97,7 +97,7 @@ TEST(BusMonitorModel, HistoryLimitDropsTheOldestInOneRemoval) {
 TEST(BusMonitorModel, PauseHoldsRowsBackAndCountsThem) {
     BusMonitorModel model;
     model.setPaused(true);
-    const std::vector<cs2::CanFrame> frames(25, locoSpeed());
+    const std::vector<can::CanFrame> frames(25, locoSpeed());
     model.addFrames(frames, Direction::Received);
     model.flush();
     EXPECT_EQ(model.rowCount(), 0);
@@ -110,9 +110,9 @@ TEST(BusMonitorModel, PauseHoldsRowsBackAndCountsThem) {
 
 TEST(BusMonitorModel, ClearEmptiesRowsQueueAndCounters) {
     BusMonitorModel model;
-    model.addFrames(std::vector<cs2::CanFrame>(5, systemStop()), Direction::Received);
+    model.addFrames(std::vector<can::CanFrame>(5, systemStop()), Direction::Received);
     model.flush();
-    model.addFrames(std::vector<cs2::CanFrame>(5, systemStop()), Direction::Received);
+    model.addFrames(std::vector<can::CanFrame>(5, systemStop()), Direction::Received);
     model.clear();
     EXPECT_EQ(model.rowCount(), 0);
     EXPECT_EQ(model.totalFrames(), 0u);
@@ -122,7 +122,7 @@ TEST(BusMonitorModel, ClearEmptiesRowsQueueAndCounters) {
 
 TEST(BusMonitorModel, CommandGroupsHaveDifferentColours) {
     BusMonitorModel model;
-    model.addFrames(std::vector<cs2::CanFrame>{systemStop(), locoSpeed()}, Direction::Received);
+    model.addFrames(std::vector<can::CanFrame>{systemStop(), locoSpeed()}, Direction::Received);
     model.flush();
     const QVariant system = model.index(0, 0).data(Qt::BackgroundRole);
     const QVariant loco = model.index(1, 0).data(Qt::BackgroundRole);
@@ -137,7 +137,7 @@ TEST(BusMonitorPanel, FilterFindsAFrameByNameAndByLocId) {
     Translations translations;
     ASSERT_TRUE(translations.select(Language::English));
     BusMonitorPanel panel;
-    panel.model()->addFrames(std::vector<cs2::CanFrame>{systemStop(), locoSpeed(), systemStop()},
+    panel.model()->addFrames(std::vector<can::CanFrame>{systemStop(), locoSpeed(), systemStop()},
                              Direction::Received);
     panel.model()->flush();
     const QAbstractItemModel& shown = *panel.table()->model();

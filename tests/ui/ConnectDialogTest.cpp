@@ -4,7 +4,7 @@
 #include "StationTestSupport.h"
 #include "StationUrlSettings.h"
 #include "Translations.h"
-#include "can/CanBusTransport.h"
+#include "transport/CanBusTransport.h"
 
 #include <QAbstractButton>
 #include <QAction>
@@ -207,7 +207,7 @@ TEST_F(ConnectDialogTest, CanInterfacesAreTheOnesThePluginsOffer) {
     ConnectDialog dialog{QString()};
     auto* interfaces = part<QComboBox>(dialog, "canInterface");
     QStringList offered;
-    for (const can::CanBusInterface& found : can::CanBusTransport::availableInterfaces())
+    for (const transport::CanBusInterface& found : transport::CanBusTransport::availableInterfaces())
         offered << found.plugin + QLatin1Char('/') + found.name;
     QStringList listed;
     for (int i = 0; i < interfaces->count(); ++i)

@@ -23,9 +23,9 @@ class WireWatch {
 public:
     explicit WireWatch(const connection::StationConnection& station) {
         QObject::connect(&station, &connection::StationConnection::framesSeen, &context_,
-                         [this](const std::vector<cs2::CanFrame>& frames, bool outgoing) {
+                         [this](const std::vector<can::CanFrame>& frames, bool outgoing) {
                              if (outgoing)
-                                 for (const cs2::CanFrame& frame : frames)
+                                 for (const can::CanFrame& frame : frames)
                                      count(frame);
                          });
     }
@@ -33,7 +33,7 @@ public:
     int goes() const { return goes_; }
 
 private:
-    void count(const cs2::CanFrame& frame) {
+    void count(const can::CanFrame& frame) {
         const cs2::DecodeResult decoded = cs2::decode(frame);
         if (!decoded.hasValue() || decoded.value().response)
             return;

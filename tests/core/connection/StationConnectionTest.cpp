@@ -139,7 +139,7 @@ TEST(StationConnection, CountsTheFramesOfItsTransportAndZerosWithoutOne) {
     EXPECT_EQ(connection.transportCounters().framesIn, 0u);
     connection.connectToSimulator();
     ASSERT_TRUE(waitForState(connection, State::Ready));
-    const can::TransportCounters counters = connection.transportCounters();
+    const transport::TransportCounters counters = connection.transportCounters();
     EXPECT_GT(counters.framesOut, 10u);               // pings, config requests, state queries
     EXPECT_GT(counters.framesIn, counters.framesOut); // every request has an answer, downloads have many
     connection.disconnectFromStation();
@@ -223,19 +223,20 @@ TEST(StationConnection, FramesSeenReportsWhatWasSentAndWhatCameBack) {
     TestStation station;
     ASSERT_TRUE(station.start());
     StationConnection connection;
-    std::vector<std::pair<bool, cs2::CanFrame>> seen;
+    std::vector<std::pair<bool, can::CanFrame>> seen;
     QObject::connect(&connection, &StationConnection::framesSeen,
-                     [&seen](const std::vector<cs2::CanFrame>& frames, bool outgoing) {
-                         for (const cs2::CanFrame& frame : frames)
+                     [&seen](const std::vector<can::CanFrame>& frames, bool outgoing) {
+                         for (const can::CanFrame& frame : frames)
                              seen.emplace_back(outgoing, frame);
                      });
     connection.connectTo(QStringLiteral("tcp://127.0.0.1:%1").arg(station.tcpPort()));
     ASSERT_TRUE(waitForState(connection, State::Ready)) << connection.lastProblem().toStdString();
     const auto firstOut = std::find_if(seen.begin(), seen.end(), [](const auto& s) { return s.first; });
     ASSERT_NE(firstOut, seen.end());
-    EXPECT_FALSE(firstOut->second.isResponse());
+    EXPECT_FALSE(cs2::isResponse(firstOut->second));
     const auto answer = std::find_if(firstOut, seen.end(), [&](const auto& s) {
-        return !s.first && s.second.isResponse() && s.second.command() == firstOut->second.command();
+        return !s.first && cs2::isResponse(s.second) &&
+               cs2::command(s.second) == cs2::command(firstOut->second);
     });
     EXPECT_NE(answer, seen.end()) << "the station answers what we sent";
     const auto outgoing = std::count_if(seen.begin(), seen.end(), [](const auto& s) { return s.first; });

@@ -1,6 +1,6 @@
 #include "connection/StationEndpoint.h"
 
-#include "can/TransportAddress.h"
+#include "transport/TransportAddress.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@ using connection::StationEndpoint;
 namespace {
 
 StationEndpoint endpointOf(const char* url) {
-    const auto settings = can::parseTransportUrl(QString::fromLatin1(url));
+    const auto settings = transport::parseTransportUrl(QString::fromLatin1(url));
     EXPECT_TRUE(settings.hasValue()) << url;
     return StationEndpoint::of(settings.value());
 }

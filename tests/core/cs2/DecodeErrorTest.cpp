@@ -84,7 +84,7 @@ TEST(DecodeError, MessagesNameTheCommandRuleAndLength) {
 
 TEST(DecodeError, UnknownCommandsAreNotErrors) {
     for (std::uint8_t command : {0x09, 0x0A, 0x0D, 0x13, 0x1E, 0x31, 0x42, 0x7F, 0xFF}) {
-        CanFrame input{CanFrame::makeId(0, command, false, 0x4711), 3, {1, 2, 3}};
+        CanFrame input{stellwerk::cs2::makeId(0, command, false, 0x4711), 3, {1, 2, 3}};
         const auto result = decode(input);
         ASSERT_TRUE(result.hasValue()) << int(command);
         const auto& unknown = std::get<Unknown>(result->body);

@@ -8,13 +8,13 @@
 // the data bytes as a comment). All frames use the document's hash 0x4711 unless a test says otherwise.
 
 #include "TestSupport.h"
-#include "cs2/CanFrame.h"
 #include "cs2/Codec.h"
 #include "cs2/Crc16.h"
 #include "cs2/Fields.h"
 #include "cs2/FrameReport.h"
 #include "cs2/FrameText.h"
 #include "cs2/Hash.h"
+#include "cs2/Header.h"
 #include "cs2/LocId.h"
 #include "cs2/Messages.h"
 #include "cs2/SpeedSteps.h"
@@ -102,11 +102,11 @@ std::string configRequest(std::string_view id, std::string_view key) {
 TEST(Document_1_2_4_Hash, ExampleHash4711CarriesTheCs2Marker) {
     // All examples use hash 0x4711: bits 7..9 are 0b110, the combination CS1 never uses.
     const CanFrame stop = frame("00004711 5 00 00 00 00 00");
-    EXPECT_EQ(stop.prio(), 0);
-    EXPECT_EQ(stop.command(), 0x00);
-    EXPECT_FALSE(stop.isResponse());
-    EXPECT_EQ(stop.hash(), 0x4711);
-    EXPECT_TRUE(hasCs2Marker(stop.hash()));
+    EXPECT_EQ(cs2::prio(stop), 0);
+    EXPECT_EQ(cs2::command(stop), 0x00);
+    EXPECT_FALSE(cs2::isResponse(stop));
+    EXPECT_EQ(cs2::hash(stop), 0x4711);
+    EXPECT_TRUE(hasCs2Marker(cs2::hash(stop)));
 }
 
 TEST(Document_1_2_4_Hash, UidHighWordXorLowWordWithCs1BitsSet) {
@@ -310,8 +310,8 @@ TEST(Document_1_4_CommandOverview, ValueInCanId) {
     };
     for (const auto& row : rows) {
         SCOPED_TRACE(row.name);
-        const CanFrame f{CanFrame::makeId(0, row.command, false, 0x4711), 0, {}};
-        EXPECT_EQ(f.command(), row.command);
+        const CanFrame f{cs2::makeId(0, row.command, false, 0x4711), 0, {}};
+        EXPECT_EQ(cs2::command(f), row.command);
         EXPECT_EQ(f.toNetwork()[1], row.inCanId);
         EXPECT_EQ(intendedName(f), row.name);
     }
@@ -341,7 +341,7 @@ TEST(Document_1_4_CommandOverview, SystemSubcommandValues) {
     };
     for (const auto& row : rows) {
         SCOPED_TRACE(row.name);
-        CanFrame f{CanFrame::makeId(0, 0x00, false, 0x4711), 5, {}};
+        CanFrame f{cs2::makeId(0, 0x00, false, 0x4711), 5, {}};
         f.data[4] = row.sub;
         EXPECT_EQ(intendedName(f), row.name);
     }
@@ -1530,7 +1530,7 @@ TEST(Document_9_1_AutomationSwitch, BroadcastDevice) {
 
 TEST(FieldNotes_Framing, NetworkFormByteLayout) {
     // byte 0 = prio << 1 | command >> 7, byte 1 = command << 1 | response, bytes 2-3 hash, byte 4 DLC.
-    const CanFrame f{CanFrame::makeId(3, 0x21, true, 0x0301), 8, {1, 2, 3, 4, 5, 6, 7, 8}};
+    const CanFrame f{cs2::makeId(3, 0x21, true, 0x0301), 8, {1, 2, 3, 4, 5, 6, 7, 8}};
     const auto bytes = f.toNetwork();
     EXPECT_EQ(bytes[0], 0x06);
     EXPECT_EQ(bytes[1], 0x43);

@@ -90,16 +90,16 @@ TEST(Fields, LocoSpeedFromLocIdWithoutSpeedIsAQuery) {
 
 TEST(Fields, EnvelopeKeysSetPrioResponseAndHash) {
     const CanFrame frame = build("system.go", {{"prio", "1"}, {"response", "true"}, {"hash", "0x0301"}});
-    EXPECT_EQ(frame.prio(), 1);
-    EXPECT_TRUE(frame.isResponse());
-    EXPECT_EQ(frame.hash(), 0x0301);
+    EXPECT_EQ(stellwerk::cs2::prio(frame), 1);
+    EXPECT_TRUE(stellwerk::cs2::isResponse(frame));
+    EXPECT_EQ(stellwerk::cs2::hash(frame), 0x0301);
 }
 
 TEST(Fields, PacketNumberBecomesTheHash) {
     const CanFrame frame =
         build("statusdata.config",
               {{"response", "true"}, {"form", "packet"}, {"packet", "129"}, {"bytes", "0102"}});
-    EXPECT_EQ(frame.hash(), 0x0701);
+    EXPECT_EQ(stellwerk::cs2::hash(frame), 0x0701);
     EXPECT_EQ(frame.dlc, 2);
 }
 

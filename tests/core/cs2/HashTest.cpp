@@ -42,16 +42,17 @@ TEST(Hash, PacketNumbersSkipTheMarkerBits) {
 TEST(HashGuard, ForeignCommandWithOurHashIsACollision) {
     HashGuard guard(0x43533208);
     const std::uint16_t own = guard.hash();
-    EXPECT_TRUE(guard.observe(CanFrame{CanFrame::makeId(0, 0x04, false, own), 4, {}}));
+    EXPECT_TRUE(guard.observe(CanFrame{stellwerk::cs2::makeId(0, 0x04, false, own), 4, {}}));
     EXPECT_FALSE(
-        guard.observe(CanFrame{CanFrame::makeId(0, 0x04, false, std::uint16_t(own ^ 0x0400)), 4, {}}));
+        guard.observe(CanFrame{stellwerk::cs2::makeId(0, 0x04, false, std::uint16_t(own ^ 0x0400)), 4, {}}));
 }
 
 TEST(HashGuard, ResponsesAndStreamFramesWithOurHashAreNoCollision) {
     HashGuard guard(0x43533208);
     const std::uint16_t own = guard.hash();
-    EXPECT_FALSE(guard.observe(CanFrame{CanFrame::makeId(0, 0x04, true, own), 6, {}})) << "an answer to us";
-    EXPECT_FALSE(guard.observe(CanFrame{CanFrame::makeId(0, 0x21, false, own), 8, {}}))
+    EXPECT_FALSE(guard.observe(CanFrame{stellwerk::cs2::makeId(0, 0x04, true, own), 6, {}}))
+        << "an answer to us";
+    EXPECT_FALSE(guard.observe(CanFrame{stellwerk::cs2::makeId(0, 0x21, false, own), 8, {}}))
         << "our config stream";
 }
 
@@ -61,7 +62,7 @@ TEST(HashGuard, NewHashAvoidsEveryHashSeenOnTheBus) {
     for (std::uint32_t uid = 1; uid < 3000; ++uid) {
         const auto h = hashFromUid(uid * 0x01000193u);
         seen.push_back(h);
-        guard.observe(CanFrame{CanFrame::makeId(0, 0x18, false, h), 0, {}});
+        guard.observe(CanFrame{stellwerk::cs2::makeId(0, 0x18, false, h), 0, {}});
     }
     const std::uint16_t old = guard.hash();
     const std::uint16_t fresh = guard.chooseNewHash();
@@ -74,10 +75,10 @@ TEST(HashGuard, NewHashAvoidsEveryHashSeenOnTheBus) {
 TEST(HashGuard, PacketNumbersInStreamsAreNeitherCollisionsNorSeenHashes) {
     HashGuard guard(0x00000001); // x = 1: hash 0x0301, the same as packet number 1
     ASSERT_EQ(guard.hash(), hashFromPacketNumber(1));
-    EXPECT_FALSE(guard.observe(CanFrame{CanFrame::makeId(0, 0x1D, true, 0x0301), 8, {}}))
+    EXPECT_FALSE(guard.observe(CanFrame{stellwerk::cs2::makeId(0, 0x1D, true, 0x0301), 8, {}}))
         << "status data packet";
-    EXPECT_FALSE(guard.observe(CanFrame{CanFrame::makeId(0, 0x1B, false, 0x0301), 8, {}}))
+    EXPECT_FALSE(guard.observe(CanFrame{stellwerk::cs2::makeId(0, 0x1B, false, 0x0301), 8, {}}))
         << "bootloader block";
-    EXPECT_TRUE(guard.observe(CanFrame{CanFrame::makeId(0, 0x1B, false, 0x0301), 5, {}}))
+    EXPECT_TRUE(guard.observe(CanFrame{stellwerk::cs2::makeId(0, 0x1B, false, 0x0301), 5, {}}))
         << "bootloader command";
 }

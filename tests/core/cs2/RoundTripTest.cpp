@@ -57,8 +57,8 @@ void forEveryFrame(Check check) {
                 for (const auto& bytes : payloads(random, 24)) {
                     const auto prio = std::uint8_t(random() & 0x0F);
                     const auto hash = std::uint16_t(random());
-                    check(
-                        CanFrame{CanFrame::makeId(prio, std::uint8_t(command), response, hash), dlc, bytes});
+                    check(CanFrame{stellwerk::cs2::makeId(prio, std::uint8_t(command), response, hash), dlc,
+                                   bytes});
                 }
 }
 
@@ -90,9 +90,9 @@ TEST(RoundTrip, DescriptionIsEnoughToBuildTheSameFrame) {
         const auto result = decode(input);
         if (!result)
             return;
-        std::vector<KeyValue> arguments{{"prio", std::to_string(input.prio())},
-                                        {"response", input.isResponse() ? "true" : "false"},
-                                        {"hash", std::to_string(input.hash())}};
+        std::vector<KeyValue> arguments{{"prio", std::to_string(stellwerk::cs2::prio(input))},
+                                        {"response", stellwerk::cs2::isResponse(input) ? "true" : "false"},
+                                        {"hash", std::to_string(stellwerk::cs2::hash(input))}};
         for (const auto& field : describe(*result))
             if (!field.derived)
                 arguments.emplace_back(std::string(field.key), fieldText(field));
@@ -111,7 +111,7 @@ TEST(RoundTrip, EveryIdentifierSurvives) {
             for (bool response : {false, true})
                 for (std::uint16_t hash : {0x0000, 0x0300, 0x4711, 0x7FFF, 0x8000, 0xFFFF}) {
                     const CanFrame input{
-                        CanFrame::makeId(std::uint8_t(prio), std::uint8_t(command), response, hash),
+                        stellwerk::cs2::makeId(std::uint8_t(prio), std::uint8_t(command), response, hash),
                         8,
                         {0, 0, 0, 0, 0, 0, 0, 0}};
                     const auto bytes = input.toNetwork();
@@ -126,7 +126,7 @@ TEST(RoundTrip, EveryIdentifierSurvives) {
 TEST(RoundTrip, EveryCommandHasADecoderOrIsUnknown) {
     for (unsigned command = 0; command < 256; ++command) {
         const auto result =
-            decode(CanFrame{CanFrame::makeId(0, std::uint8_t(command), false, 0x4711), 8, {}});
+            decode(CanFrame{stellwerk::cs2::makeId(0, std::uint8_t(command), false, 0x4711), 8, {}});
         if (result && std::holds_alternative<Unknown>(result->body)) {
             EXPECT_EQ(std::get<Unknown>(result->body).command, command);
         }

@@ -30,17 +30,17 @@ std::size_t count(const std::string& text, const std::string& word) {
     return n;
 }
 
-std::vector<cs2::CanFrame> corpusStream() {
+std::vector<can::CanFrame> corpusStream() {
     return test::framesOfLog(CorpusLog);
 }
 
-cs2::CanFrame dataFrame(std::uint16_t hash, std::array<std::uint8_t, 8> bytes = {}) {
+can::CanFrame dataFrame(std::uint16_t hash, std::array<std::uint8_t, 8> bytes = {}) {
     cs2::ConfigDataStream body;
     body.data = bytes;
     return cs2::encode(cs2::Message{0, false, hash, body});
 }
 
-cs2::CanFrame headerFrame(std::uint16_t hash, std::uint32_t length, std::uint16_t crc) {
+can::CanFrame headerFrame(std::uint16_t hash, std::uint32_t length, std::uint16_t crc) {
     cs2::ConfigDataStream body;
     body.form = cs2::ConfigDataStream::Form::Header;
     body.length = length;
@@ -48,7 +48,7 @@ cs2::CanFrame headerFrame(std::uint16_t hash, std::uint32_t length, std::uint16_
     return cs2::encode(cs2::Message{0, false, hash, body});
 }
 
-std::vector<cs2::CanFrame> framesFor(const std::vector<std::uint8_t>& payload, std::uint16_t hash = 0x4711) {
+std::vector<can::CanFrame> framesFor(const std::vector<std::uint8_t>& payload, std::uint16_t hash = 0x4711) {
     return payloadFrames(payload, StreamAddress::reply(hash));
 }
 
@@ -275,7 +275,7 @@ TEST(ConfigStreamReceiver, DataFrameWithoutHeader) {
 
 TEST(ConfigStreamReceiver, NewHeaderInsideAStreamAbortsIt) {
     const auto corpus = corpusStream();
-    std::vector<cs2::CanFrame> frames(corpus.begin(), corpus.begin() + 4);
+    std::vector<can::CanFrame> frames(corpus.begin(), corpus.begin() + 4);
     frames.insert(frames.end(), corpus.begin(), corpus.end());
     const auto outcomes = receiveAll(frames);
     ASSERT_EQ(outcomes.size(), 2u);

@@ -15,7 +15,7 @@ using test::frame;
 
 namespace {
 
-std::vector<std::string> documentLines(const std::vector<cs2::CanFrame>& frames) {
+std::vector<std::string> documentLines(const std::vector<can::CanFrame>& frames) {
     std::vector<std::string> lines;
     for (const auto& f : frames)
         lines.push_back(cs2::formatDocument(f));
@@ -23,7 +23,7 @@ std::vector<std::string> documentLines(const std::vector<cs2::CanFrame>& frames)
 }
 
 std::vector<CollectedConfigRequest> collect(ConfigRequestCollector& collector,
-                                            const std::vector<cs2::CanFrame>& frames) {
+                                            const std::vector<can::CanFrame>& frames) {
     std::vector<CollectedConfigRequest> found;
     for (const auto& f : frames) {
         const auto message = cs2::decode(f);
@@ -36,7 +36,7 @@ std::vector<CollectedConfigRequest> collect(ConfigRequestCollector& collector,
     return found;
 }
 
-std::vector<cs2::CanFrame> concat(std::vector<cs2::CanFrame> a, const std::vector<cs2::CanFrame>& b) {
+std::vector<can::CanFrame> concat(std::vector<can::CanFrame> a, const std::vector<can::CanFrame>& b) {
     a.insert(a.end(), b.begin(), b.end());
     return a;
 }

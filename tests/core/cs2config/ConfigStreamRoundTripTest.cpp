@@ -164,7 +164,7 @@ TEST(ConfigStreamRoundTrip, RequestAnswerConversation) {
     EXPECT_EQ(heard->request.qualifier(), "M4");
     const auto answer = answerFrames(heard->request, lokinfo, heard->hash);
     ASSERT_EQ(answer.size(), 3 + 1 + (payload::padLines(lokinfo).size() + 7) / 8);
-    EXPECT_TRUE(answer[0].isResponse());
+    EXPECT_TRUE(cs2::isResponse(answer[0]));
 
     ConfigRequestCollector requesterSide;
     ConfigStreamReceiver receiver;

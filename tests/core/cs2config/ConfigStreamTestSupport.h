@@ -20,9 +20,9 @@ using cs2::test::corpusFile;
 using cs2::test::frame;
 
 // Every frame of a logged capture (any notation parseFrame reads); fails the test on a bad line.
-inline std::vector<cs2::CanFrame> framesOfLog(std::string_view corpusPath) {
+inline std::vector<can::CanFrame> framesOfLog(std::string_view corpusPath) {
     std::ifstream in(corpusFile(corpusPath));
-    std::vector<cs2::CanFrame> frames;
+    std::vector<can::CanFrame> frames;
     std::string line;
     while (std::getline(in, line))
         if (line.find_first_not_of(" \t\r") != std::string::npos)
@@ -37,7 +37,7 @@ inline std::string readCorpus(std::string_view corpusPath) {
 
 // Feeds every frame and returns everything the receiver finished, then what finish() adds.
 inline std::vector<StreamOutcome> receiveAll(ConfigStreamReceiver& receiver,
-                                             const std::vector<cs2::CanFrame>& frames) {
+                                             const std::vector<can::CanFrame>& frames) {
     std::vector<StreamOutcome> outcomes;
     for (const auto& f : frames)
         for (auto& outcome : receiver.feed(f))
@@ -47,7 +47,7 @@ inline std::vector<StreamOutcome> receiveAll(ConfigStreamReceiver& receiver,
     return outcomes;
 }
 
-inline std::vector<StreamOutcome> receiveAll(const std::vector<cs2::CanFrame>& frames,
+inline std::vector<StreamOutcome> receiveAll(const std::vector<can::CanFrame>& frames,
                                              StreamLimits limits = {}) {
     ConfigStreamReceiver receiver(limits);
     return receiveAll(receiver, frames);

@@ -93,7 +93,7 @@ TEST_F(KeyboardIntents, AValueOutsideTheRangeIsRefusedWithoutSending) {
 }
 
 TEST_F(KeyboardIntents, ASilentDeviceGivesNoAnswer) {
-    QObject::disconnect(&bench.stationEnd, &can::Transport::framesReceived, &bench.station, nullptr);
+    QObject::disconnect(&bench.stationEnd, &transport::Transport::framesReceived, &bench.station, nullptr);
     QSignalSpy configured(&bench.railway, &Railway::deviceConfigured);
     bench.railway.configureDevice(CentralStationUid, PowerSupplyChannel, 0);
     ASSERT_TRUE(waitFor([&] { return configured.count() == 1; }));

@@ -101,7 +101,7 @@ TEST_F(LocomotiveIntents, FollowsWhatAnotherControllerDoes) {
 }
 
 TEST_F(LocomotiveIntents, AThousandSpeedAnswersInOneBatchGiveOneChangeSignal) {
-    std::vector<cs2::CanFrame> flood;
+    std::vector<can::CanFrame> flood;
     for (std::uint32_t address = 1; address <= 1000; ++address) {
         const cs2::LocoSpeed answer{cs2::LocId(0xC000 + address), std::uint16_t(address % 1000 + 1)};
         flood.push_back(cs2::encode(cs2::Message{0, true, 0x4711, answer}));

@@ -3,11 +3,11 @@
 // A simulated CS2 behind a loopback pair, a station session with its start-up on the other end, and the
 // railway model on top: the way the app runs, with the simulator as a real peer behind a transport.
 
-#include "can/LoopbackTransport.h"
 #include "model/Railway.h"
 #include "sim/SimulatedStation.h"
 #include "station/StartupSequence.h"
 #include "station/StationSession.h"
+#include "transport/LoopbackTransport.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -176,11 +176,11 @@ public:
     explicit ModelBench(sim::StationLayout layout = inlineLayout(),
                         sim::SimulatedStation::Options options = stationOptions())
         : station(std::move(layout), options), session(appEnd, fastSettings()), railway(session) {
-        can::LoopbackTransport::join(stationEnd, appEnd);
+        transport::LoopbackTransport::join(stationEnd, appEnd);
         QObject::connect(&station, &sim::SimulatedStation::framesEmitted, &stationEnd,
-                         [this](const std::vector<cs2::CanFrame>& frames) { stationEnd.sendBatch(frames); });
-        QObject::connect(&stationEnd, &can::Transport::framesReceived, &station,
-                         [this](const std::vector<cs2::CanFrame>& frames) {
+                         [this](const std::vector<can::CanFrame>& frames) { stationEnd.sendBatch(frames); });
+        QObject::connect(&stationEnd, &transport::Transport::framesReceived, &station,
+                         [this](const std::vector<can::CanFrame>& frames) {
                              for (const auto& frame : frames)
                                  if (!deaf)
                                      station.receive(frame);
@@ -203,8 +203,8 @@ public:
 
     // The station stays connected but hears nothing any more (and so answers nothing).
     bool deaf = false;
-    can::LoopbackTransport stationEnd{QStringLiteral("station")};
-    can::LoopbackTransport appEnd{QStringLiteral("app")};
+    transport::LoopbackTransport stationEnd{QStringLiteral("station")};
+    transport::LoopbackTransport appEnd{QStringLiteral("app")};
     sim::SimulatedStation station;
     station::StationSession session;
     Railway railway;

@@ -21,8 +21,8 @@ struct SwitchLog {
 
     explicit SwitchLog(ModelBench& bench) {
         clock.start();
-        QObject::connect(&bench.stationEnd, &can::Transport::framesReceived, &context,
-                         [this](const std::vector<cs2::CanFrame>& frames) {
+        QObject::connect(&bench.stationEnd, &transport::Transport::framesReceived, &context,
+                         [this](const std::vector<can::CanFrame>& frames) {
                              for (const auto& frame : frames) {
                                  const auto message = cs2::decode(frame);
                                  const auto* sw =
@@ -127,12 +127,12 @@ TEST_F(RouteRuns, ALostConnectionCancelsTheRouteAndNothingOfItIsSentLater) {
     EXPECT_FALSE(bench.railway.isStateReported());
     int switchings = 0;
     QObject::connect(&bench.station, &sim::SimulatedStation::frameReceived, &bench.railway,
-                     [&](const cs2::CanFrame& frame) {
+                     [&](const can::CanFrame& frame) {
                          const auto message = cs2::decode(frame);
                          switchings += message && std::holds_alternative<cs2::AccessorySwitch>(message->body);
                      });
     bench.stationEnd.open();
-    ASSERT_TRUE(waitFor([&] { return bench.appEnd.state() == can::Transport::State::Connected; }));
+    ASSERT_TRUE(waitFor([&] { return bench.appEnd.state() == transport::Transport::State::Connected; }));
     QTest::qWait(500); // longer than the route's remaining waits
     EXPECT_EQ(switchings, 0) << "switchings arrived after the loss";
 }

@@ -33,7 +33,7 @@ TEST(Feedback, SetContactEmitsTheEventAndTheQueryAnswersIt) {
     ASSERT_EQ(probe.batches.size(), 1u);
     ASSERT_EQ(probe.batches[0].size(), 1u);
     const CanFrame event = probe.batches[0][0];
-    EXPECT_EQ(event.id, CanFrame::makeId(0, 0x11, true, probe.station.hash()));
+    EXPECT_EQ(event.id, cs2::makeId(0, 0x11, true, probe.station.hash()));
     EXPECT_EQ(event.dlc, 8);
     const auto reported = std::get<cs2::S88Event>(probe.decoded(event).body);
     EXPECT_EQ(reported.contact, 12);

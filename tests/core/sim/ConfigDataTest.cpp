@@ -45,9 +45,9 @@ TEST(ConfigData, LoksIsAcknowledgedAndStreamedAsTheServedFile) {
     ASSERT_GE(answers.size(), 3u);
     const Frames ack = keyRequest("loks").frames(RequesterHash, true);
     EXPECT_EQ(answers[0], ack[0]) << "the request with the response bit";
-    EXPECT_EQ(answers[1].command(), 0x21);
+    EXPECT_EQ(cs2::command(answers[1]), 0x21);
     EXPECT_EQ(answers[1].dlc, 6) << "header of a stream to one requester";
-    EXPECT_EQ(answers[1].hash(), RequesterHash) << "streams carry the requester's hash (7.2)";
+    EXPECT_EQ(cs2::hash(answers[1]), RequesterHash) << "streams carry the requester's hash (7.2)";
     EXPECT_EQ(received(answers, "loks"), std::string(locomotives));
 }
 

@@ -56,14 +56,14 @@ std::vector<std::uint8_t> statusIndex(StationProbe& probe, std::uint32_t uid, st
     for (std::size_t i = 0; i + 1 < frames.size(); ++i) {
         const auto body = std::get<cs2::StatusDataConfig>(probe.decoded(frames[i]).body);
         EXPECT_EQ(body.form, cs2::StatusDataConfig::Form::Packet);
-        EXPECT_EQ(frames[i].hash(), 0x0301 + i);
+        EXPECT_EQ(cs2::hash(frames[i]), 0x0301 + i);
         EXPECT_EQ(frames[i].dlc, 8);
         bytes.insert(bytes.end(), body.packet.view().begin(), body.packet.view().end());
     }
     const CanFrame& last = frames.back();
     const auto end = std::get<cs2::StatusDataConfig>(probe.decoded(last).body);
     EXPECT_EQ(end.form, cs2::StatusDataConfig::Form::End);
-    EXPECT_EQ(last.hash(), probe.station.hash());
+    EXPECT_EQ(cs2::hash(last), probe.station.hash());
     EXPECT_EQ(end.packetCount, frames.size() - 1);
     EXPECT_EQ(end.index, index);
     return bytes;

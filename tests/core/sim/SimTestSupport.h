@@ -22,7 +22,7 @@ inline void PrintTo(const CanFrame& frame, std::ostream* out) {
 
 namespace stellwerk::sim::test {
 
-using cs2::CanFrame;
+using can::CanFrame;
 
 // The UID of the document's examples ("CS2 mit SNr. 08").
 inline constexpr std::uint32_t DocumentUid = 0x43533208;
@@ -148,7 +148,7 @@ public:
     // A document frame as the station's answer: the response bit and the station's hash.
     CanFrame answer(std::string_view documentLine) const {
         CanFrame result = frame(documentLine);
-        result.id = CanFrame::makeId(result.prio(), result.command(), true, station.hash());
+        result.id = cs2::makeId(cs2::prio(result), cs2::command(result), true, station.hash());
         return result;
     }
 

@@ -112,11 +112,11 @@ TEST(SystemCommands, AnotherSenderWithOurHashMakesTheStationChooseANewOne) {
     const std::uint16_t before = probe.station.hash();
     EXPECT_EQ(before, cs2::hashFromUid(DocumentUid));
     CanFrame clash = frame("00004711 5 00 00 00 00 01");
-    clash.id = CanFrame::makeId(0, 0x00, false, before);
+    clash.id = cs2::makeId(0, 0x00, false, before);
     const Frames answer = probe.send(clash);
     EXPECT_NE(probe.station.hash(), before);
     ASSERT_EQ(answer.size(), 1u);
-    EXPECT_EQ(answer[0].hash(), probe.station.hash());
+    EXPECT_EQ(cs2::hash(answer[0]), probe.station.hash());
 }
 
 TEST(SystemCommands, ResponsesOfOtherDevicesAreNotCommands) {

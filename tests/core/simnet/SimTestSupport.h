@@ -3,9 +3,9 @@
 // Helpers shared by the simulated station's network tests: commands as a client sends them, the S88
 // events a station emits, waiting on the event loop.
 
-#include "cs2/CanFrame.h"
 #include "cs2/Codec.h"
 #include "cs2/FrameText.h"
+#include "cs2/Header.h"
 #include "cs2/Messages.h"
 #include "sim/SimulatedStation.h"
 
@@ -33,23 +33,23 @@ inline bool waitFor(const std::function<bool()>& condition, int timeoutMs = Wait
     return QTest::qWaitFor(condition, timeoutMs);
 }
 
-inline cs2::CanFrame command(cs2::MessageBody body) {
+inline can::CanFrame command(cs2::MessageBody body) {
     return cs2::encode(cs2::Message{0, false, ClientHash, std::move(body)});
 }
 
-inline cs2::CanFrame speed(std::uint32_t locId, std::uint16_t value) {
+inline can::CanFrame speed(std::uint32_t locId, std::uint16_t value) {
     return command(cs2::LocoSpeed{cs2::LocId(locId), value});
 }
 
-inline cs2::CanFrame direction(std::uint32_t locId, cs2::Direction value) {
+inline can::CanFrame direction(std::uint32_t locId, cs2::Direction value) {
     return command(cs2::LocoDirection{cs2::LocId(locId), std::uint8_t(value)});
 }
 
-inline cs2::CanFrame switchAccessory(std::uint32_t locId, std::uint8_t position) {
+inline can::CanFrame switchAccessory(std::uint32_t locId, std::uint8_t position) {
     return command(cs2::AccessorySwitch{cs2::LocId(locId), position, 1, std::nullopt});
 }
 
-inline cs2::CanFrame ping() {
+inline can::CanFrame ping() {
     return command(cs2::Ping{});
 }
 
@@ -69,8 +69,8 @@ class ContactRecorder {
 public:
     explicit ContactRecorder(SimulatedStation& station) {
         QObject::connect(&station, &SimulatedStation::framesEmitted, &context_,
-                         [this](const std::vector<cs2::CanFrame>& frames) {
-                             for (const cs2::CanFrame& frame : frames)
+                         [this](const std::vector<can::CanFrame>& frames) {
+                             for (const can::CanFrame& frame : frames)
                                  record(frame);
                          });
     }
@@ -78,7 +78,7 @@ public:
     std::vector<ContactEvent> events;
 
 private:
-    void record(const cs2::CanFrame& frame) {
+    void record(const can::CanFrame& frame) {
         const cs2::DecodeResult decoded = cs2::decode(frame);
         if (!decoded)
             return;

@@ -4,12 +4,12 @@
 #include "sim/StationServer.h"
 
 #include "SimTestSupport.h"
-#include "can/FrameAssembler.h"
-#include "can/NetworkFraming.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
 #include "sim/TrainMovement.h"
 #include "sim/TrainTrack.h"
+#include "transport/FrameAssembler.h"
+#include "transport/NetworkFraming.h"
 
 #include <QNetworkDatagram>
 #include <QTcpSocket>
@@ -22,7 +22,7 @@
 namespace stellwerk::sim {
 namespace {
 
-using cs2::CanFrame;
+using can::CanFrame;
 
 constexpr std::uint32_t Br218 = 0x4001;
 
@@ -32,7 +32,7 @@ public:
     explicit Client(std::uint16_t port) {
         socket_.connectToHost(QHostAddress::LocalHost, port);
         QObject::connect(&socket_, &QTcpSocket::readyRead, &socket_,
-                         [this] { assembler_.feed(can::asBytes(socket_.readAll()), frames); });
+                         [this] { assembler_.feed(transport::asBytes(socket_.readAll()), frames); });
     }
 
     bool connected() {
@@ -51,7 +51,7 @@ public:
 private:
     static constexpr int WaitMs = test::WaitMs;
     QTcpSocket socket_;
-    can::FrameAssembler assembler_;
+    transport::FrameAssembler assembler_;
 };
 
 // A station answering on loopback ports picked by the system; UDP replies go to `udpPeer_`.
@@ -74,7 +74,7 @@ protected:
         while (udpPeer_.hasPendingDatagrams()) {
             const QByteArray datagram = udpPeer_.receiveDatagram().data();
             udpDatagramSizes_.push_back(datagram.size());
-            can::decodeDatagram(can::asBytes(datagram), udpFrames_);
+            transport::decodeDatagram(transport::asBytes(datagram), udpFrames_);
         }
     }
 
@@ -97,7 +97,7 @@ protected:
 };
 
 bool isPingAnswer(const CanFrame& frame) {
-    return frame.command() == 0x18 && frame.isResponse();
+    return cs2::command(frame) == 0x18 && cs2::isResponse(frame);
 }
 
 TEST_F(StationServerTest, ListensOnThePortsItWasGiven) {
@@ -110,10 +110,10 @@ TEST_F(StationServerTest, FrameFromOneTcpClientReachesTheStationAndItsAnswerReac
     auto first = connectClient();
     auto second = connectClient();
     ASSERT_TRUE(test::waitFor([&] { return server_->tcpClientCount() == 2; }));
-    first->send(can::encodeFrames(std::vector{test::speed(Br218, 400)}));
+    first->send(transport::encodeFrames(std::vector{test::speed(Br218, 400)}));
     ASSERT_TRUE(test::waitFor([&] { return station_.loco(Br218) && station_.loco(Br218)->speed == 400; }));
 
-    first->send(can::encodeFrames(std::vector{test::ping()}));
+    first->send(transport::encodeFrames(std::vector{test::ping()}));
     EXPECT_TRUE(
         test::waitFor([&] { return first->received(isPingAnswer) && second->received(isPingAnswer); }));
     // The gateway puts a client's frame on the bus: the other client sees it, the sender does not get it
@@ -124,7 +124,7 @@ TEST_F(StationServerTest, FrameFromOneTcpClientReachesTheStationAndItsAnswerReac
 
 TEST_F(StationServerTest, FramesSplitAcrossTcpSegmentsAreReassembled) {
     auto client = connectClient();
-    const QByteArray bytes = can::encodeFrames(std::vector{test::speed(Br218, 250), test::ping()});
+    const QByteArray bytes = transport::encodeFrames(std::vector{test::speed(Br218, 250), test::ping()});
     for (qsizetype start = 0; start < bytes.size(); start += 5) { // 26 bytes in pieces of 5
         client->send(bytes.mid(start, 5));
         QTest::qWait(5);
@@ -137,15 +137,15 @@ TEST_F(StationServerTest, FramesSplitAcrossTcpSegmentsAreReassembled) {
 
 TEST_F(StationServerTest, TcpFrameWithDlcAboveEightIsCountedAndDropped) {
     auto client = connectClient();
-    QByteArray broken = can::encodeFrames(std::vector{test::ping()});
+    QByteArray broken = transport::encodeFrames(std::vector{test::ping()});
     broken[4] = 9;
-    client->send(broken + can::encodeFrames(std::vector{test::ping()}));
+    client->send(broken + transport::encodeFrames(std::vector{test::ping()}));
     EXPECT_TRUE(test::waitFor([&] { return server_->counters().framesIn == 1; }));
     EXPECT_EQ(server_->counters().malformedFrames, 1U);
 }
 
 TEST_F(StationServerTest, UdpDatagramOfSeveralFramesIsAcceptedAndAnsweredOnePerDatagram) {
-    ASSERT_TRUE(sendUdp(can::encodeFrames(std::vector{test::speed(Br218, 700), test::ping()})));
+    ASSERT_TRUE(sendUdp(transport::encodeFrames(std::vector{test::speed(Br218, 700), test::ping()})));
     EXPECT_TRUE(test::waitFor([&] { return std::ranges::any_of(udpFrames_, isPingAnswer); }));
     ASSERT_NE(station_.loco(Br218), nullptr);
     EXPECT_EQ(station_.loco(Br218)->speed, 700);
@@ -156,7 +156,7 @@ TEST_F(StationServerTest, UdpDatagramOfSeveralFramesIsAcceptedAndAnsweredOnePerD
 
 TEST_F(StationServerTest, UdpDatagramThatIsNotWholeFramesIsCountedAndDropped) {
     ASSERT_TRUE(sendUdp(QByteArray("garbage, not a CAN frame")));
-    ASSERT_TRUE(sendUdp(can::encodeFrames(std::vector{test::ping()})));
+    ASSERT_TRUE(sendUdp(transport::encodeFrames(std::vector{test::ping()})));
     EXPECT_TRUE(test::waitFor([&] { return server_->counters().framesIn == 1; }));
     EXPECT_EQ(server_->counters().malformedDatagrams, 1U);
 }
@@ -164,7 +164,7 @@ TEST_F(StationServerTest, UdpDatagramThatIsNotWholeFramesIsCountedAndDropped) {
 TEST_F(StationServerTest, FrameFromUdpIsForwardedToTcpClients) {
     auto client = connectClient();
     ASSERT_TRUE(test::waitFor([&] { return server_->tcpClientCount() == 1; }));
-    ASSERT_TRUE(sendUdp(can::encodeFrames(std::vector{test::ping()})));
+    ASSERT_TRUE(sendUdp(transport::encodeFrames(std::vector{test::ping()})));
     EXPECT_TRUE(test::waitFor([&] {
         return client->received([](const CanFrame& f) { return f == test::ping(); }) &&
                client->received(isPingAnswer);
@@ -176,7 +176,7 @@ TEST_F(StationServerTest, FramesTheStationEmitsOnItsOwnReachEveryListener) {
     auto second = connectClient();
     ASSERT_TRUE(test::waitFor([&] { return server_->tcpClientCount() == 2; }));
     station_.setContact(0, 42, true); // as the train movement does
-    const auto isEvent = [](const CanFrame& f) { return f.command() == 0x11 && f.data[3] == 42; };
+    const auto isEvent = [](const CanFrame& f) { return cs2::command(f) == 0x11 && f.data[3] == 42; };
     EXPECT_TRUE(test::waitFor([&] {
         return first->received(isEvent) && second->received(isEvent) &&
                std::ranges::any_of(udpFrames_, isEvent);
@@ -192,11 +192,11 @@ TEST_F(StationServerTest, TrainStartedByATcpClientReportsItsContactsToEveryListe
     auto driver = connectClient();
     auto watcher = connectClient();
     ASSERT_TRUE(test::waitFor([&] { return server_->tcpClientCount() == 2; }));
-    driver->send(can::encodeFrames(std::vector{test::speed(Br218, 1000)}));
+    driver->send(transport::encodeFrames(std::vector{test::speed(Br218, 1000)}));
     // Ausfahrt Ost (contact 8) occupied: the S88 event, with old and new state, as a Link-S88 sends it.
     const auto occupiedAusfahrtOst = [](const CanFrame& f) {
-        return f.command() == 0x11 && f.isResponse() && f.dlc == 8 && f.data[3] == 8 && f.data[4] == 0 &&
-               f.data[5] == 1;
+        return cs2::command(f) == 0x11 && cs2::isResponse(f) && f.dlc == 8 && f.data[3] == 8 &&
+               f.data[4] == 0 && f.data[5] == 1;
     };
     EXPECT_TRUE(test::waitFor([&] {
         return driver->received(occupiedAusfahrtOst) && watcher->received(occupiedAusfahrtOst) &&

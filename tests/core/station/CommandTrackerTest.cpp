@@ -39,7 +39,7 @@ TEST(CommandTracker, AnAnswerForAnotherLocIdDoesNotCompleteOurs) {
     Bench bench;
     bench.station.script = [](const CanFrame& f) {
         // Another loco's acknowledgement, carrying our hash: matching by hash alone would accept it.
-        return std::vector<CanFrame>{frame(0x04, true, f.hash(), {0, 0, 0x40, 0x07, 0x01, 0xF4})};
+        return std::vector<CanFrame>{frame(0x04, true, cs2::hash(f), {0, 0, 0x40, 0x07, 0x01, 0xF4})};
     };
     Outcome outcome;
     bench.session.request(speed(0x4006, 500), outcome.callback(), CommandPolicy{60ms, 0});

@@ -4,12 +4,12 @@
 // document says (acknowledgement = the command with the response bit; ping with its identity; files as
 // 0x21 streams; status data as packets and an end frame), and can be told to stay silent.
 
-#include "can/LoopbackTransport.h"
 #include "cs2/Codec.h"
 #include "cs2/FrameText.h"
 #include "cs2/Hash.h"
 #include "cs2config/ConfigStreamSender.h"
 #include "station/StationSession.h"
+#include "transport/LoopbackTransport.h"
 
 #include <QTest>
 #include <functional>
@@ -28,7 +28,7 @@ inline void PrintTo(const CanFrame& frame, std::ostream* out) {
 
 namespace stellwerk::station::test {
 
-using cs2::CanFrame;
+using can::CanFrame;
 using namespace std::chrono_literals;
 
 // Long enough for a loaded two-core machine; waits end as soon as the condition holds.
@@ -41,14 +41,14 @@ inline bool waitFor(const std::function<bool()>& condition, int timeoutMs = Wait
 inline CanFrame frame(std::uint8_t command, bool response, std::uint16_t hash,
                       std::initializer_list<std::uint8_t> data) {
     CanFrame result;
-    result.id = CanFrame::makeId(0, command, response, hash);
+    result.id = cs2::makeId(0, command, response, hash);
     result.dlc = std::uint8_t(data.size());
     std::copy(data.begin(), data.end(), result.data.begin());
     return result;
 }
 
 inline CanFrame asAnswer(CanFrame frame, std::uint16_t hash) {
-    frame.id = CanFrame::makeId(frame.prio(), frame.command(), true, hash);
+    frame.id = cs2::makeId(cs2::prio(frame), cs2::command(frame), true, hash);
     return frame;
 }
 
@@ -59,7 +59,7 @@ public:
     static constexpr std::uint16_t Hash = 0x9719;
 
     ScriptedStation() {
-        QObject::connect(&end, &can::Transport::framesReceived, &context_,
+        QObject::connect(&end, &transport::Transport::framesReceived, &context_,
                          [this](const std::vector<CanFrame>& frames) {
                              for (const auto& f : frames)
                                  handle(f);
@@ -78,17 +78,17 @@ public:
     std::size_t count(cs2::Command command) const {
         std::size_t n = 0;
         for (const auto& f : received)
-            n += f.command() == std::uint8_t(command) && !f.isResponse();
+            n += cs2::command(f) == std::uint8_t(command) && !cs2::isResponse(f);
         return n;
     }
 
     void sendToApp(const std::vector<CanFrame>& frames) { end.sendBatch(frames); }
 
-    can::LoopbackTransport end{QStringLiteral("station")};
+    transport::LoopbackTransport end{QStringLiteral("station")};
 
 private:
     void handle(const CanFrame& f) {
-        if (f.isResponse())
+        if (cs2::isResponse(f))
             return;
         received.push_back(f);
         if (silent)
@@ -101,7 +101,7 @@ private:
     }
 
     std::vector<CanFrame> documentAnswer(const CanFrame& f) const {
-        switch (cs2::Command(f.command())) {
+        switch (cs2::Command(cs2::command(f))) {
         case cs2::Command::Ping:
             return pingAnswers();
         case cs2::Command::ConfigDataRequest:
@@ -144,7 +144,7 @@ private:
         const auto it = files.find(key);
         if (it == files.end()) // the station acknowledges but has no such file: no stream follows
             return {asAnswer(f, Hash)};
-        return cs2config::answerFrames(*cs2config::ConfigRequest::forKey(key), it->second, f.hash());
+        return cs2config::answerFrames(*cs2config::ConfigRequest::forKey(key), it->second, cs2::hash(f));
     }
 
     std::vector<CanFrame> statusAnswer(const CanFrame& f) const {
@@ -175,7 +175,7 @@ private:
 // The application end with a session, joined to a scripted station; both ends open.
 struct Bench {
     explicit Bench(StationSettings settings = fastSettings()) : session(app, settings) {
-        can::LoopbackTransport::join(app, station.end);
+        transport::LoopbackTransport::join(app, station.end);
         app.open();
         station.end.open();
     }
@@ -189,7 +189,7 @@ struct Bench {
         return settings;
     }
 
-    can::LoopbackTransport app{QStringLiteral("app")};
+    transport::LoopbackTransport app{QStringLiteral("app")};
     ScriptedStation station;
     StationSession session;
 };

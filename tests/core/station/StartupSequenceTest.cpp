@@ -82,7 +82,7 @@ TEST(StartupSequence, ListsDevicesDownloadsTheLayoutAndAsksForTheCurrentStates) 
     EXPECT_EQ(bench.station.count(cs2::Command::LocoFunction), 2u);
     ASSERT_EQ(bench.station.count(cs2::Command::S88Event), 1u);
     for (const auto& f : bench.station.received)
-        if (f.command() == std::uint8_t(cs2::Command::S88Event)) {
+        if (cs2::command(f) == std::uint8_t(cs2::Command::S88Event)) {
             EXPECT_EQ(f.dlc, 4) << "the query form";
             EXPECT_EQ(word(f, 0), 0x100u);
             EXPECT_EQ(word(f, 2), 7u);
@@ -103,10 +103,10 @@ TEST(StartupSequence, GleisboxWakeUpSendsGoAndEnablesTheTrackProtocols) {
     ASSERT_TRUE(waitFor([&] { return ready.count() == 1; }));
     ASSERT_EQ(bench.station.count(cs2::Command::BootloaderCan), 1u);
     for (const auto& f : bench.station.received) {
-        if (f.command() == std::uint8_t(cs2::Command::BootloaderCan)) {
+        if (cs2::command(f) == std::uint8_t(cs2::Command::BootloaderCan)) {
             EXPECT_EQ(f, frame(0x1B, false, bench.session.identity().hash(), {0, 0, 0, 0, 0x11}));
         }
-        if (f.command() == std::uint8_t(cs2::Command::System)) {
+        if (cs2::command(f) == std::uint8_t(cs2::Command::System)) {
             EXPECT_EQ(f, frame(0x00, false, bench.session.identity().hash(), {0, 0, 0, 0, 0x08, 0x07}));
         }
     }
