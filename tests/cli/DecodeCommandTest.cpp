@@ -42,10 +42,27 @@ TEST(CliDecode, ReadsStdinSkippingBlankAndCommentLines) {
 TEST(CliDecode, JsonLinesCarryTheAgreedKeys) {
     const auto run = decode({"--json", "00084711 6 00 00 C0 03 01 20"});
     EXPECT_EQ(run.status, 0);
-    EXPECT_EQ(run.out,
-              "{\"id\":\"00084711\",\"prio\":0,\"command\":4,\"response\":false,\"hash\":\"4711\",\"dlc\":6,"
-              "\"data\":\"0000C0030120\",\"name\":\"loco.speed\",\"fields\":{\"locId\":\"0xC003\","
-              "\"protocol\":\"dcc\",\"address\":3,\"speed\":288}}\n");
+    EXPECT_EQ(run.out, "{\"protocol\":\"cs2\",\"id\":\"00084711\",\"prio\":0,\"command\":4,\"response\":"
+                       "false,\"hash\":\"4711\",\"dlc\":6,"
+                       "\"data\":\"0000C0030120\",\"name\":\"loco.speed\",\"fields\":{\"locId\":\"0xC003\","
+                       "\"protocol\":\"dcc\",\"address\":3,\"speed\":288}}\n");
+}
+
+// Standard (11-bit) frames belong to no protocol of a CS2 bus: shown as foreign, with their id in 3 digits.
+TEST(CliDecode, StandardFramesAreShownAsForeign) {
+    const auto text = decode({"123#0102"});
+    EXPECT_EQ(text.status, 0);
+    EXPECT_EQ(text.out, "123 2 01 02  foreign 11-bit frame (no protocol of a CS2 bus)\n");
+    const auto json = decode({"--json", "can0  7FF   [1]  AB"});
+    EXPECT_EQ(json.out,
+              "{\"protocol\":\"foreign\",\"id\":\"7FF\",\"extended\":false,\"dlc\":1,\"data\":\"AB\"}\n");
+}
+
+// candump -x prints the direction and flags between the interface and the identifier.
+TEST(CliDecode, ReadsCandumpExtraDetailLines) {
+    const auto run = decode({}, "  can0  RX - -  00004711   [5]  00 00 00 00 00\n");
+    EXPECT_EQ(run.status, 0);
+    EXPECT_EQ(run.out, "00004711 5 00 00 00 00 00  system.stop uid=0x00000000 subcommand=0x00\n");
 }
 
 TEST(CliDecode, BadFramesAreReportedAndTheRestStillDecode) {

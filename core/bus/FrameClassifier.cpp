@@ -1,0 +1,50 @@
+#include "bus/FrameClassifier.h"
+
+#include <algorithm>
+
+namespace stellwerk::bus {
+
+namespace {
+
+// The CS2 protocol (document 1.2) uses 29-bit identifiers only; which command the frame carries is
+// the codec's business (an unknown command is still a CS2 frame the monitor shows as such).
+bool claimsCs2(const can::CanFrame& frame) {
+    return frame.extended;
+}
+
+bool claims(Protocol protocol, const can::CanFrame& frame) {
+    switch (protocol) {
+    case Protocol::Cs2:
+        return claimsCs2(frame);
+    case Protocol::Foreign:
+        return false;
+    }
+    return false;
+}
+
+} // namespace
+
+std::string_view protocolName(Protocol protocol) {
+    switch (protocol) {
+    case Protocol::Cs2:
+        return "cs2";
+    case Protocol::Foreign:
+        return "foreign";
+    }
+    return "foreign";
+}
+
+BusProfile::BusProfile(std::initializer_list<Protocol> protocols) : protocols_(protocols) {}
+
+bool BusProfile::expects(Protocol protocol) const {
+    return std::find(protocols_.begin(), protocols_.end(), protocol) != protocols_.end();
+}
+
+Protocol classify(const can::CanFrame& frame, const BusProfile& profile) {
+    for (const Protocol protocol : profile.protocols())
+        if (claims(protocol, frame))
+            return protocol;
+    return Protocol::Foreign;
+}
+
+} // namespace stellwerk::bus

@@ -1,0 +1,38 @@
+#pragma once
+
+#include "can/CanFrame.h"
+
+#include <initializer_list>
+#include <string_view>
+#include <vector>
+
+namespace stellwerk::bus {
+
+// The protocols Stellwerk knows on a CAN bus. Foreign: a frame no enabled protocol claims (another
+// program's, a device Stellwerk does not speak to, or garbage); it is counted and shown, never dropped.
+enum class Protocol { Cs2, Foreign };
+
+// The short name used in JSON and filters: "cs2", "foreign".
+std::string_view protocolName(Protocol protocol);
+
+// What protocols are expected on one bus, in the order they are asked to claim a frame (the more
+// specific first). The CS2 over TCP/UDP: CS2 only; a USB-CAN adapter may add the protocols of the
+// modules wired to it, as their codecs arrive.
+class BusProfile {
+public:
+    BusProfile(std::initializer_list<Protocol> protocols);
+    // The profile of a bus behind a CS2/CS3 or Gleisbox: the CS2 protocol.
+    static BusProfile centralStation() { return BusProfile{Protocol::Cs2}; }
+
+    const std::vector<Protocol>& protocols() const { return protocols_; }
+    bool expects(Protocol protocol) const;
+
+private:
+    std::vector<Protocol> protocols_;
+};
+
+// Which protocol a frame belongs to on a bus with this profile: the first protocol of the profile that
+// claims it, else Foreign. Pure: the same frame and profile always give the same answer.
+Protocol classify(const can::CanFrame& frame, const BusProfile& profile);
+
+} // namespace stellwerk::bus
