@@ -40,7 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!parsed)
         return 0;
     const CanFrame& frame = parsed->frame;
-    fuzz::check((frame.id & ~CanFrame::ExtendedIdMask) == 0, "an identifier above 29 bits was read",
+    fuzz::check((frame.id & ~frame.idMask()) == 0, "an identifier wider than its format was read",
                 std::string(line));
     if (parsed->notation == FrameNotation::Network || parsed->notation == FrameNotation::Candump)
         fuzz::check(frame.dlc <= 8, "a DLC above 8 was read from the network or candump notation",
@@ -49,6 +49,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!frame.isWellFormed())
         return 0;
     checkReadsBack(frame, formatCandump(frame));
-    checkReadsBack(frame, formatNetwork(frame));
+    if (frame.fitsNetworkForm()) // the network form carries extended frames only
+        checkReadsBack(frame, formatNetwork(frame));
     return 0;
 }
