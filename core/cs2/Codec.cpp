@@ -66,6 +66,9 @@ DecodeResult decode(const CanFrame& frame) {
     if (frame.dlc > 8)
         return DecodeError{DecodeErrorKind::DlcOutOfRange, cs2::command(frame), frame.dlc,
                            "a CAN frame has at most 8 data bytes"};
+    if (!frame.extended)
+        return DecodeError{DecodeErrorKind::IdOutOfRange, cs2::command(frame), frame.dlc,
+                           "a CS2 frame has a 29-bit identifier; this is a standard (11-bit) frame"};
     if (frame.id & ~CanFrame::ExtendedIdMask)
         return DecodeError{DecodeErrorKind::IdOutOfRange, cs2::command(frame), frame.dlc,
                            "a CAN identifier has 29 bits; bits 29..31 must be zero"};

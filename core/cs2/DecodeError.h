@@ -9,7 +9,7 @@ namespace stellwerk::cs2 {
 // The classes of input the decoder refuses; each carries enough context to say what was wrong.
 enum class DecodeErrorKind : std::uint8_t {
     DlcOutOfRange,    // DLC above 8: a broken sender
-    IdOutOfRange,     // identifier bits above bit 28 set (only possible in the 13-byte form)
+    IdOutOfRange,     // identifier bits above bit 28 set (13-byte form), or a standard 11-bit identifier
     TooShort,         // fewer data bytes than the command's shortest form
     UnexpectedLength, // a DLC that none of the command's forms has
     ReservedValue,    // a value the document reserves or excludes

@@ -1,5 +1,6 @@
 #include "station/StationSession.h"
 
+#include "bus/FrameClassifier.h"
 #include "cs2/Codec.h"
 
 namespace stellwerk::station {
@@ -87,6 +88,12 @@ void StationSession::receive(const std::vector<can::CanFrame>& frames) {
 
 void StationSession::receiveFrame(const can::CanFrame& frame) {
     ++counters_.frames;
+    // Another protocol's frame (a module on a shared CAN bus) must neither be read as a CS2 command (an
+    // 11-bit frame looks like a system command) nor look like a hash collision.
+    if (bus::classify(frame, bus::BusProfile::centralStation()) != bus::Protocol::Cs2) {
+        ++counters_.foreign;
+        return;
+    }
     if (const auto newHash = identity_.observe(frame)) {
         ++counters_.hashCollisions;
         emit hashChanged(cs2::hash(frame), *newHash);

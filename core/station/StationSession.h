@@ -30,6 +30,7 @@ struct StationSettings {
 struct SessionCounters {
     std::uint64_t frames = 0;
     std::uint64_t undecodable = 0;
+    std::uint64_t foreign = 0; // frames of another protocol on the bus (standard 11-bit ones), ignored
     std::uint64_t answersMatched = 0;
     std::uint64_t hashCollisions = 0;
 };

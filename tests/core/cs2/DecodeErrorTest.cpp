@@ -82,6 +82,14 @@ TEST(DecodeError, MessagesNameTheCommandRuleAndLength) {
     EXPECT_EQ(error.message(), "unexpected length 5: loco.speed has 4 (query) or 6 data bytes");
 }
 
+// An 11-bit frame of another protocol would otherwise read as a system command (command bits 0).
+TEST(DecodeError, StandardFramesAreNotCs2Frames) {
+    const std::uint8_t stopLike[5] = {};
+    const auto result = decode(CanFrame::standard(0x000, stopLike));
+    ASSERT_FALSE(result.hasValue());
+    EXPECT_EQ(result.error().kind, DecodeErrorKind::IdOutOfRange);
+}
+
 TEST(DecodeError, UnknownCommandsAreNotErrors) {
     for (std::uint8_t command : {0x09, 0x0A, 0x0D, 0x13, 0x1E, 0x31, 0x42, 0x7F, 0xFF}) {
         CanFrame input{stellwerk::cs2::makeId(0, command, false, 0x4711), 3, {1, 2, 3}};

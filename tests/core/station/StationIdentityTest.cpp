@@ -43,6 +43,23 @@ TEST(StationIdentity, ForeignCommandWithOurHashChoosesANewHash) {
     EXPECT_EQ(cs2::hash(bench.station.received.back()), fresh) << "we send with the new hash";
 }
 
+// A module of another protocol on a shared CAN bus sends an 11-bit frame whose id is our hash and whose
+// payload looks like "system stop": it is counted as foreign and changes nothing.
+TEST(StationIdentity, StandardFramesOfAnotherProtocolAreIgnored) {
+    Bench bench;
+    QSignalSpy changed(&bench.session, &StationSession::hashChanged);
+    QSignalSpy updates(&bench.session, &StationSession::updated);
+    const std::uint16_t own = bench.session.identity().hash();
+    const std::uint8_t stopLike[5] = {};
+    bench.station.sendToApp({can::CanFrame::standard(own & 0x7FF, stopLike)});
+    ASSERT_TRUE(waitFor([&] { return bench.session.counters().frames == 1; }));
+    EXPECT_EQ(bench.session.counters().foreign, 1u);
+    EXPECT_EQ(bench.session.counters().undecodable, 0u);
+    EXPECT_EQ(changed.count(), 0);
+    EXPECT_EQ(updates.count(), 0) << "nothing reached the model";
+    EXPECT_EQ(bench.session.identity().hash(), own);
+}
+
 TEST(StationIdentity, AnswersAndEchoesOfOurOwnFramesAreNoCollision) {
     Bench bench;
     QSignalSpy changed(&bench.session, &StationSession::hashChanged);
