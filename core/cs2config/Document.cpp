@@ -2,6 +2,8 @@
 
 #include "cs2config/DocumentParser.h"
 
+#include <utility>
+
 namespace stellwerk::cs2config {
 
 namespace {
@@ -11,6 +13,10 @@ void endLastLine(Node& node, const LineStyle& style) {
     Node& last = node.lastLine();
     if (last.kind() != Node::Kind::Root && last.ending() == Node::Ending::None)
         last.setEnding(Node::newlineOf(style));
+}
+
+bool isRecord(const Node& node, std::string_view keyword) {
+    return node.isEntry() && node.level() == 0 && node.key() == keyword;
 }
 
 } // namespace
@@ -35,6 +41,33 @@ Node Document::newRecord(std::string_view keyword) const {
     return Node::entry(0, keyword, std::nullopt, style_);
 }
 
+std::vector<const Node*> Document::records(std::string_view keyword) const {
+    std::vector<const Node*> found;
+    for (const Node& node : root_.children())
+        if (isRecord(node, keyword))
+            found.push_back(&node);
+    return found;
+}
+
+std::vector<Node*> Document::records(std::string_view keyword) {
+    std::vector<Node*> found;
+    for (Node& node : root_.children())
+        if (isRecord(node, keyword))
+            found.push_back(&node);
+    return found;
+}
+
+const Node* Document::record(std::string_view keyword) const {
+    for (const Node& node : root_.children())
+        if (isRecord(node, keyword))
+            return &node;
+    return nullptr;
+}
+
+Node* Document::record(std::string_view keyword) {
+    return const_cast<Node*>(std::as_const(*this).record(keyword));
+}
+
 void Document::replaceRecords(std::string_view keyword, std::vector<Node> records) {
     std::vector<Node>& top = root_.children();
     const bool noFinalNewline = !top.empty() && root_.lastLine().ending() == Node::Ending::None;
@@ -44,7 +77,7 @@ void Document::replaceRecords(std::string_view keyword, std::vector<Node> record
     std::size_t afterLastSlot = 0;
     for (Node& node : top) {
         // Only records (level 0): a stray ".keyword" line outside any record stays where it is.
-        if (!(node.isEntry() && node.level() == 0 && node.key() == keyword)) {
+        if (!isRecord(node, keyword)) {
             kept.push_back(std::move(node));
             continue;
         }

@@ -37,11 +37,12 @@ public:
     const Node& root() const { return root_; }
 
     // The level-0 records with this keyword ("lokomotive", "element", ...), in file order.
-    std::vector<const Node*> records(std::string_view keyword) const { return root_.all(keyword); }
-    std::vector<Node*> records(std::string_view keyword) { return root_.all(keyword); }
+    // A stray ".keyword" line outside any record is not a record.
+    std::vector<const Node*> records(std::string_view keyword) const;
+    std::vector<Node*> records(std::string_view keyword);
     // The first record with this keyword, or null.
-    const Node* record(std::string_view keyword) const { return root_.find(keyword); }
-    Node* record(std::string_view keyword) { return root_.find(keyword); }
+    const Node* record(std::string_view keyword) const;
+    Node* record(std::string_view keyword);
 
     // Replaces the records with this keyword by the given ones: the n-th new record takes the place
     // of the n-th old one, further ones follow the last old one (or go at the end when there was

@@ -171,6 +171,20 @@ TEST(Cs2Command, FormatKeepsStrayRecordLinesAsTheWarningSays) {
     }
 }
 
+// Issue 11 (found by the long cs2_document run): a stray ".lokomotive" line outside any record was
+// read as a locomotive, and `cs2 format` then wrote it twice.
+TEST(Cs2Command, StrayLocomotiveLineIsNotALocomotive) {
+    const std::string bytes = "[lokomotive]\n.lokomotive\nlokomotive\n .name=BR 01\n .uid=0x4001\n";
+    const ScratchFile file("lokomotive.cs2", bytes);
+    const Outcome format = cs2({"format", file.path()});
+    EXPECT_EQ(format.status, 0) << format.err;
+    EXPECT_EQ(format.out, bytes);
+    const Outcome json = cs2({"json", file.path()});
+    EXPECT_EQ(json.status, 0) << json.err;
+    EXPECT_NE(json.out.find("\"BR 01\""), std::string::npos) << json.out;
+    EXPECT_EQ(json.out.find("\"name\":\"\""), std::string::npos) << json.out;
+}
+
 // Issue 11 (found by fuzzing): "#cc" in a CS3 loco file became the byte 0xCC, and `cs2 json` wrote
 // invalid UTF-8. Escaped bytes above 0x7F are Latin-1 characters unless they form UTF-8.
 TEST(Cs2Command, JsonOfCs3EscapesIsUtf8) {
