@@ -53,7 +53,7 @@ std::optional<cs2::Protocol> accessoryProtocol(std::string_view name) {
 
 } // namespace
 
-cs2::Expected<cs2::LocId, std::string> parseLocomotive(std::string_view text) {
+Expected<cs2::LocId, std::string> parseLocomotive(std::string_view text) {
     const auto [protocolName, addressText] = splitProtocol(text);
     const auto address = parseNumber(addressText);
     if (protocolName.empty()) {
@@ -75,7 +75,7 @@ cs2::Expected<cs2::LocId, std::string> parseLocomotive(std::string_view text) {
     return *id;
 }
 
-cs2::Expected<cs2::LocId, std::string> parseAccessory(std::string_view text) {
+Expected<cs2::LocId, std::string> parseAccessory(std::string_view text) {
     const auto [protocolName, addressText] = splitProtocol(text);
     bool hex = false;
     const auto address = parseNumber(addressText, &hex);
@@ -116,7 +116,7 @@ std::string accessoryText(cs2::LocId article) {
     }
 }
 
-cs2::Expected<cs2::Direction, std::string> parseDirection(std::string_view text) {
+Expected<cs2::Direction, std::string> parseDirection(std::string_view text) {
     if (text == "forward" || text == "1")
         return cs2::Direction::Forward;
     if (text == "backward" || text == "2")
@@ -139,14 +139,14 @@ std::string_view directionText(std::uint8_t direction) {
     }
 }
 
-cs2::Expected<std::uint16_t, std::string> parseSpeed(std::string_view text) {
+Expected<std::uint16_t, std::string> parseSpeed(std::string_view text) {
     const auto speed = parseNumber(text);
     if (!speed || *speed > 1000)
         return "speed " + quoted(text) + " is not a number from 0 to 1000";
     return std::uint16_t(*speed);
 }
 
-cs2::Expected<std::uint8_t, std::string> parseFunctionNumber(std::string_view text) {
+Expected<std::uint8_t, std::string> parseFunctionNumber(std::string_view text) {
     if (!text.empty() && (text[0] == 'f' || text[0] == 'F'))
         text.remove_prefix(1);
     const auto number = parseNumber(text);
@@ -155,7 +155,7 @@ cs2::Expected<std::uint8_t, std::string> parseFunctionNumber(std::string_view te
     return std::uint8_t(*number);
 }
 
-cs2::Expected<bool, std::string> parseOnOff(std::string_view text) {
+Expected<bool, std::string> parseOnOff(std::string_view text) {
     if (text == "on" || text == "1")
         return true;
     if (text == "off" || text == "0")
@@ -163,7 +163,7 @@ cs2::Expected<bool, std::string> parseOnOff(std::string_view text) {
     return "function value " + quoted(text) + " is not on or off";
 }
 
-cs2::Expected<std::uint8_t, std::string> parsePosition(std::string_view text) {
+Expected<std::uint8_t, std::string> parsePosition(std::string_view text) {
     static constexpr std::array<std::pair<std::string_view, std::uint8_t>, 13> Names{{
         {"red", 0},
         {"round", 0},
@@ -190,7 +190,7 @@ cs2::Expected<std::uint8_t, std::string> parsePosition(std::string_view text) {
     return std::uint8_t(*number);
 }
 
-cs2::Expected<std::uint32_t, std::string> parseUid(std::string_view text) {
+Expected<std::uint32_t, std::string> parseUid(std::string_view text) {
     const auto uid = parseNumber(text);
     if (!uid)
         return "UID " + quoted(text) + " is not a number (decimal or 0x...)";

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "transport/Transport.h"
-#include "cs2/Expected.h"
+#include "base/Expected.h"
 #include "station/StationSession.h"
+#include "transport/Transport.h"
 
 #include <QEventLoop>
 #include <QObject>
@@ -27,7 +27,7 @@ struct StationJob {
     std::function<void(StationClient& client)> start;
     std::optional<std::chrono::milliseconds> limit;
 };
-using ParsedJob = cs2::Expected<StationJob, std::string>;
+using ParsedJob = Expected<StationJob, std::string>;
 
 // How patient the command line is with a station.
 struct ClientSettings {

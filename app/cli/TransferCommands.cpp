@@ -72,7 +72,7 @@ ParsedJob download(const Arguments& a, std::ostream& out, std::ostream& err) {
     options.key = positional[0];
     options.qualifier = positional.size() > 1 ? positional[1] : "";
     const auto request = options.key == "lokinfo"
-                             ? cs2::Expected<cs2config::ConfigRequest, std::string>(
+                             ? Expected<cs2config::ConfigRequest, std::string>(
                                    cs2config::ConfigRequest::locoInfo(options.qualifier))
                              : cs2config::ConfigRequest::forKey(options.key, options.qualifier);
     if (!request)

@@ -11,6 +11,7 @@
 #include "Workspace.h"
 #include "connection/StationConnection.h"
 #include "model/Railway.h"
+#include "sim/EmbeddedStation.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -161,8 +162,11 @@ int main(int argc, char* argv[]) {
 
     stellwerk::ui::Translations translations;
     translations.select(stellwerk::ui::LanguageSettings::load());
-    StationConnection connection;                       // outlives the railway and the window
-    stellwerk::ui::RailwayBinding railways(connection); // a railway model per session
+    // The program's own station is the embedded simulated CS2, handed to the UI through the connection.
+    stellwerk::connection::ConnectionSettings connectionSettings;
+    connectionSettings.localStation = stellwerk::sim::EmbeddedStation::factory();
+    StationConnection connection{std::move(connectionSettings)}; // outlives the railway and the window
+    stellwerk::ui::RailwayBinding railways(connection);          // a railway model per session
     stellwerk::ui::MainWindow window(translations);
     window.setConnection(&connection);
     QObject::connect(&railways, &stellwerk::ui::RailwayBinding::railwayChanged, &window,

@@ -1,6 +1,5 @@
 #include "connection/StationConnection.h"
 
-#include "connection/EmbeddedStation.h"
 #include "cs2config/ConfigStreamKeys.h"
 #include "transport/TransportAddress.h"
 #include "transport/TransportFactory.h"
@@ -8,14 +7,14 @@
 namespace stellwerk::connection {
 
 // Everything one connection owns, torn down together: the start-up and the session before the
-// transport they use, the transport before the embedded station it talks to.
+// transport they use, the transport before the local station it talks to.
 class StationLink final : public QObject {
 public:
     ~StationLink() override {
         startup.reset();
         session.reset();
         transport.reset();
-        embedded.reset();
+        local.reset();
     }
 
     // Stops every signal from the link's parts to `receiver`.
@@ -27,7 +26,7 @@ public:
                 QObject::disconnect(part, nullptr, receiver, nullptr);
     }
 
-    std::unique_ptr<EmbeddedStation> embedded;
+    std::unique_ptr<transport::LocalPeer> local;
     std::unique_ptr<transport::Transport> transport;
     std::unique_ptr<station::StationSession> session;
     std::unique_ptr<station::StartupSequence> startup;
@@ -90,16 +89,15 @@ void StationConnection::connectTo(const QString& url) {
     address_ = address;
     if (address.isEmpty()) {
         endpoint_ = StationEndpoint::simulated();
-        auto embedded = std::make_unique<EmbeddedStation>();
-        if (!embedded->start())
-            return fail(
-                QStringLiteral("the simulated station cannot start: %1").arg(embedded->errorString()));
-        transport::TcpSettings tcp;
-        tcp.host = QStringLiteral("127.0.0.1");
-        tcp.port = embedded->tcpPort();
+        if (!settings_.localStation)
+            return fail(QStringLiteral("this program has no simulated station"));
+        std::unique_ptr<transport::LocalPeer> local = settings_.localStation();
+        if (!local->start())
+            return fail(QStringLiteral("the simulated station cannot start: %1").arg(local->errorString()));
+        const transport::TransportSettings address = local->address();
         link_ = std::make_unique<StationLink>();
-        link_->embedded = std::move(embedded);
-        return open(transport::createTransport(transport::TcpSettings(tcp)));
+        link_->local = std::move(local);
+        return open(transport::createTransport(address));
     }
     const auto settings = transport::parseTransportUrl(address);
     if (!settings) {
@@ -131,7 +129,11 @@ void StationConnection::disconnectFromStation() {
 }
 
 std::uint16_t StationConnection::embeddedPort() const {
-    return link_ && link_->embedded ? link_->embedded->tcpPort() : 0;
+    if (!link_ || !link_->local)
+        return 0;
+    const transport::TransportSettings address = link_->local->address();
+    const auto* tcp = std::get_if<transport::TcpSettings>(&address);
+    return tcp ? tcp->port : 0;
 }
 
 transport::TransportCounters StationConnection::transportCounters() const {

@@ -3,6 +3,7 @@
 #include "connection/StationEndpoint.h"
 #include "station/StartupSequence.h"
 #include "station/StationSession.h"
+#include "transport/LocalPeer.h"
 
 #include <QObject>
 #include <QString>
@@ -44,14 +45,18 @@ struct StationCounts {
 };
 
 // How patient the connection is; the defaults suit a CS2 on a LAN and the embedded simulator.
+// localStation is the station this program runs itself (the GUI program and tests hand over the embedded
+// simulated CS2); without one, connecting to "the simulated station" fails with a clear reason.
 struct ConnectionSettings {
     station::StationSettings session{};
     station::StartupOptions startup{};
+    transport::LocalPeerFactory localStation{};
 };
 
 // The one object the app holds to be connected to a station. Given an address (udp://, tcp://, can://,
 // see can/TransportAddress.h) it opens the transport, runs the station session's start-up and watches
-// liveness; given none it starts the embedded simulated CS2 and reaches it over a real TCP transport.
+// liveness; given none it starts the program's local station (the embedded simulated CS2, from the
+// settings' factory) and reaches it over a real transport.
 // Its state is in user terms; the model takes the session and the start-up result from here.
 // After the station was silent or the connection was lost, the start-up runs again (the station may
 // have restarted, and others may have changed what we missed); a start-up cut short by a loss, or during
@@ -67,7 +72,7 @@ public:
     explicit StationConnection(ConnectionSettings settings = {}, QObject* parent = nullptr);
     ~StationConnection() override;
 
-    // Connects to the station at `url`; an empty url starts the embedded simulated station. Any
+    // Connects to the station at `url`; an empty url starts the local (simulated) station. Any
     // previous connection ends first.
     void connectTo(const QString& url);
     void connectToSimulator() { connectTo(QString()); }
@@ -88,7 +93,7 @@ public:
     QString failureReason() const { return failure_; }
     // The last problem reported (connection refused, a file that could not be read, ...).
     QString lastProblem() const { return lastProblem_; }
-    // The embedded station's TCP port while it runs, else 0 (for diagnostics and tests).
+    // The local station's TCP port while it runs, else 0 (for diagnostics and tests).
     std::uint16_t embeddedPort() const;
     // What the transport of the current connection counted (frames in and out, ...); zeros while there is
     // none.

@@ -1,10 +1,10 @@
 # The app's connection to one station (core/connection): transport, session, start-up and liveness in
-# user terms, and the embedded simulated CS2 used when no station is configured.
-target_sources(stellwerk-core PRIVATE
-    connection/EmbeddedStation.cpp
-    connection/EmbeddedStation.h
+# user terms. The simulated CS2 reaches it only as a local peer from a factory (transport/LocalPeer.h).
+stellwerk_core_library(connection)
+target_sources(stellwerk-connection PRIVATE
     connection/StationConnection.cpp
     connection/StationConnection.h
     connection/StationEndpoint.cpp
     connection/StationEndpoint.h
 )
+target_link_libraries(stellwerk-connection PUBLIC stellwerk-station stellwerk-transport Qt6::Core)

@@ -1,7 +1,7 @@
 #pragma once
 
+#include "base/Expected.h"
 #include "cs2/DecodeError.h"
-#include "cs2/Expected.h"
 #include "cs2/Header.h"
 #include "cs2/Messages.h"
 

@@ -2,8 +2,8 @@
 
 // Internal to the codec: byte access for decoders and encoders, and the per-message functions.
 
+#include "base/Expected.h"
 #include "cs2/DecodeError.h"
-#include "cs2/Expected.h"
 #include "cs2/Header.h"
 #include "cs2/Messages.h"
 

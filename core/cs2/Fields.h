@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cs2/Expected.h"
+#include "base/Expected.h"
 #include "cs2/LocId.h"
 #include "cs2/Messages.h"
 

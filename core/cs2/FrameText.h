@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cs2/Expected.h"
+#include "base/Expected.h"
 #include "cs2/Header.h"
 
 #include <string>
@@ -22,8 +22,9 @@ struct ParsedFrame {
 };
 
 // Reads one frame from a line in any of the notations. An identifier of up to 3 hex digits is a standard
-// (11-bit) one, a longer one extended (29-bit); the network form carries extended frames only. Text after the data bytes is taken as a
-// comment (the document's examples carry one). The error says what is wrong with the line.
+// (11-bit) one, a longer one extended (29-bit); the network form carries extended frames only. Text after the
+// data bytes is taken as a comment (the document's examples carry one). The error says what is wrong with the
+// line.
 Expected<ParsedFrame, std::string> parseFrame(std::string_view line);
 
 // Standard identifiers are written with 3 hex digits ("123 2 01 02", "123#0102"), extended with 8.

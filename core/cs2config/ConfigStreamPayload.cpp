@@ -66,8 +66,7 @@ std::vector<std::uint8_t> compress(std::string_view contents) {
     return out;
 }
 
-cs2::Expected<std::string, ConfigStreamError> inflate(std::span<const std::uint8_t> bytes,
-                                                      std::size_t limit) {
+Expected<std::string, ConfigStreamError> inflate(std::span<const std::uint8_t> bytes, std::size_t limit) {
     if (bytes.size() < SizePrefix)
         return inflateError(StreamErrorKind::InflateFailed, "the payload has " +
                                                                 std::to_string(bytes.size()) +

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cs2/Expected.h"
+#include "base/Expected.h"
 #include "cs2config/ConfigStreamError.h"
 
 #include <cstddef>
@@ -26,7 +26,7 @@ std::vector<std::uint8_t> compress(std::string_view contents);
 // Inflates a compressed payload in chunks. Never allocates more than the smaller of the announced
 // size and `limit` (plus one chunk): a lying prefix or a zip bomb ends in an error, not in memory
 // exhaustion. Trailing bytes after the end of the zlib stream (frame padding) are ignored.
-cs2::Expected<std::string, ConfigStreamError> inflate(std::span<const std::uint8_t> bytes, std::size_t limit);
+Expected<std::string, ConfigStreamError> inflate(std::span<const std::uint8_t> bytes, std::size_t limit);
 
 // MS2 text form: after each newline, spaces up to the next multiple of 8 bytes, so that every line
 // starts a frame.

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cs2/Expected.h"
+#include "base/Expected.h"
 #include "cs2/Header.h"
 #include "cs2/Messages.h"
 #include "cs2config/ConfigStreamError.h"
@@ -43,7 +43,7 @@ struct StreamLimits {
     std::size_t maxFileSize = std::size_t(16) << 20;
 };
 
-using StreamOutcome = cs2::Expected<ReceivedConfigFile, ConfigStreamError>;
+using StreamOutcome = Expected<ReceivedConfigFile, ConfigStreamError>;
 
 // Reassembles one config-data stream at a time (command 0x21, document 7.2) from decoded frames:
 // header (DLC 6, or 7 for a broadcast), then DLC-8 data frames up to the announced length. Checks

@@ -25,7 +25,7 @@ can::CanFrame requestFrame(std::string_view eightBytes, std::uint16_t hash, bool
     return cs2::encode(cs2::Message{0, response, hash, body});
 }
 
-cs2::Expected<ConfigRequest, std::string> rangeRequest(std::string_view key, unsigned first, unsigned count) {
+Expected<ConfigRequest, std::string> rangeRequest(std::string_view key, unsigned first, unsigned count) {
     return ConfigRequest::forKey(key, std::to_string(first) + " " + std::to_string(count));
 }
 
@@ -39,8 +39,7 @@ std::optional<unsigned> number(std::string_view text) {
 
 } // namespace
 
-cs2::Expected<ConfigRequest, std::string> ConfigRequest::forKey(std::string_view key,
-                                                                std::string_view qualifier) {
+Expected<ConfigRequest, std::string> ConfigRequest::forKey(std::string_view key, std::string_view qualifier) {
     if (key.empty() || key.size() > MaxKeyLength)
         return "config key '" + std::string(key) + "' must have 1 to 8 bytes";
     if (key.find('\0') != std::string_view::npos || qualifier.find('\0') != std::string_view::npos)
@@ -59,11 +58,11 @@ ConfigRequest ConfigRequest::locoInfo(std::string_view locoName) {
     return ConfigRequest("lokinfo", std::string(cutUtf8(locoName, MaxLocoNameLength)));
 }
 
-cs2::Expected<ConfigRequest, std::string> ConfigRequest::locoNames(unsigned first, unsigned count) {
+Expected<ConfigRequest, std::string> ConfigRequest::locoNames(unsigned first, unsigned count) {
     return rangeRequest("loknamen", first, count);
 }
 
-cs2::Expected<ConfigRequest, std::string> ConfigRequest::accessoryInfo(unsigned first, unsigned count) {
+Expected<ConfigRequest, std::string> ConfigRequest::accessoryInfo(unsigned first, unsigned count) {
     return rangeRequest("maginfo", first, count);
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cs2/Expected.h"
+#include "base/Expected.h"
 #include "cs2/Header.h"
 
 #include <cstdint>
@@ -27,12 +27,11 @@ public:
 
     // Any key of 1..8 bytes; `qualifier` is the follow-up text, which only keys with follow-up
     // frames carry (at most 8 bytes per frame).
-    static cs2::Expected<ConfigRequest, std::string> forKey(std::string_view key,
-                                                            std::string_view qualifier = {});
+    static Expected<ConfigRequest, std::string> forKey(std::string_view key, std::string_view qualifier = {});
     // lokinfo: the loco name is cut to its first 16 bytes, never inside a UTF-8 character.
     static ConfigRequest locoInfo(std::string_view locoName);
-    static cs2::Expected<ConfigRequest, std::string> locoNames(unsigned first, unsigned count);
-    static cs2::Expected<ConfigRequest, std::string> accessoryInfo(unsigned first, unsigned count);
+    static Expected<ConfigRequest, std::string> locoNames(unsigned first, unsigned count);
+    static Expected<ConfigRequest, std::string> accessoryInfo(unsigned first, unsigned count);
 
     const std::string& key() const { return key_; }
     const std::string& qualifier() const { return qualifier_; }

@@ -1,6 +1,6 @@
-# accessories sources of stellwerk-core (core/cs2config): magnetartikel.cs2 (and the MS2's maginfo stream),
+# accessories sources of stellwerk-cs2config: magnetartikel.cs2 (and the MS2's maginfo stream),
 # magnetartikel.sr2 and fahrstrassen.cs2 as typed models.
-target_sources(stellwerk-core PRIVATE
+target_sources(stellwerk-cs2config PRIVATE
     cs2config/AccessoryAddressCheck.cpp
     cs2config/AccessoryFile.cpp
     cs2config/AccessoryRecordSupport.cpp

@@ -1,5 +1,5 @@
 # The .cs2 text format: lines kept as read, nested by their dots.
-target_sources(stellwerk-core PRIVATE
+target_sources(stellwerk-cs2config PRIVATE
     cs2config/ConfigFile.cpp
     cs2config/ConfigKind.cpp
     cs2config/Diagnostics.cpp

@@ -1,5 +1,5 @@
-# layout sources of stellwerk-core (core/cs2config): the track plan (gleisbild.cs2, its pages, gleisbild.sr2)
-target_sources(stellwerk-core PRIVATE
+# layout sources of stellwerk-cs2config: the track plan (gleisbild.cs2, its pages, gleisbild.sr2)
+target_sources(stellwerk-cs2config PRIVATE
     cs2config/LayoutCheck.cpp
     cs2config/LayoutFolder.cpp
     cs2config/TileArticle.cpp

@@ -1,7 +1,7 @@
-# locomotives sources of stellwerk-core (core/cs2config)
+# locomotives sources of stellwerk-cs2config
 # lokomotive.cs2, the loco status file lokomotive.sr2 and the MS2 loco streams (lokinfo, loknamen,
 # lokliste, ldbver).
-target_sources(stellwerk-core PRIVATE
+target_sources(stellwerk-cs2config PRIVATE
     cs2config/Locomotive.cpp
     cs2config/LocomotiveFieldWriter.cpp
     cs2config/LocomotiveEditor.cpp

@@ -1,5 +1,5 @@
-# streams sources of stellwerk-core (core/cs2config): config-data requests and streams (0x20/0x21).
-target_sources(stellwerk-core PRIVATE
+# streams sources of stellwerk-cs2config: config-data requests and streams (0x20/0x21).
+target_sources(stellwerk-cs2config PRIVATE
     cs2config/ConfigStreamError.cpp
     cs2config/ConfigStreamKeys.cpp
     cs2config/ConfigStreamPayload.cpp

@@ -1,5 +1,6 @@
-# model sources of stellwerk-core (core/model): the railway as the UI shows it, fed by the station session.
-target_sources(stellwerk-core PRIVATE
+# model sources of stellwerk-model (core/model): the railway as the UI shows it, fed by the station session.
+stellwerk_core_library(model)
+target_sources(stellwerk-model PRIVATE
     model/Accessory.cpp
     model/CommandProblem.cpp
     model/Device.cpp
@@ -18,3 +19,4 @@ target_sources(stellwerk-core PRIVATE
     model/RoutePlan.cpp
     model/TrackLayout.cpp
 )
+target_link_libraries(stellwerk-model PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-station Qt6::Core)

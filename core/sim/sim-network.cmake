@@ -1,6 +1,6 @@
 # The simulated CS2's world and network side (core/sim): moving trains, the UDP/TCP/HTTP servers and
 # the demo layout embedded as the Qt resource :/demo-layout/config/.
-target_sources(stellwerk-core PRIVATE
+target_sources(stellwerk-simulator PRIVATE
     sim/DemoLayoutTrack.cpp
     sim/HttpConfigServer.cpp
     sim/HttpConfigServer.h
@@ -12,9 +12,9 @@ target_sources(stellwerk-core PRIVATE
 )
 
 # A static library's resources become an object library that CMake links into every executable using
-# stellwerk-core, so no Q_INIT_RESOURCE is needed (tests/core/simnet checks that the files are there).
+# stellwerk-simulator, so no Q_INIT_RESOURCE is needed (tests/core/simnet checks that the files are there).
 set(demo_layout_dir ${PROJECT_SOURCE_DIR}/resources/demo-layout)
-qt_add_resources(stellwerk-core demo_layout
+qt_add_resources(stellwerk-simulator demo_layout
     PREFIX /demo-layout
     BASE ${demo_layout_dir}
     FILES

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cs2/Expected.h"
+#include "base/Expected.h"
 #include "cs2config/ConfigStreamReceiver.h"
 #include "cs2config/ConfigStreamRequest.h"
 #include "station/CommandTracker.h"
@@ -17,7 +17,7 @@ class QTimer;
 
 namespace stellwerk::station {
 
-using DownloadResult = cs2::Expected<cs2config::ReceivedConfigFile, QString>;
+using DownloadResult = Expected<cs2config::ReceivedConfigFile, QString>;
 
 // Fetches configuration files from the station one at a time (document 7.1/7.2): sends the request,
 // waits for its acknowledgement (sent again when missing) and collects the 0x21 stream addressed to our

@@ -1,5 +1,6 @@
-# station sources of stellwerk-core (core/station): the conversation with one command station.
-target_sources(stellwerk-core PRIVATE
+# station sources of stellwerk-station (core/station): the conversation with one command station.
+stellwerk_core_library(station)
+target_sources(stellwerk-station PRIVATE
     station/AckKey.cpp
     station/CommandTracker.cpp
     station/CommandTracker.h
@@ -19,3 +20,4 @@ target_sources(stellwerk-core PRIVATE
     station/StatusDataReader.cpp
     station/StatusDataReader.h
 )
+target_link_libraries(stellwerk-station PUBLIC stellwerk-bus stellwerk-cs2 stellwerk-cs2config stellwerk-transport Qt6::Core)

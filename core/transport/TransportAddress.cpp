@@ -9,7 +9,7 @@ namespace stellwerk::transport {
 
 namespace {
 
-using Result = cs2::Expected<TransportSettings, QString>;
+using Result = Expected<TransportSettings, QString>;
 
 // The translation context of the messages below.
 class Text {

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cs2/Expected.h"
+#include "base/Expected.h"
 #include "transport/TransportSettings.h"
 
 #include <QString>
@@ -12,7 +12,7 @@ namespace stellwerk::transport {
 //   tcp://host[:port]                 a TCP connection to host:port (default 15731)
 //   can://plugin/interface[?bitrate=n] a QCanBus device, for example can://socketcan/can0
 // Returns the settings, or a message saying what is wrong with the text.
-cs2::Expected<TransportSettings, QString> parseTransportUrl(const QString& text);
+Expected<TransportSettings, QString> parseTransportUrl(const QString& text);
 
 // The address of settings in the form parseTransportUrl() reads (reconnect timing is not part of it).
 QString transportUrl(const UdpSettings& settings);

@@ -25,7 +25,7 @@ std::unique_ptr<Transport> createTransport(const TransportSettings& settings) {
     return std::visit([](const auto& each) { return make(each); }, settings);
 }
 
-cs2::Expected<std::unique_ptr<Transport>, QString> createTransport(const QString& url) {
+Expected<std::unique_ptr<Transport>, QString> createTransport(const QString& url) {
     const auto settings = parseTransportUrl(url);
     if (!settings)
         return settings.error();

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cs2/Expected.h"
+#include "base/Expected.h"
 #include "transport/Transport.h"
 #include "transport/TransportSettings.h"
 
@@ -12,6 +12,6 @@ namespace stellwerk::transport {
 // Makes the transport that settings or an address (see TransportAddress.h) describe, not opened yet.
 std::unique_ptr<Transport> createTransport(const TransportSettings& settings);
 // Returns the transport, or what is wrong with the address.
-cs2::Expected<std::unique_ptr<Transport>, QString> createTransport(const QString& url);
+Expected<std::unique_ptr<Transport>, QString> createTransport(const QString& url);
 
 } // namespace stellwerk::transport

@@ -1,8 +1,10 @@
-# transports sources of stellwerk-core (core/transport): UDP, TCP, QCanBus and in-process loopback transports.
-target_sources(stellwerk-core PRIVATE
+# transports sources of stellwerk-transport (core/transport): UDP, TCP, QCanBus and in-process loopback transports.
+stellwerk_core_library(transport)
+target_sources(stellwerk-transport PRIVATE
     transport/CanBusTransport.cpp
     transport/CanBusTransport.h
     transport/FrameAssembler.cpp
+    transport/LocalPeer.h
     transport/LoopbackTransport.cpp
     transport/LoopbackTransport.h
     transport/NetworkFraming.cpp
@@ -17,3 +19,4 @@ target_sources(stellwerk-core PRIVATE
     transport/UdpTransport.cpp
     transport/UdpTransport.h
 )
+target_link_libraries(stellwerk-transport PUBLIC stellwerk-can stellwerk-base Qt6::Core Qt6::Network Qt6::SerialBus)

@@ -4,6 +4,7 @@
 // away and is read again after it is back; the track power stays unknown until the station reports it.
 
 #include "E2eSupport.h"
+#include "EmbeddedStationSupport.h"
 #include "StationLog.h"
 #include "connection/StationConnection.h"
 #include "cs2/Codec.h"
@@ -59,7 +60,7 @@ public:
 
     const model::Locomotive& loco(std::uint32_t id) const { return *railway->locomotive(id); }
 
-    StationConnection connection{fastConnection()};
+    StationConnection connection{support::withEmbeddedStation(fastConnection())};
     std::unique_ptr<Railway> railway;
     std::vector<PowerState> powers;
 };

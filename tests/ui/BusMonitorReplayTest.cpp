@@ -5,6 +5,7 @@
 
 #include "BusMonitorModel.h"
 #include "BusMonitorPanel.h"
+#include "EmbeddedStationSupport.h"
 #include "connection/StationConnection.h"
 #include "cs2/FrameText.h"
 
@@ -206,7 +207,7 @@ TEST_F(BusMonitorReplayTest, AMissingFileIsAnErrorAndNothingPlays) {
 // The panel: a replay fills the table in the log's order with the log's times, and live frames wait
 // outside while it plays.
 TEST_F(BusMonitorReplayTest, PanelShowsTheReplayedFramesInsteadOfLiveOnes) {
-    connection::StationConnection station;
+    connection::StationConnection station{support::withEmbeddedStation()};
     BusMonitorPanel panel;
     panel.setConnection(&station);
     panel.setReplaySpeed(10.0);

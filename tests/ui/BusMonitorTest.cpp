@@ -1,6 +1,7 @@
 #include "BusMonitorModel.h"
 #include "BusMonitorPanel.h"
 #include "BusMonitorReplay.h"
+#include "EmbeddedStationSupport.h"
 #include "RailwayBinding.h"
 #include "StationTestSupport.h"
 #include "Translations.h"
@@ -157,7 +158,7 @@ TEST(BusMonitorPanel, FilterFindsAFrameByNameAndByLocId) {
 }
 
 TEST(BusMonitorPanel, ShowsTheFramesOfTheEmbeddedStation) {
-    connection::StationConnection station;
+    connection::StationConnection station{support::withEmbeddedStation()};
     BusMonitorPanel panel;
     panel.setConnection(&station);
     station.connectToSimulator();
@@ -174,7 +175,7 @@ TEST(BusMonitorPanel, ARecordingIsOnDiskBatchByBatchWhileItRuns) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("running.log"));
-    connection::StationConnection station;
+    connection::StationConnection station{support::withEmbeddedStation()};
     BusMonitorPanel recorder;
     recorder.setConnection(&station);
     ASSERT_EQ(recorder.startRecording(path), QString());
@@ -193,7 +194,7 @@ TEST(BusMonitorPanel, RecordsACandumpLogAndOpensItAgain) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("bus.log"));
-    connection::StationConnection station;
+    connection::StationConnection station{support::withEmbeddedStation()};
     BusMonitorPanel recorder;
     recorder.setConnection(&station);
     ASSERT_EQ(recorder.startRecording(path), QString());
@@ -258,7 +259,7 @@ TEST(BusMonitorPanel, AMissingLogIsReportedAndTheLiveViewStays) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     BusMonitorPanel panel;
-    connection::StationConnection station;
+    connection::StationConnection station{support::withEmbeddedStation()};
     panel.setConnection(&station);
     emit station.framesSeen({systemStop()}, false);
     panel.model()->flush();
@@ -279,7 +280,7 @@ TEST(BusMonitorPanel, ShowsTheCommandsTheAppSendsAndTheAnswers) {
     ASSERT_TRUE(translations.select(Language::English));
     test::TestStation simulated;
     ASSERT_TRUE(simulated.start());
-    connection::StationConnection station;
+    connection::StationConnection station{support::withEmbeddedStation()};
     RailwayBinding railways{station};
     BusMonitorPanel panel;
     panel.setConnection(&station);

@@ -1,5 +1,6 @@
 #include "ConnectDialog.h"
 
+#include "EmbeddedStationSupport.h"
 #include "MainWindow.h"
 #include "StationTestSupport.h"
 #include "StationUrlSettings.h"
@@ -126,7 +127,7 @@ TEST_F(ConnectDialogTest, Deutsch) {
 }
 
 TEST_F(ConnectDialogTest, StationMenuConnectReconnectsTheWindowsConnection) {
-    connection::StationConnection station;
+    connection::StationConnection station{support::withEmbeddedStation()};
     MainWindow window(translations);
     window.setConnection(&station);
     const std::uint16_t port = test::closedTcpPort();

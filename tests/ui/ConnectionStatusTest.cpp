@@ -1,5 +1,6 @@
 #include "ConnectionStatus.h"
 
+#include "EmbeddedStationSupport.h"
 #include "MainWindow.h"
 #include "StationTestSupport.h"
 #include "Translations.h"
@@ -35,7 +36,7 @@ protected:
     QString shown() const { return status.findChild<QLabel*>(QStringLiteral("stationStatus"))->text(); }
 
     Translations translations;
-    connection::StationConnection station;
+    connection::StationConnection station{support::withEmbeddedStation()};
     ConnectionStatus status;
 };
 

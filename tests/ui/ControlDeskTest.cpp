@@ -3,6 +3,7 @@
 
 #include "BusMonitorPanel.h"
 #include "ConnectionStatus.h"
+#include "EmbeddedStationSupport.h"
 #include "FrameDecoderPanel.h"
 #include "MainWindow.h"
 #include "PowerStatus.h"
@@ -86,7 +87,8 @@ protected:
         ASSERT_TRUE(QTest::qWaitFor([widget] { return QApplication::focusWidget() == widget; }, 2000));
     }
 
-    connection::StationConnection station; // outlives the railway and the window
+    connection::StationConnection station{
+        support::withEmbeddedStation()}; // outlives the railway and the window
     std::unique_ptr<MainWindow> window;
     std::unique_ptr<RailwayBinding> railways;
 };
@@ -194,7 +196,7 @@ TEST_F(ControlDeskOnStationTest, StatusBarCountsFramesAndShowsTheTrackPower) {
 }
 
 TEST_F(ControlDeskTest, StartupProgressNamesTheFileAndItsBytesWhileLoading) {
-    connection::StationConnection station;
+    connection::StationConnection station{support::withEmbeddedStation()};
     MainWindow window(translations);
     window.setConnection(&station);
     window.show();
@@ -213,7 +215,7 @@ TEST_F(ControlDeskTest, StartupProgressNamesTheFileAndItsBytesWhileLoading) {
 }
 
 TEST_F(ControlDeskTest, AFailedConnectionSaysWhatToTry) {
-    connection::StationConnection station;
+    connection::StationConnection station{support::withEmbeddedStation()};
     MainWindow window(translations);
     window.setConnection(&station);
     station.connectTo(QStringLiteral("tcp://"));

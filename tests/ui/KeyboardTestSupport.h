@@ -3,6 +3,7 @@
 // The demo layout's simulated CS2 on a free loopback port, with the station itself at hand so that the
 // keyboard and settings tests can check what it did; and a connection with its railway bound to it.
 
+#include "EmbeddedStationSupport.h"
 #include "RailwayBinding.h"
 #include "StationTestSupport.h"
 #include "model/Railway.h"
@@ -26,7 +27,7 @@ public:
     }
     model::Railway* railway() const { return railways.railway(); }
 
-    connection::StationConnection connection;
+    connection::StationConnection connection{support::withEmbeddedStation()};
     RailwayBinding railways{connection};
 };
 

@@ -2,6 +2,7 @@
 
 #include "BusMonitorPanel.h"
 #include "ContactTableModel.h"
+#include "EmbeddedStationSupport.h"
 #include "LocomotiveTableModel.h"
 #include "MainWindow.h"
 #include "RailwayBinding.h"
@@ -59,7 +60,7 @@ protected:
     }
 
     Translations translations;
-    connection::StationConnection station;
+    connection::StationConnection station{support::withEmbeddedStation()};
     RailwayBinding railways{station};
     LayoutOverview overview;
 };

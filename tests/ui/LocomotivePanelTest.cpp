@@ -2,6 +2,7 @@
 
 #include "LocomotivePanel.h"
 
+#include "EmbeddedStationSupport.h"
 #include "LocomotiveFileModel.h"
 #include "LocomotiveForm.h"
 #include "RailwayBinding.h"
@@ -51,7 +52,7 @@ protected:
     }
 
     Translations translations;
-    connection::StationConnection station;
+    connection::StationConnection station{support::withEmbeddedStation()};
     RailwayBinding railways{station};
     LocomotivePanel panel;
 };

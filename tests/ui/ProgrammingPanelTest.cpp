@@ -3,12 +3,12 @@
 
 #include "ProgrammingPanel.h"
 
+#include "EmbeddedStationSupport.h"
 #include "LocomotiveFileModel.h"
 #include "LocomotivePanel.h"
 #include "RailwayBinding.h"
 #include "StationTestSupport.h"
 #include "Translations.h"
-#include "connection/EmbeddedStation.h"
 #include "model/Railway.h"
 
 #include <QApplication>
@@ -56,7 +56,7 @@ protected:
     }
 
     Translations translations;
-    connection::StationConnection station;
+    connection::StationConnection station{support::withEmbeddedStation()};
     RailwayBinding railways{station};
     ProgrammingPanel panel;
     LocomotivePanel locomotives;

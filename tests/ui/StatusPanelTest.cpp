@@ -1,5 +1,6 @@
 #include "StatusPanel.h"
 
+#include "EmbeddedStationSupport.h"
 #include "GaugeWidget.h"
 #include "LayoutOverview.h"
 #include "MainWindow.h"
@@ -62,7 +63,7 @@ protected:
     }
 
     Translations translations;
-    connection::StationConnection station;
+    connection::StationConnection station{support::withEmbeddedStation()};
     RailwayBinding railways{station};
     MainWindow window{translations};
 };

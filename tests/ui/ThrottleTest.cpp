@@ -2,6 +2,7 @@
 // station carries out (seen through a second connection, as another controller would see it); what
 // another controller does shows in the throttle; what the station does not acknowledge is marked.
 
+#include "EmbeddedStationSupport.h"
 #include "FunctionIcons.h"
 #include "FunctionPad.h"
 #include "RailwayBinding.h"
@@ -70,8 +71,8 @@ protected:
 
     Translations translations;
     test::TestStation testStation;
-    connection::StationConnection connection{impatient()};
-    connection::StationConnection other;
+    connection::StationConnection connection{support::withEmbeddedStation(impatient())};
+    connection::StationConnection other{support::withEmbeddedStation()};
     RailwayBinding railways{connection};
     RailwayBinding otherRailways{other};
     ThrottleWidget throttle;

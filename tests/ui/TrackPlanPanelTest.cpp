@@ -1,5 +1,6 @@
 #include "TrackPlanPanel.h"
 
+#include "EmbeddedStationSupport.h"
 #include "RailwayBinding.h"
 #include "StationTestSupport.h"
 #include "TrackPageView.h"
@@ -53,7 +54,7 @@ protected:
 
     Translations translations;
     test::TestStation server;
-    connection::StationConnection station;
+    connection::StationConnection station{support::withEmbeddedStation()};
     RailwayBinding railways{station};
     TrackPlanPanel panel;
 };

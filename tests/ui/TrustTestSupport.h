@@ -3,6 +3,7 @@
 // Helpers for the tests of trust during a running session: what reached the wire, and the main window on
 // a simulated CS2 on loopback that can fall silent and come back on the same port.
 
+#include "EmbeddedStationSupport.h"
 #include "MainWindow.h"
 #include "RailwayBinding.h"
 #include "StationTestSupport.h"
@@ -88,7 +89,8 @@ protected:
 
     Translations translations;
     TestStation server;
-    connection::StationConnection connection; // outlives the railway and the window
+    connection::StationConnection connection{
+        support::withEmbeddedStation()}; // outlives the railway and the window
     std::unique_ptr<MainWindow> window;
     std::unique_ptr<RailwayBinding> railways;
 };

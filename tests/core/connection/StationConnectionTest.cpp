@@ -1,5 +1,6 @@
 #include "connection/StationConnection.h"
 
+#include "EmbeddedStationSupport.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
@@ -104,13 +105,13 @@ connection::ConnectionSettings quickLiveness() {
 } // namespace
 
 TEST(StationConnection, StartsDisconnected) {
-    StationConnection connection;
+    StationConnection connection{support::withEmbeddedStation()};
     EXPECT_EQ(connection.state(), State::Disconnected);
     EXPECT_EQ(connection.session(), nullptr);
 }
 
 TEST(StationConnection, NoAddressStartsTheEmbeddedDemoStationAndBecomesReady) {
-    StationConnection connection;
+    StationConnection connection{support::withEmbeddedStation()};
     StateRecorder recorder(connection);
     connection.connectTo(QString());
     EXPECT_EQ(connection.description(), QStringLiteral("Simulated CS2 (demo layout)"));
@@ -119,8 +120,19 @@ TEST(StationConnection, NoAddressStartsTheEmbeddedDemoStationAndBecomesReady) {
     EXPECT_EQ(recorder.states, (std::vector{State::Connecting, State::LoadingConfiguration, State::Ready}));
 }
 
-TEST(StationConnection, EmbeddedStationHasTheDemoLayoutsCounts) {
+// The connection layer never links the simulator: a program that hands over no local station gets a clear
+// reason instead of a demo.
+TEST(StationConnection, WithoutALocalStationTheSimulatedOneFailsWithTheReason) {
     StationConnection connection;
+    QSignalSpy problems(&connection, &StationConnection::problem);
+    connection.connectToSimulator();
+    EXPECT_EQ(connection.state(), State::Failed);
+    EXPECT_EQ(connection.failureReason(), QStringLiteral("this program has no simulated station"));
+    EXPECT_EQ(connection.embeddedPort(), 0);
+}
+
+TEST(StationConnection, EmbeddedStationHasTheDemoLayoutsCounts) {
+    StationConnection connection{support::withEmbeddedStation()};
     connection.connectToSimulator();
     ASSERT_TRUE(waitForState(connection, State::Ready));
     const sim::StationLayout demo = sim::StationLayout::demo();
@@ -135,7 +147,7 @@ TEST(StationConnection, EmbeddedStationHasTheDemoLayoutsCounts) {
 }
 
 TEST(StationConnection, CountsTheFramesOfItsTransportAndZerosWithoutOne) {
-    StationConnection connection;
+    StationConnection connection{support::withEmbeddedStation()};
     EXPECT_EQ(connection.transportCounters().framesIn, 0u);
     connection.connectToSimulator();
     ASSERT_TRUE(waitForState(connection, State::Ready));
@@ -147,7 +159,7 @@ TEST(StationConnection, CountsTheFramesOfItsTransportAndZerosWithoutOne) {
 }
 
 TEST(StationConnection, ProgressNamesTheStepsAndTheFilesWithTheirPercentage) {
-    StationConnection connection;
+    StationConnection connection{support::withEmbeddedStation()};
     std::vector<LoadingProgress> seen;
     QObject::connect(&connection, &StationConnection::progressChanged,
                      [&seen](const LoadingProgress& progress) { seen.push_back(progress); });
@@ -168,7 +180,7 @@ TEST(StationConnection, ProgressNamesTheStepsAndTheFilesWithTheirPercentage) {
 }
 
 TEST(StationConnection, SessionStartsBeforeTheStartupAndTheConfigurationArrivesBeforeReady) {
-    StationConnection connection;
+    StationConnection connection{support::withEmbeddedStation()};
     std::vector<QString> events;
     QObject::connect(&connection, &StationConnection::sessionStarted, [&](station::StationSession* session) {
         events.push_back(session == connection.session() ? QStringLiteral("session") : QStringLiteral("?"));
@@ -188,7 +200,7 @@ TEST(StationConnection, SessionStartsBeforeTheStartupAndTheConfigurationArrivesB
 }
 
 TEST(StationConnection, AnAddressThatCannotBeReadFailsWithTheReason) {
-    StationConnection connection;
+    StationConnection connection{support::withEmbeddedStation()};
     QSignalSpy problems(&connection, &StationConnection::problem);
     connection.connectTo(QStringLiteral("http://cs2"));
     EXPECT_EQ(connection.state(), State::Failed);
@@ -201,7 +213,7 @@ TEST(StationConnection, AnAddressThatCannotBeReadFailsWithTheReason) {
 }
 
 TEST(StationConnection, AnAddressWithoutHostFails) {
-    StationConnection connection;
+    StationConnection connection{support::withEmbeddedStation()};
     connection.connectTo(QStringLiteral("udp://"));
     EXPECT_EQ(connection.state(), State::Failed);
     EXPECT_FALSE(connection.failureReason().isEmpty());
@@ -210,7 +222,7 @@ TEST(StationConnection, AnAddressWithoutHostFails) {
 TEST(StationConnection, TcpAddressOfAStationServerBecomesReady) {
     TestStation station;
     ASSERT_TRUE(station.start());
-    StationConnection connection;
+    StationConnection connection{support::withEmbeddedStation()};
     connection.connectTo(QStringLiteral("tcp://127.0.0.1:%1").arg(station.tcpPort()));
     EXPECT_EQ(connection.description(), QStringLiteral("CS2 at 127.0.0.1:%1 (TCP)").arg(station.tcpPort()));
     EXPECT_EQ(connection.embeddedPort(), 0);
@@ -222,7 +234,7 @@ TEST(StationConnection, TcpAddressOfAStationServerBecomesReady) {
 TEST(StationConnection, FramesSeenReportsWhatWasSentAndWhatCameBack) {
     TestStation station;
     ASSERT_TRUE(station.start());
-    StationConnection connection;
+    StationConnection connection{support::withEmbeddedStation()};
     std::vector<std::pair<bool, can::CanFrame>> seen;
     QObject::connect(&connection, &StationConnection::framesSeen,
                      [&seen](const std::vector<can::CanFrame>& frames, bool outgoing) {
@@ -248,7 +260,7 @@ TEST(StationConnection, NoServerListeningStaysConnectingAndSaysWhy) {
     ASSERT_TRUE(station.start());
     const std::uint16_t port = station.tcpPort();
     station.stop(); // a port nobody listens on
-    StationConnection connection;
+    StationConnection connection{support::withEmbeddedStation()};
     QSignalSpy problems(&connection, &StationConnection::problem);
     connection.connectTo(QStringLiteral("tcp://127.0.0.1:%1").arg(port));
     ASSERT_TRUE(problems.wait(ReadyMs));
@@ -261,7 +273,7 @@ TEST(StationConnection, StoppedServerMakesTheStationSilentAndARestartLoadsAgain)
     TestStation station;
     ASSERT_TRUE(station.start());
     const std::uint16_t port = station.tcpPort();
-    StationConnection connection;
+    StationConnection connection{support::withEmbeddedStation()};
     connection.connectTo(QStringLiteral("tcp://127.0.0.1:%1").arg(port));
     ASSERT_TRUE(waitForState(connection, State::Ready));
 
@@ -281,7 +293,7 @@ TEST(StationConnection, UdpStationThatStopsAnsweringPingsIsSilentAndReadyAgainWh
     TestStation station;
     ASSERT_TRUE(station.startUdp(0, listenPort));
     const std::uint16_t stationPort = station.udpPort();
-    StationConnection connection(quickLiveness());
+    StationConnection connection(support::withEmbeddedStation(quickLiveness()));
     connection.connectTo(QStringLiteral("udp://127.0.0.1:%1?listen=%2").arg(stationPort).arg(listenPort));
     ASSERT_TRUE(waitForState(connection, State::Ready)) << connection.lastProblem().toStdString();
 
@@ -292,7 +304,7 @@ TEST(StationConnection, UdpStationThatStopsAnsweringPingsIsSilentAndReadyAgainWh
 }
 
 TEST(StationConnection, ConnectingElsewhereEndsTheEmbeddedStation) {
-    StationConnection connection;
+    StationConnection connection{support::withEmbeddedStation()};
     connection.connectToSimulator();
     ASSERT_TRUE(waitForState(connection, State::Ready));
     connection.connectTo(QStringLiteral("http://cs2"));

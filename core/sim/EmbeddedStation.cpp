@@ -1,4 +1,4 @@
-#include "connection/EmbeddedStation.h"
+#include "sim/EmbeddedStation.h"
 
 #include "cs2/Codec.h"
 #include "sim/SimulatedStation.h"
@@ -7,7 +7,7 @@
 #include "sim/TrainMovement.h"
 #include "sim/TrainTrack.h"
 
-namespace stellwerk::connection {
+namespace stellwerk::sim {
 
 namespace {
 
@@ -23,11 +23,11 @@ constexpr DemoRun DemoRuns[] = {{0x4001, 600}, {0x4002, 600}};
 constexpr std::uint8_t Headlights = 0; // F0
 
 // Commands the station as a controller on the bus would, before anyone connects.
-void command(sim::SimulatedStation& station, cs2::MessageBody body) {
+void command(SimulatedStation& station, cs2::MessageBody body) {
     station.receive(cs2::encode(cs2::Message{0, false, 0, std::move(body)}));
 }
 
-void startDemoTrains(sim::SimulatedStation& station) {
+void startDemoTrains(SimulatedStation& station) {
     for (const DemoRun& run : DemoRuns) {
         command(station, cs2::LocoFunction{cs2::LocId(run.locId), Headlights, std::uint8_t(1), {}});
         command(station, cs2::LocoSpeed{cs2::LocId(run.locId), run.speed});
@@ -35,6 +35,10 @@ void startDemoTrains(sim::SimulatedStation& station) {
 }
 
 } // namespace
+
+transport::LocalPeerFactory EmbeddedStation::factory() {
+    return [] { return std::make_unique<EmbeddedStation>(); };
+}
 
 EmbeddedStation::EmbeddedStation() = default;
 
@@ -46,17 +50,17 @@ EmbeddedStation::~EmbeddedStation() {
 }
 
 bool EmbeddedStation::start() {
-    sim::StationLayout layout = sim::StationLayout::demo();
+    StationLayout layout = StationLayout::demo();
     if (layout.files().empty()) {
         error_ = QStringLiteral("the demo layout is not built into this program");
         return false;
     }
-    sim::SimulatedStation::Options options;
-    options.power = sim::SimulatedStation::Power::Running; // the demo is alive; a real CS2 starts in STOP
-    options.newMfxDecoders = {NewMfxDecoder};              // a new mfx loco waits to be discovered
-    station_ = std::make_unique<sim::SimulatedStation>(std::move(layout), options);
+    SimulatedStation::Options options;
+    options.power = SimulatedStation::Power::Running; // the demo is alive; a real CS2 starts in STOP
+    options.newMfxDecoders = {NewMfxDecoder};         // a new mfx loco waits to be discovered
+    station_ = std::make_unique<SimulatedStation>(std::move(layout), options);
     startDemoTrains(*station_);
-    sim::StationServerSettings settings;
+    StationServerSettings settings;
     settings.listenAddress = QHostAddress(QHostAddress::LocalHost);
     settings.udp = false;
     settings.tcpPort = 0;
@@ -64,12 +68,12 @@ bool EmbeddedStation::start() {
     // what it is now (Stop, Go or Halt) and never switches it for them, so a station whose power was
     // turned off stays off for a controller that comes back.
     settings.announcePowerToNewClients = true;
-    server_ = std::make_unique<sim::StationServer>(*station_, settings);
+    server_ = std::make_unique<StationServer>(*station_, settings);
     if (!server_->listen()) {
         error_ = server_->errorString();
         return false;
     }
-    trains_ = std::make_unique<sim::TrainMovement>(*station_, sim::TrainTrack::demo());
+    trains_ = std::make_unique<TrainMovement>(*station_, TrainTrack::demo());
     trains_->start();
     return true;
 }
@@ -78,8 +82,15 @@ std::uint16_t EmbeddedStation::tcpPort() const {
     return server_ ? server_->tcpPort() : 0;
 }
 
+transport::TransportSettings EmbeddedStation::address() const {
+    transport::TcpSettings tcp;
+    tcp.host = QStringLiteral("127.0.0.1");
+    tcp.port = tcpPort();
+    return tcp;
+}
+
 QString EmbeddedStation::url() const {
     return QStringLiteral("tcp://127.0.0.1:%1").arg(tcpPort());
 }
 
-} // namespace stellwerk::connection
+} // namespace stellwerk::sim

@@ -3,7 +3,7 @@
 #include <utility>
 #include <variant>
 
-namespace stellwerk::cs2 {
+namespace stellwerk {
 
 // A value or the error that prevented it, without exceptions or heap allocation (std::expected
 // arrives with C++23; Debian bookworm's compiler builds C++20).
@@ -28,4 +28,4 @@ private:
     std::variant<T, E> state_;
 };
 
-} // namespace stellwerk::cs2
+} // namespace stellwerk

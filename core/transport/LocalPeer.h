@@ -1,0 +1,28 @@
+#pragma once
+
+#include "transport/TransportSettings.h"
+
+#include <QString>
+#include <functional>
+#include <memory>
+
+namespace stellwerk::transport {
+
+// A peer that this program runs itself (the embedded simulated CS2) and still reaches through a real
+// transport, like any station on the network. Whoever builds the program decides which peer that is,
+// so the layers that use it never link the simulator.
+class LocalPeer {
+public:
+    virtual ~LocalPeer() = default;
+
+    // Starts the peer; false (with errorString()) when that is not possible.
+    virtual bool start() = 0;
+    virtual QString errorString() const = 0;
+    // Where a transport reaches the started peer.
+    virtual TransportSettings address() const = 0;
+};
+
+// Makes a new local peer for each connection; empty when the program has none.
+using LocalPeerFactory = std::function<std::unique_ptr<LocalPeer>()>;
+
+} // namespace stellwerk::transport
