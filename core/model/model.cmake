@@ -2,6 +2,7 @@
 target_sources(stellwerk-core PRIVATE
     model/Accessory.cpp
     model/CommandProblem.cpp
+    model/Commands.cpp
     model/Device.cpp
     model/FeedbackContact.cpp
     model/Locomotive.cpp
