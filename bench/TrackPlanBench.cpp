@@ -104,6 +104,71 @@ void benchDrawing() {
     std::printf("  first repaint after zooming:    %6.2f ms\n", zoomed.median);
 }
 
+// Every 10 ms a batch of 20 events, as a busy S88 bus delivers them: 2,000 events per second on the demo's
+// contacts 1..9, each event a real change; for 5 s.
+constexpr int BatchMs = 10;
+constexpr int BatchSize = 20;
+constexpr qint64 RunMs = 5000;
+
+// Waits until the connection is ready and the binding has a railway (at most 15 s).
+bool waitForRailway(const connection::StationConnection& connection, const ui::RailwayBinding& railways) {
+    QElapsedTimer wait;
+    wait.start();
+    while (connection.state() != connection::StationConnection::State::Ready && wait.elapsed() < 15000)
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
+    return railways.railway() != nullptr;
+}
+
+// What a contact run sent, for how long, and how late a 5 ms timer fired meanwhile (sorted).
+struct ContactRun {
+    int sent = 0;
+    double seconds = 0;
+    std::vector<double> lateness;
+};
+
+// Feeds the station's contacts for RunMs while a 5 ms timer measures the event loop's latency.
+ContactRun feedContacts(sim::SimulatedStation& station) {
+    ContactRun run;
+    QElapsedTimer clock;
+    QTimer feed;
+    feed.setTimerType(Qt::PreciseTimer);
+    QObject::connect(&feed, &QTimer::timeout, [&] {
+        const qint64 due = clock.elapsed() * BatchSize / BatchMs; // catch up when the timer was late
+        for (; run.sent < due; ++run.sent)
+            station.setContact(0, std::uint16_t(1 + run.sent % 9), (run.sent / 9) % 2 == 0);
+    });
+    QTimer probe;
+    probe.setTimerType(Qt::PreciseTimer);
+    qint64 expectedNs = 5000000;
+    QObject::connect(&probe, &QTimer::timeout, [&] {
+        const qint64 now = clock.nsecsElapsed();
+        run.lateness.push_back(std::max<double>(0, double(now - expectedNs) / 1e6));
+        expectedNs = now + 5000000;
+    });
+    clock.start();
+    feed.start(BatchMs);
+    probe.start(5);
+    while (clock.elapsed() < RunMs)
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
+    feed.stop();
+    probe.stop();
+    run.seconds = double(clock.elapsed()) / 1000.0;
+    std::sort(run.lateness.begin(), run.lateness.end());
+    return run;
+}
+
+void printContactFigures(const ContactRun& run, int delivered, int tileUpdates) {
+    const double seconds = run.seconds;
+    const std::vector<double>& lateness = run.lateness;
+    std::printf("S88 events with the plan shown, batches of %d every %d ms for %.1f s:\n", BatchSize, BatchMs,
+                seconds);
+    std::printf("  sent %.0f events/s, delivered %.0f events/s (%d of %d), %.0f tile updates/s\n",
+                run.sent / seconds, delivered / seconds, delivered, run.sent, tileUpdates / seconds);
+    std::printf("  event loop latency (5 ms timer late by): median %.2f ms, p99 %.2f ms, max %.2f ms\n",
+                lateness[lateness.size() / 2], lateness[std::size_t(double(lateness.size() - 1) * 0.99)],
+                lateness.back());
+}
+
 void benchContacts() {
     sim::SimulatedStation station(sim::StationLayout::demo());
     sim::StationServerSettings settings;
@@ -119,11 +184,7 @@ void benchContacts() {
     panel.resize(1200, 800);
     panel.show();
     connection.connectTo(QStringLiteral("tcp://127.0.0.1:%1").arg(server.tcpPort()));
-    QElapsedTimer wait;
-    wait.start();
-    while (connection.state() != connection::StationConnection::State::Ready && wait.elapsed() < 15000)
-        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
-    if (!railways.railway()) {
+    if (!waitForRailway(connection, railways)) {
         std::printf("contacts: the simulated station did not get ready\n");
         return;
     }
@@ -135,50 +196,12 @@ void benchContacts() {
         [&](const station::StationUpdates& updates) { delivered += int(updates.contacts.size()); });
     QObject::connect(railways.railway(), &model::Railway::tilesChanged,
                      [&](const QList<model::TileRef>& tiles) { tileUpdates += int(tiles.size()); });
-    // Every 10 ms a batch of 20 events, as a busy S88 bus delivers them: 2,000 events per second on the
-    // demo's contacts 1..9, each event a real change.
-    constexpr int BatchMs = 10;
-    constexpr int BatchSize = 20;
-    int sent = 0;
-    QTimer feed;
-    feed.setTimerType(Qt::PreciseTimer);
-    QElapsedTimer clock;
-    QObject::connect(&feed, &QTimer::timeout, [&] {
-        const qint64 due = clock.elapsed() * BatchSize / BatchMs; // catch up when the timer was late
-        for (; sent < due; ++sent)
-            station.setContact(0, std::uint16_t(1 + sent % 9), (sent / 9) % 2 == 0);
-    });
-    // The event loop's latency: how late a 5 ms timer fires.
-    std::vector<double> lateness;
-    QTimer probe;
-    probe.setTimerType(Qt::PreciseTimer);
-    qint64 expectedNs = 5000000;
-    QObject::connect(&probe, &QTimer::timeout, [&] {
-        const qint64 now = clock.nsecsElapsed();
-        lateness.push_back(std::max<double>(0, double(now - expectedNs) / 1e6));
-        expectedNs = now + 5000000;
-    });
-    clock.start();
-    feed.start(BatchMs);
-    probe.start(5);
-    constexpr qint64 RunMs = 5000;
-    while (clock.elapsed() < RunMs)
-        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
-    feed.stop();
-    probe.stop();
-    const double seconds = double(clock.elapsed()) / 1000.0;
+    const ContactRun run = feedContacts(station);
     QElapsedTimer drain; // the events still on their way
     drain.start();
-    while (delivered < sent && drain.elapsed() < 2000)
+    while (delivered < run.sent && drain.elapsed() < 2000)
         QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
-    std::sort(lateness.begin(), lateness.end());
-    std::printf("S88 events with the plan shown, batches of %d every %d ms for %.1f s:\n", BatchSize, BatchMs,
-                seconds);
-    std::printf("  sent %.0f events/s, delivered %.0f events/s (%d of %d), %.0f tile updates/s\n",
-                sent / seconds, delivered / seconds, delivered, sent, tileUpdates / seconds);
-    std::printf("  event loop latency (5 ms timer late by): median %.2f ms, p99 %.2f ms, max %.2f ms\n",
-                lateness[lateness.size() / 2], lateness[std::size_t(double(lateness.size() - 1) * 0.99)],
-                lateness.back());
+    printContactFigures(run, delivered, tileUpdates);
 }
 
 } // namespace

@@ -28,7 +28,7 @@ def write(target, name, data):
         f.write(data if isinstance(data, bytes) else data.encode("latin-1"))
 
 
-DOCUMENT_FRAMES = {  # the protocol document's examples (tests/core/cs2/DocumentExamplesTest.cpp)
+DOCUMENT_FRAMES = {  # the protocol document's examples (tests/core/cs2/DocumentChapter*Test.cpp)
     "system-stop": frame(0x00, False, 0x4711, [0, 0, 0, 0, 0]),
     "system-go": frame(0x00, False, 0x4711, [0, 0, 0, 0, 1]),
     "loco-speed": frame(0x04, False, 0x4711, [0, 0, 0xC0, 0x03, 0x01, 0x20]),

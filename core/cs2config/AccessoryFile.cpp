@@ -4,6 +4,7 @@
 #include "cs2config/AccessoryRecordSupport.h"
 #include "cs2config/JsonWriter.h"
 #include "cs2config/RecordEditor.h"
+#include "cs2config/RecordFile.h"
 #include "cs2config/Text.h"
 
 namespace stellwerk::cs2config {
@@ -113,6 +114,14 @@ void writeAccessoryJson(JsonWriter& json, const Accessory& accessory) {
     json.endObject();
 }
 
+constexpr accessories::RecordFileKind<AccessoryFile, Accessory> kind{.items = &AccessoryFile::accessories,
+                                                                     .readAs = "accessories",
+                                                                     .fileName = "magnetartikel.cs2",
+                                                                     .jsonItems = "accessories",
+                                                                     .read = readAccessory,
+                                                                     .write = writeRecord,
+                                                                     .writeJson = writeAccessoryJson};
+
 } // namespace
 
 int Accessory::addressCount() const {
@@ -121,23 +130,13 @@ int Accessory::addressCount() const {
 }
 
 AccessoryFile AccessoryFile::read(const Document& document, Diagnostics& diagnostics) {
-    AccessoryFile file;
-    file.document = document;
-    accessories::checkSection(document, section, "accessories", diagnostics);
-    OnceReporter reporter(diagnostics);
-    const accessories::FileVersion version =
-        accessories::readRecords(document, recordKeyword, reporter, [&](const Node& record) {
-            file.accessories.push_back(readAccessory(record, reporter));
-        });
-    file.versionMajor = version.major;
-    file.versionMinor = version.minor;
+    AccessoryFile file = accessories::readRecordFile(kind, document, diagnostics);
     checkAccessoryAddresses(file.accessories, diagnostics);
     return file;
 }
 
 Document AccessoryFile::write() const {
-    return accessories::writeRecords(document, {versionMajor, versionMinor}, recordKeyword, accessories,
-                                     writeRecord);
+    return accessories::writeRecordFile(kind, *this);
 }
 
 Document writeAccessoryInfo(const std::vector<Accessory>& accessories, LineStyle style) {
@@ -160,16 +159,7 @@ Document writeAccessoryInfo(const std::vector<Accessory>& accessories, LineStyle
 }
 
 std::string toJson(const AccessoryFile& file) {
-    JsonWriter json;
-    json.beginObject();
-    json.value("file", "magnetartikel.cs2");
-    accessories::writeVersionJson(json, {file.versionMajor, file.versionMinor});
-    json.beginArray("accessories");
-    for (const Accessory& accessory : file.accessories)
-        writeAccessoryJson(json, accessory);
-    json.endArray();
-    json.endObject();
-    return json.text();
+    return accessories::recordFileJson(kind, file);
 }
 
 } // namespace stellwerk::cs2config

@@ -130,47 +130,4 @@ void writeVersionJson(JsonWriter& json, const FileVersion& version);
 void checkSection(const Document& document, std::string_view expected, std::string_view readAs,
                   Diagnostics& diagnostics);
 
-// Reads the version record and hands every `keyword` record to `read`, in file order; other records and
-// lines outside any record are reported once.
-template <class Read>
-FileVersion readRecords(const Document& document, std::string_view keyword, OnceReporter& reporter,
-                        Read read) {
-    const FileVersion version = readVersion(document, reporter);
-    for (const Node& node : document.topLevel()) {
-        if (!node.isEntry())
-            continue;
-        if (node.level() > 0)
-            reporter.strayLine(node);
-        else if (node.key() == keyword)
-            read(node);
-        else if (node.key() != "version")
-            reporter.unknownRecord(node);
-    }
-    return version;
-}
-
-// The document with its version record updated and its `keyword` records replaced by `write(item, document)`
-// of each item, in order.
-template <class Item, class Write>
-Document writeRecords(const Document& document, const FileVersion& version, std::string_view keyword,
-                      const std::vector<Item>& items, Write write) {
-    Document out = document;
-    writeVersion(out, version);
-    std::vector<Node> records;
-    records.reserve(items.size());
-    for (const Item& item : items)
-        records.push_back(write(item, out));
-    out.replaceRecords(keyword, std::move(records));
-    return out;
-}
-
-// The first item with this `.id`, or null.
-template <class Item>
-const Item* findById(const std::vector<Item>& items, std::int64_t id) {
-    for (const Item& item : items)
-        if (item.id == id)
-            return &item;
-    return nullptr;
-}
-
 } // namespace stellwerk::cs2config::accessories

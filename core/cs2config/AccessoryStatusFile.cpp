@@ -2,8 +2,7 @@
 
 #include "cs2config/AccessoryRecordSupport.h"
 #include "cs2config/JsonWriter.h"
-
-#include <map>
+#include "cs2config/RecordFile.h"
 
 namespace stellwerk::cs2config {
 
@@ -12,7 +11,6 @@ namespace {
 using accessories::OnceReporter;
 using accessories::RecordReader;
 using accessories::RecordWriter;
-using accessories::writeOptional;
 
 AccessoryState readState(const Node& record, OnceReporter& reporter) {
     reporter.checkKeys(record, "artikel records", {"id", "stellung"});
@@ -25,15 +23,12 @@ AccessoryState readState(const Node& record, OnceReporter& reporter) {
 }
 
 void checkDuplicates(const std::vector<AccessoryState>& states, Diagnostics& diagnostics) {
-    std::map<std::int64_t, int> firstLine;
-    for (const AccessoryState& state : states) {
-        const auto [it, inserted] = firstLine.emplace(state.id, state.lineNumber());
-        if (!inserted)
-            diagnostics.warning(state.lineNumber(),
-                                "state of accessory " + std::to_string(state.id) +
-                                    " given again (first at line " + std::to_string(it->second) + ")",
-                                "both kept; the first one is used");
-    }
+    accessories::firstLineOfEachId(states, [&](const AccessoryState& state, int firstLine) {
+        diagnostics.warning(state.lineNumber(),
+                            "state of accessory " + std::to_string(state.id) +
+                                " given again (first at line " + std::to_string(firstLine) + ")",
+                            "both kept; the first one is used");
+    });
 }
 
 Node writeState(const AccessoryState& state, const Document& document) {
@@ -44,26 +39,33 @@ Node writeState(const AccessoryState& state, const Document& document) {
     return record;
 }
 
+void writeStateJson(JsonWriter& json, const AccessoryState& state) {
+    json.beginObject();
+    json.value("line", state.lineNumber());
+    json.value("id", state.id);
+    json.value("position", state.position);
+    json.endObject();
+}
+
+constexpr accessories::RecordFileKind<AccessoryStatusFile, AccessoryState> kind{
+    .items = &AccessoryStatusFile::states,
+    .readAs = "accessory states",
+    .fileName = "magnetartikel.sr2",
+    .jsonItems = "states",
+    .read = readState,
+    .write = writeState,
+    .writeJson = writeStateJson};
+
 } // namespace
 
 AccessoryStatusFile AccessoryStatusFile::read(const Document& document, Diagnostics& diagnostics) {
-    AccessoryStatusFile file;
-    file.document = document;
-    accessories::checkSection(document, section, "accessory states", diagnostics);
-    OnceReporter reporter(diagnostics);
-    const accessories::FileVersion version =
-        accessories::readRecords(document, recordKeyword, reporter, [&](const Node& record) {
-            file.states.push_back(readState(record, reporter));
-        });
-    file.versionMajor = version.major;
-    file.versionMinor = version.minor;
+    AccessoryStatusFile file = accessories::readRecordFile(kind, document, diagnostics);
     checkDuplicates(file.states, diagnostics);
     return file;
 }
 
 Document AccessoryStatusFile::write() const {
-    return accessories::writeRecords(document, {versionMajor, versionMinor}, recordKeyword, states,
-                                     writeState);
+    return accessories::writeRecordFile(kind, *this);
 }
 
 const AccessoryState* AccessoryStatusFile::find(std::int64_t id) const {
@@ -71,21 +73,7 @@ const AccessoryState* AccessoryStatusFile::find(std::int64_t id) const {
 }
 
 std::string toJson(const AccessoryStatusFile& file) {
-    JsonWriter json;
-    json.beginObject();
-    json.value("file", "magnetartikel.sr2");
-    accessories::writeVersionJson(json, {file.versionMajor, file.versionMinor});
-    json.beginArray("states");
-    for (const AccessoryState& state : file.states) {
-        json.beginObject();
-        json.value("line", state.lineNumber());
-        json.value("id", state.id);
-        json.value("position", state.position);
-        json.endObject();
-    }
-    json.endArray();
-    json.endObject();
-    return json.text();
+    return accessories::recordFileJson(kind, file);
 }
 
 } // namespace stellwerk::cs2config

@@ -2,10 +2,9 @@
 
 #include "cs2config/AccessoryRecordSupport.h"
 #include "cs2config/JsonWriter.h"
+#include "cs2config/RecordFile.h"
 #include "cs2config/RouteDelay.h"
 #include "cs2config/Text.h"
-
-#include <map>
 
 namespace stellwerk::cs2config {
 
@@ -99,15 +98,12 @@ Route readRoute(const Node& record, OnceReporter& reporter) {
 }
 
 void checkRoutes(const std::vector<Route>& routes, Diagnostics& diagnostics) {
-    std::map<std::int64_t, int> firstLine;
-    for (const Route& route : routes) {
-        const auto [it, inserted] = firstLine.emplace(route.id, route.lineNumber());
-        if (!inserted)
-            diagnostics.warning(route.lineNumber(),
-                                "duplicate route id " + std::to_string(route.id) + " (first at line " +
-                                    std::to_string(it->second) + ")",
-                                "both kept");
-    }
+    const auto firstLine = accessories::firstLineOfEachId(routes, [&](const Route& route, int first) {
+        diagnostics.warning(route.lineNumber(),
+                            "duplicate route id " + std::to_string(route.id) + " (first at line " +
+                                std::to_string(first) + ")",
+                            "both kept");
+    });
     for (const Route& route : routes)
         for (const RouteStep& step : route.steps)
             if (step.runsRoute() && !firstLine.contains(step.routeReference))
@@ -206,26 +202,24 @@ void writeRouteJson(JsonWriter& json, const Route& route) {
     json.endObject();
 }
 
+constexpr accessories::RecordFileKind<RouteFile, Route> kind{.items = &RouteFile::routes,
+                                                             .readAs = "routes",
+                                                             .fileName = "fahrstrassen.cs2",
+                                                             .jsonItems = "routes",
+                                                             .read = readRoute,
+                                                             .write = writeRoute,
+                                                             .writeJson = writeRouteJson};
+
 } // namespace
 
 RouteFile RouteFile::read(const Document& document, Diagnostics& diagnostics) {
-    RouteFile file;
-    file.document = document;
-    accessories::checkSection(document, section, "routes", diagnostics);
-    OnceReporter reporter(diagnostics);
-    const accessories::FileVersion version =
-        accessories::readRecords(document, recordKeyword, reporter, [&](const Node& record) {
-            file.routes.push_back(readRoute(record, reporter));
-        });
-    file.versionMajor = version.major;
-    file.versionMinor = version.minor;
+    RouteFile file = accessories::readRecordFile(kind, document, diagnostics);
     checkRoutes(file.routes, diagnostics);
     return file;
 }
 
 Document RouteFile::write() const {
-    return accessories::writeRecords(document, {versionMajor, versionMinor}, recordKeyword, routes,
-                                     writeRoute);
+    return accessories::writeRecordFile(kind, *this);
 }
 
 const Route* RouteFile::find(std::int64_t id) const {
@@ -233,16 +227,7 @@ const Route* RouteFile::find(std::int64_t id) const {
 }
 
 std::string toJson(const RouteFile& file) {
-    JsonWriter json;
-    json.beginObject();
-    json.value("file", "fahrstrassen.cs2");
-    accessories::writeVersionJson(json, {file.versionMajor, file.versionMinor});
-    json.beginArray("routes");
-    for (const Route& route : file.routes)
-        writeRouteJson(json, route);
-    json.endArray();
-    json.endObject();
-    return json.text();
+    return accessories::recordFileJson(kind, file);
 }
 
 } // namespace stellwerk::cs2config

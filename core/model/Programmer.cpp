@@ -1,5 +1,6 @@
 #include "model/Programmer.h"
 
+#include "model/Commands.h"
 #include "station/StationSession.h"
 
 #include <QPointer>
@@ -130,8 +131,7 @@ bool Programmer::discover() {
     if (!start(Task::Discovery))
         return false;
     // Form 2 with protocol 32: the station runs a whole mfx search and reports its steps (3.1).
-    if (!session_.send(
-            {0, false, 0, cs2::LocoDiscovery{std::nullopt, std::uint8_t(DiscoverySteps), std::nullopt}})) {
+    if (!session_.send(commands::discoverMfx(std::uint8_t(DiscoverySteps)))) {
         ProgrammingResult result;
         result.task = Task::Discovery;
         result.outcome = Outcome::NotSent;
@@ -143,11 +143,11 @@ bool Programmer::discover() {
 }
 
 bool Programmer::bind(std::uint32_t mfxUid, std::uint16_t sid) {
-    return registration(Task::Bind, mfxUid, sid, {0, false, 0, cs2::MfxBind{mfxUid, sid}});
+    return registration(Task::Bind, mfxUid, sid, commands::bindMfx(mfxUid, sid));
 }
 
 bool Programmer::verify(std::uint32_t mfxUid, std::uint16_t sid) {
-    return registration(Task::Verify, mfxUid, sid, {0, false, 0, cs2::MfxVerify{mfxUid, sid, std::nullopt}});
+    return registration(Task::Verify, mfxUid, sid, commands::verifyMfx(mfxUid, sid));
 }
 
 // Bind and verify name a decoder and the SID it gets or should have; SID 0 is no SID.
@@ -176,8 +176,7 @@ bool Programmer::readCv(const CvTarget& target) {
     ProgrammingResult result;
     result.task = Task::ReadCv;
     result.target = target;
-    const cs2::CvAddress cv{target.cv, target.index};
-    request({0, false, 0, cs2::ConfigRead{target.decoder, cv, std::uint8_t(1), std::nullopt}}, result);
+    request(commands::readCv(target.decoder, {target.cv, target.index}), result);
     return true;
 }
 
@@ -190,11 +189,10 @@ bool Programmer::writeCv(const CvWrite& write) {
     result.task = Task::WriteCv;
     result.target = write.target;
     result.value = write.value;
-    const std::uint8_t flags =
-        std::uint8_t((write.track == ProgrammingTrack::Main ? cs2::ConfigWrite::MainTrack : 0) |
-                     (std::uint8_t(write.mode) << 4));
     const cs2::CvAddress cv{write.target.cv, write.target.index};
-    request({0, false, 0, cs2::ConfigWrite{write.target.decoder, cv, write.value, flags}}, result);
+    request(commands::writeCv(write.target.decoder, cv, write.value, write.track == ProgrammingTrack::Main,
+                              write.mode),
+            result);
     return true;
 }
 

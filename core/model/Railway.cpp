@@ -1,6 +1,7 @@
 #include "model/Railway.h"
 
 #include "model/CommandProblem.h"
+#include "model/Commands.h"
 #include "station/StationSession.h"
 
 #include <QPointer>
@@ -190,7 +191,7 @@ QString Railway::locoName(std::uint32_t loco) const {
 
 void Railway::setSpeed(std::uint32_t loco, int speed) {
     const auto value = std::uint16_t(std::clamp(speed, 0, int(Locomotive::MaxSpeed)));
-    locoCommand(loco, LocomotiveControl::Speed, -1, {0, false, 0, cs2::LocoSpeed{cs2::LocId(loco), value}},
+    locoCommand(loco, LocomotiveControl::Speed, -1, commands::speed(cs2::LocId(loco), value),
                 QStringLiteral("%1: speed %2").arg(locoName(loco)).arg(value));
 }
 
@@ -200,9 +201,8 @@ void Railway::setDirection(std::uint32_t loco, cs2::Direction direction) {
             .arg(locoName(loco), direction == cs2::Direction::Backward ? QStringLiteral("backward")
                                                                        : QStringLiteral("forward"));
     QPointer<Railway> self(this);
-    locoCommand(loco, LocomotiveControl::Direction, -1,
-                {0, false, 0, cs2::LocoDirection{cs2::LocId(loco), std::uint8_t(direction)}}, what,
-                [self, loco, direction] {
+    locoCommand(loco, LocomotiveControl::Direction, -1, commands::direction(cs2::LocId(loco), direction),
+                what, [self, loco, direction] {
                     // The station stopped the locomotive and will not say so (field notes).
                     if (self && self->state_.locomotives().find(loco) &&
                         self->state_.locomotives().find(loco)->directionSet(direction))
@@ -221,10 +221,9 @@ void Railway::setFunction(std::uint32_t loco, int function, bool on) {
         emit problem(QStringLiteral("%1: there is no function F%2").arg(locoName(loco)).arg(function));
         return;
     }
-    locoCommand(
-        loco, LocomotiveControl::Function, function,
-        {0, false, 0, cs2::LocoFunction{cs2::LocId(loco), std::uint8_t(function), std::uint8_t(on), {}}},
-        QStringLiteral("%1: F%2 %3").arg(locoName(loco)).arg(function).arg(on ? "on" : "off"));
+    locoCommand(loco, LocomotiveControl::Function, function,
+                commands::function(cs2::LocId(loco), std::uint8_t(function), on),
+                QStringLiteral("%1: F%2 %3").arg(locoName(loco)).arg(function).arg(on ? "on" : "off"));
 }
 
 void Railway::toggleFunction(std::uint32_t loco, int function) {
@@ -234,8 +233,7 @@ void Railway::toggleFunction(std::uint32_t loco, int function) {
 
 void Railway::emergencyStop(std::uint32_t loco) {
     QPointer<Railway> self(this);
-    locoCommand(loco, LocomotiveControl::EmergencyStop, -1,
-                {0, false, 0, cs2::LocoEmergencyStop{cs2::LocId(loco)}},
+    locoCommand(loco, LocomotiveControl::EmergencyStop, -1, commands::emergencyStop(cs2::LocId(loco)),
                 QStringLiteral("%1: emergency stop").arg(locoName(loco)), [self, loco] {
                     // Document 2.4: the locomotive stands; the station does not announce its speed.
                     Locomotive* found = self ? self->state_.locomotives().find(loco) : nullptr;
@@ -257,7 +255,7 @@ void Railway::configureDevice(std::uint32_t uid, std::uint8_t channel, std::uint
     }
     const QString what = QStringLiteral("%1: %2 = %3").arg(found->name(), setting->title()).arg(value);
     QPointer<Railway> self(this);
-    session_.request({0, false, 0, cs2::SystemStatus{uid, channel, value, std::nullopt}},
+    session_.request(commands::writeChannel(uid, channel, value),
                      [self, uid, channel, what](const station::CommandResult& result) {
                          if (!self)
                              return;
@@ -276,16 +274,15 @@ void Railway::configureDevice(std::uint32_t uid, std::uint8_t channel, std::uint
 
 // Asks the device for the value it now uses; the answer reaches the setting as a reading (0x0B, DLC 8).
 void Railway::readSetting(std::uint32_t uid, std::uint8_t channel) {
-    session_.request({0, false, 0, cs2::SystemStatus{uid, channel, std::nullopt, std::nullopt}},
-                     [](const station::CommandResult&) {});
+    session_.request(commands::readChannel(uid, channel), [](const station::CommandResult&) {});
 }
 
 void Railway::stop() {
-    command({0, false, 0, cs2::SystemStop{0}}, QStringLiteral("Stop (track power off)"));
+    command(commands::stop(), QStringLiteral("Stop (track power off)"));
 }
 
 void Railway::go() {
-    command({0, false, 0, cs2::SystemGo{0}}, QStringLiteral("Go (track power on)"));
+    command(commands::go(), QStringLiteral("Go (track power on)"));
 }
 
 } // namespace stellwerk::model

@@ -1,6 +1,7 @@
 // The accessory and route intents of the Railway.
 
 #include "model/CommandProblem.h"
+#include "model/Commands.h"
 #include "model/Railway.h"
 #include "station/StationSession.h"
 
@@ -12,10 +13,10 @@ namespace {
 // Command 0x0B for one position: output on; the station switches it off after the article's switch
 // time, or after its default time (document 4.1) when the file names none.
 cs2::Message switchCommand(const Accessory& accessory, const AccessoryOutput& output) {
-    cs2::AccessorySwitch body{output.address, output.output, 1, std::nullopt};
+    std::optional<std::uint16_t> time10ms;
     if (const auto ms = accessory.switchTimeMs(); ms && *ms > 0)
-        body.time10ms = std::uint16_t(std::min<std::int64_t>(*ms / 10, 0xFFFF));
-    return {0, false, 0, body};
+        time10ms = std::uint16_t(std::min<std::int64_t>(*ms / 10, 0xFFFF));
+    return commands::switchOutput(output.address, output.output, time10ms);
 }
 
 QString accessoryName(const Accessory& accessory) {
@@ -45,8 +46,7 @@ void Railway::switchAddress(std::int64_t address, int position) {
         emit switchingEnded(address, position, false);
         return;
     }
-    const cs2::AccessorySwitch body{*wire, std::uint8_t(position), 1, std::nullopt};
-    sendSwitching(address, position, {0, false, 0, body}, what);
+    sendSwitching(address, position, commands::switchOutput(*wire, std::uint8_t(position)), what);
 }
 
 void Railway::sendSwitching(std::int64_t address, int position, const cs2::Message& command,

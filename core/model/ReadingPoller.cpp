@@ -1,5 +1,6 @@
 #include "model/ReadingPoller.h"
 
+#include "model/Commands.h"
 #include "station/StationSession.h"
 
 #include <QPointer>
@@ -73,7 +74,7 @@ void ReadingPoller::poll() {
 void ReadingPoller::request(ReadingSource source) {
     // Answer within most of an interval, so that the next tick finds the channel free again.
     station::CommandPolicy policy{std::min(LongestWait, interval() * 4 / 5), 0};
-    const cs2::Message read{0, false, 0, cs2::SystemStatus{source.device, source.channel, {}, {}}};
+    const cs2::Message read = commands::readChannel(source.device, source.channel);
     pending_.insert(source);
     QPointer<ReadingPoller> self(this);
     auto id = std::make_shared<station::CommandId>(0);

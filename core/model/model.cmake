@@ -3,6 +3,7 @@ stellwerk_core_library(model)
 target_sources(stellwerk-model PRIVATE
     model/Accessory.cpp
     model/CommandProblem.cpp
+    model/Commands.cpp
     model/Device.cpp
     model/FeedbackContact.cpp
     model/Locomotive.cpp

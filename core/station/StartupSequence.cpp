@@ -1,5 +1,6 @@
 #include "station/StartupSequence.h"
 
+#include "cs2/Request.h"
 #include "cs2config/Document.h"
 #include "cs2config/TrackLayout.h"
 #include "station/StationSession.h"
@@ -23,14 +24,14 @@ cs2::Message functionQuery(cs2::LocId loco, std::uint8_t function) {
     cs2::LocoFunction query;
     query.loco = loco;
     query.function = function;
-    return {0, false, 0, query};
+    return cs2::request(query);
 }
 
 cs2::Message contactQuery(std::int64_t device, std::int64_t contact) {
     cs2::S88Event query;
     query.device = std::uint16_t(device);
     query.contact = std::uint16_t(contact);
-    return {0, false, 0, query};
+    return cs2::request(query);
 }
 
 } // namespace
@@ -86,8 +87,8 @@ void StartupSequence::wakeUp() {
     cs2::BootloaderCan go;
     go.raw.size = 5;
     go.raw.bytes[4] = 0x11; // UID 0, "start the application"
-    session_.send(cs2::Message{0, false, 0, go});
-    session_.request(cs2::Message{0, false, 0, cs2::TrackProtocols{0, 0x07}}, [this](const CommandResult& r) {
+    session_.send(cs2::request(go));
+    session_.request(cs2::request(cs2::TrackProtocols{0, 0x07}), [this](const CommandResult& r) {
         if (!r.succeeded() && !abandoned_)
             report(QStringLiteral("Gleisbox wake-up: enabling MM2, mfx and DCC: %1")
                        .arg(QLatin1String(commandStatusName(r.status))));
@@ -168,8 +169,8 @@ void StartupSequence::queueStateQueries() {
             if (loco.isEmpty())
                 continue;
             const cs2::LocId id(loco.uid);
-            queries_.push_back({0, false, 0, cs2::LocoSpeed{id, std::nullopt}});
-            queries_.push_back({0, false, 0, cs2::LocoDirection{id, std::nullopt}});
+            queries_.push_back(cs2::request(cs2::LocoSpeed{id, std::nullopt}));
+            queries_.push_back(cs2::request(cs2::LocoDirection{id, std::nullopt}));
             for (const auto& function : loco.functions)
                 if (function.number >= 0 && function.number < 32)
                     queries_.push_back(functionQuery(id, std::uint8_t(function.number)));

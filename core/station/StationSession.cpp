@@ -2,6 +2,7 @@
 
 #include "bus/FrameClassifier.h"
 #include "cs2/Codec.h"
+#include "cs2/Request.h"
 
 namespace stellwerk::station {
 
@@ -72,7 +73,7 @@ CommandId StationSession::request(const cs2::Message& command, CommandCallback d
 }
 
 void StationSession::ping() {
-    send(cs2::Message{0, false, 0, cs2::Ping{}});
+    send(cs2::request(cs2::Ping{}));
 }
 
 void StationSession::receive(const std::vector<can::CanFrame>& frames) {

@@ -1,5 +1,7 @@
 #include "station/StatusDataReader.h"
 
+#include "cs2/Request.h"
+
 namespace stellwerk::station {
 
 StatusDataReader::StatusDataReader(CommandTracker& tracker, QObject* parent)
@@ -35,7 +37,7 @@ void StatusDataReader::requestIndex() {
     CommandPolicy policy = policy_;
     policy.silenceMeansTrouble = false; // a device that has no status data stays silent
     tracker_.send(
-        cs2::Message{0, false, 0, request}, [this](const CommandResult& r) { indexAnswered(r); }, policy);
+        cs2::request(request), [this](const CommandResult& r) { indexAnswered(r); }, policy);
 }
 
 void StatusDataReader::indexAnswered(const CommandResult& result) {

@@ -1,5 +1,6 @@
 # locomotives tests (tests/core/cs2config)
 target_sources(stellwerk-core-tests PRIVATE
+    cs2config/LocomotiveCorpusQuirksTest.cpp
     cs2config/LocomotiveDocumentExampleTest.cpp
     cs2config/LocomotiveEditorTest.cpp
     cs2config/LocomotiveFileTest.cpp
