@@ -35,7 +35,7 @@ QString describeUrl(const QString& url) {
 // there is no host yet.
 // (`typename`, not `class`: lupdate would read the rest of the file as that class's texts.)
 template <typename Kind>
-QString withHost(const cs2::Expected<transport::TransportSettings, QString>& current, const QString& host,
+QString withHost(const Expected<transport::TransportSettings, QString>& current, const QString& host,
                  const QString& scheme) {
     if (host.isEmpty())
         return scheme;
