@@ -1,8 +1,8 @@
 // Codec throughput: decoded and encoded frames per second on one core, and heap allocations per
 // decoded frame (target: at least 10 million decodes per second and zero allocations).
 
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
-#include "cs2/FrameText.h"
 
 #include <atomic>
 #include <benchmark/benchmark.h>
@@ -36,7 +36,7 @@ std::vector<stellwerk::can::CanFrame> busTraffic() {
     std::vector<stellwerk::can::CanFrame> frames;
     for (int repeat = 0; repeat < 256; ++repeat)
         for (const char* line : lines)
-            frames.push_back(stellwerk::cs2::parseFrame(line)->frame);
+            frames.push_back(stellwerk::can::parseFrame(line)->frame);
     return frames;
 }
 

@@ -5,9 +5,9 @@
 // Loc-ID; every number read is inside its documented range.
 #include "FuzzSupport.h"
 #include "LocArgument.h"
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
 #include "cs2/Fields.h"
-#include "cs2/FrameText.h"
 
 #include <vector>
 
@@ -40,7 +40,7 @@ void checkEncode(std::uint8_t choice, const std::vector<std::string>& lines) {
     if (!decoded)
         return; // `encode` reports this as an error, with the decoder's reason
     fuzz::check(cs2::encode(*decoded) == frame, "an encoded message does not decode to itself",
-                cs2::formatDocument(frame));
+                can::formatDocument(frame));
 }
 
 void checkWords(const std::string& text) {

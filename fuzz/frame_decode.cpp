@@ -4,10 +4,10 @@
 // message; what describe() shows is enough to build the frame again (as `stellwerk-cli encode` does);
 // the report's JSON is valid.
 #include "FuzzSupport.h"
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
 #include "cs2/Fields.h"
 #include "cs2/FrameReport.h"
-#include "cs2/FrameText.h"
 
 #include <array>
 #include <cstring>

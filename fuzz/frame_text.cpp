@@ -4,17 +4,17 @@
 // JSON object per line whatever the bytes of the input.
 #include "DecodeCommand.h"
 #include "FuzzSupport.h"
-#include "cs2/FrameText.h"
+#include "can/FrameText.h"
 
 #include <sstream>
 
 using namespace stellwerk;
-using namespace stellwerk::cs2;
+using namespace stellwerk::can;
 
 namespace {
 
 void checkReadsBack(const CanFrame& frame, const std::string& text) {
-    const auto again = parseFrame(text);
+    const auto again = can::parseFrame(text);
     fuzz::check(again.hasValue(), "a printed frame cannot be read back",
                 text + (again ? "" : ": " + again.error()));
     fuzz::check(again->frame == frame, "a printed frame reads back differently", text);
@@ -36,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return -1;
     const std::string_view line(reinterpret_cast<const char*>(data), size);
     checkJsonOutput(line);
-    const auto parsed = parseFrame(line);
+    const auto parsed = can::parseFrame(line);
     if (!parsed)
         return 0;
     const CanFrame& frame = parsed->frame;

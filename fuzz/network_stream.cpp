@@ -3,9 +3,9 @@
 // (decodeDatagram), whatever the segmentation; what waits is the incomplete rest; every frame it
 // hands on is well formed and writes back to the bytes it came from.
 #include "FuzzSupport.h"
+#include "can/FrameText.h"
 #include "transport/FrameAssembler.h"
 #include "transport/NetworkFraming.h"
-#include "cs2/FrameText.h"
 
 #include <vector>
 
@@ -38,9 +38,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 "segmentation changes which frames arrive");
     for (std::size_t i = 0; i < assembled.size(); ++i) {
         fuzz::check(assembled[i] == direct[i], "segmentation changes a frame",
-                    cs2::formatDocument(assembled[i]));
+                    can::formatDocument(assembled[i]));
         fuzz::check(assembled[i].isWellFormed(), "a malformed frame was handed on",
-                    cs2::formatDocument(assembled[i]));
+                    can::formatDocument(assembled[i]));
     }
     const QByteArray again = transport::encodeFrames(assembled);
     std::vector<can::CanFrame> reread;

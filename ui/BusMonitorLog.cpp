@@ -1,6 +1,6 @@
 #include "BusMonitorLog.h"
 
-#include "cs2/FrameText.h"
+#include "can/FrameText.h"
 
 namespace stellwerk::ui {
 namespace {
@@ -54,7 +54,7 @@ bool BusMonitorLogWriter::write(std::span<const can::CanFrame> frames, const QDa
     QByteArray lines;
     lines.reserve(qsizetype(frames.size()) * 48);
     for (const can::CanFrame& frame : frames)
-        lines += prefix + QByteArray::fromStdString(cs2::formatCandump(frame)) + mark;
+        lines += prefix + QByteArray::fromStdString(can::formatCandump(frame)) + mark;
     // Handed to the system with each batch: a crash of Stellwerk keeps every frame recorded so far.
     return m_file.write(lines) == lines.size() && m_file.flush();
 }
@@ -76,7 +76,7 @@ std::optional<BusMonitorLogLine> BusMonitorLogReader::next() {
             continue;
         BusMonitorLogLine result;
         result.number = m_number;
-        const auto parsed = cs2::parseFrame(std::string_view(line.constData(), std::size_t(line.size())));
+        const auto parsed = can::parseFrame(std::string_view(line.constData(), std::size_t(line.size())));
         if (!parsed) {
             result.problem = QString::fromStdString(parsed.error());
             return result;

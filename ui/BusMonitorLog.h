@@ -43,7 +43,7 @@ struct BusMonitorLogLine {
 };
 
 // Reads a candump log one line at a time, so that a large file never has to be read at once. Lines in
-// the other notations cs2::parseFrame reads work too (without a time stamp).
+// the other notations can::parseFrame reads work too (without a time stamp).
 class BusMonitorLogReader final {
     Q_DISABLE_COPY_MOVE(BusMonitorLogReader)
 

@@ -1,7 +1,7 @@
 #include "FrameDecoderPanel.h"
 
+#include "can/FrameText.h"
 #include "cs2/FrameReport.h"
-#include "cs2/FrameText.h"
 
 #include <QEvent>
 #include <QFile>
@@ -112,7 +112,7 @@ void FrameDecoderPanel::refresh() {
         if (isSkippable(lines[i]))
             continue;
         ++frames;
-        const auto parsed = cs2::parseFrame(lines[i].toStdString());
+        const auto parsed = can::parseFrame(lines[i].toStdString());
         if (!parsed) {
             ++errors;
             items.append(errorItem(i + 1, lines[i].trimmed(), tr("unreadable"),

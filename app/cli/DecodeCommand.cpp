@@ -1,8 +1,7 @@
 #include "DecodeCommand.h"
 
-#include "bus/FrameClassifier.h"
-#include "cs2/FrameReport.h"
-#include "cs2/FrameText.h"
+#include "bus/FrameDescription.h"
+#include "can/FrameText.h"
 #include "cs2/JsonText.h"
 
 #include <istream>
@@ -17,40 +16,18 @@ public:
     FramePrinter(bool json, std::ostream& out, std::ostream& err) : json_(json), out_(out), err_(err) {}
 
     bool print(const std::string& input, std::size_t lineNumber) {
-        const auto parsed = cs2::parseFrame(input);
+        const auto parsed = can::parseFrame(input);
         if (!parsed) {
             reportUnreadable(input, lineNumber, parsed.error());
             return false;
         }
-        if (bus::classify(parsed->frame, profile_) == bus::Protocol::Foreign) {
-            printForeign(parsed->frame);
-            return true;
-        }
-        const cs2::FrameReport report(parsed->frame);
-        out_ << (json_ ? withProtocol(report.json(), bus::Protocol::Cs2) : report.text()) << '\n';
-        return report.ok();
+        // A frame no protocol of the bus claims is shown, not decoded, and is no error.
+        const bus::FrameDescription description(parsed->frame, profile_);
+        out_ << (json_ ? description.json() : description.text()) << '\n';
+        return description.decoded() || description.protocol() == bus::Protocol::Foreign;
     }
 
 private:
-    // {"protocol":"cs2", followed by the report's own keys.
-    static std::string withProtocol(const std::string& json, bus::Protocol protocol) {
-        return "{\"protocol\":\"" + std::string(bus::protocolName(protocol)) + "\"," + json.substr(1);
-    }
-
-    // A frame no protocol of the bus claims (today: a standard 11-bit frame) is shown, not decoded.
-    void printForeign(const can::CanFrame& frame) {
-        const std::string candump = cs2::formatCandump(frame);
-        const std::string id = candump.substr(0, candump.find('#'));
-        const std::string data = candump.substr(candump.find('#') + 1);
-        if (json_)
-            out_ << "{\"protocol\":\"foreign\",\"id\":\"" << id
-                 << "\",\"extended\":" << (frame.extended ? "true" : "false") << ",\"dlc\":" << int(frame.dlc)
-                 << ",\"data\":\"" << data << "\"}\n";
-        else
-            out_ << cs2::formatDocument(frame) << "  foreign " << (frame.extended ? "29-bit" : "11-bit")
-                 << " frame (no protocol of a CS2 bus)\n";
-    }
-
     void reportUnreadable(const std::string& input, std::size_t lineNumber, const std::string& error) {
         if (json_)
             out_ << "{\"input\":" << cs2::jsonQuoted(input) << ",\"error\":" << cs2::jsonQuoted(error)

@@ -1,9 +1,9 @@
 #include "EncodeCommand.h"
 
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
 #include "cs2/Fields.h"
 #include "cs2/FrameReport.h"
-#include "cs2/FrameText.h"
 
 #include <ostream>
 
@@ -56,9 +56,9 @@ int runEncode(const std::vector<std::string>& arguments, std::ostream& out, std:
         err << "stellwerk-cli encode: " << arguments[0] << ": " << check.result().error().message() << '\n';
         return 1;
     }
-    out << "document: " << cs2::formatDocument(frame) << '\n';
-    out << "candump:  " << cs2::formatCandump(frame) << '\n';
-    out << "network:  " << cs2::formatNetwork(frame) << '\n';
+    out << "document: " << can::formatDocument(frame) << '\n';
+    out << "candump:  " << can::formatCandump(frame) << '\n';
+    out << "network:  " << can::formatNetwork(frame) << '\n';
     return 0;
 }
 

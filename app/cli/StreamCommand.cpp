@@ -1,7 +1,7 @@
 #include "StreamCommand.h"
 
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
-#include "cs2/FrameText.h"
 #include "cs2config/ConfigStreamKeys.h"
 #include "cs2config/ConfigStreamReceiver.h"
 #include "cs2config/ConfigStreamRequestCollector.h"
@@ -62,7 +62,7 @@ public:
         : directory_(std::move(directory)), out_(out), err_(err) {}
 
     void line(const std::string& text, std::size_t number) {
-        const auto parsed = cs2::parseFrame(text);
+        const auto parsed = can::parseFrame(text);
         if (!parsed) {
             err_ << "stellwerk-cli stream decode: line " << number << ": " << parsed.error()
                  << " (skipped): " << text << '\n';
@@ -274,7 +274,7 @@ int runEncode(const std::vector<std::string>& arguments, std::ostream& out, std:
     }
     const std::string contents{std::istreambuf_iterator<char>(file), {}};
     for (const auto& frame : framesFor(*options, *request, contents))
-        out << (options->candump ? cs2::formatCandump(frame) : cs2::formatDocument(frame)) << '\n';
+        out << (options->candump ? can::formatCandump(frame) : can::formatDocument(frame)) << '\n';
     return 0;
 }
 

@@ -1,7 +1,10 @@
-# Which protocol a frame on a bus belongs to (core/bus): pure, above the codecs.
+# Which protocol a frame on a bus belongs to and what it says, protocol-neutral (core/bus): pure, above
+# the codecs it dispatches to.
 stellwerk_core_library(bus PURE)
 target_sources(stellwerk-bus PRIVATE
     bus/FrameClassifier.cpp
     bus/FrameClassifier.h
+    bus/FrameDescription.cpp
+    bus/FrameDescription.h
 )
-target_link_libraries(stellwerk-bus PUBLIC stellwerk-can)
+target_link_libraries(stellwerk-bus PUBLIC stellwerk-can PRIVATE stellwerk-cs2)

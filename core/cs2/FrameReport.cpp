@@ -1,7 +1,7 @@
 #include "cs2/FrameReport.h"
 
+#include "can/FrameText.h"
 #include "cs2/Fields.h"
-#include "cs2/FrameText.h"
 #include "cs2/JsonText.h"
 
 #include <cstdio>

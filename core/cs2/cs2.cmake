@@ -8,7 +8,6 @@ target_sources(stellwerk-cs2 PRIVATE
     cs2/FeedbackCodec.cpp
     cs2/Fields.cpp
     cs2/FrameReport.cpp
-    cs2/FrameText.cpp
     cs2/Hash.cpp
     cs2/JsonText.cpp
     cs2/LocoCodec.cpp

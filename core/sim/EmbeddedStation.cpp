@@ -1,6 +1,7 @@
 #include "sim/EmbeddedStation.h"
 
 #include "cs2/Codec.h"
+#include "cs2/Request.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
@@ -24,7 +25,7 @@ constexpr std::uint8_t Headlights = 0; // F0
 
 // Commands the station as a controller on the bus would, before anyone connects.
 void command(SimulatedStation& station, cs2::MessageBody body) {
-    station.receive(cs2::encode(cs2::Message{0, false, 0, std::move(body)}));
+    station.receive(cs2::encode(cs2::request(std::move(body))));
 }
 
 void startDemoTrains(SimulatedStation& station) {

@@ -4,7 +4,7 @@
 // SimulatedStation behind its StationServer) over real loopback sockets or Qt's virtualcan bus. Each
 // rig picks free ports; each test process has its own virtual CAN bus.
 
-#include "cs2/FrameText.h"
+#include "can/FrameText.h"
 #include "cs2/Header.h"
 #include "cs2/Messages.h"
 #include "sim/SimulatedStation.h"

@@ -7,7 +7,7 @@
 #include "BusMonitorPanel.h"
 #include "BusMonitorSettings.h"
 #include "Translations.h"
-#include "cs2/FrameText.h"
+#include "can/FrameText.h"
 
 #include <QLabel>
 #include <QSignalSpy>
@@ -24,7 +24,7 @@ using Direction = BusMonitorModel::Direction;
 namespace {
 
 can::CanFrame frame(const char* text) {
-    return cs2::parseFrame(text).value().frame;
+    return can::parseFrame(text).value().frame;
 }
 
 // loco.speed DCC 3 speed 288, loco.speed MM2 24 speed 0, loco.direction DCC 3, system.stop.

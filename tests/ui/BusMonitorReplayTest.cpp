@@ -6,8 +6,8 @@
 #include "BusMonitorModel.h"
 #include "BusMonitorPanel.h"
 #include "EmbeddedStationSupport.h"
+#include "can/FrameText.h"
 #include "connection/StationConnection.h"
-#include "cs2/FrameText.h"
 
 #include <QDateTime>
 #include <QElapsedTimer>
@@ -51,7 +51,7 @@ struct Arrivals {
             [this](const std::vector<can::CanFrame>& frames, const QDateTime& time, bool outgoing) {
                 ++batches;
                 for (const can::CanFrame& frame : frames) {
-                    texts.push_back(cs2::formatCandump(frame));
+                    texts.push_back(can::formatCandump(frame));
                     times.push_back(time.toMSecsSinceEpoch());
                     arrivedMs.push_back(clock.elapsed());
                     sent.push_back(outgoing);
@@ -212,13 +212,13 @@ TEST_F(BusMonitorReplayTest, PanelShowsTheReplayedFramesInsteadOfLiveOnes) {
     panel.setConnection(&station);
     panel.setReplaySpeed(10.0);
     ASSERT_EQ(panel.openLog(write(timedLog())), QString());
-    emit station.framesSeen({cs2::parseFrame("00004711 5 00 00 00 00 01").value().frame}, false);
+    emit station.framesSeen({can::parseFrame("00004711 5 00 00 00 00 01").value().frame}, false);
     ASSERT_TRUE(QTest::qWaitFor([&] { return panel.replay()->state() == State::Finished; }, ReplayMs));
     panel.model()->flush();
     const BusMonitorModel& model = *panel.model();
     ASSERT_EQ(model.rowCount(), 5);
     for (int row = 0; row < 5; ++row)
-        EXPECT_EQ(cs2::formatCandump(model.frameAt(row)), expectedFrames[std::size_t(row)]);
+        EXPECT_EQ(can::formatCandump(model.frameAt(row)), expectedFrames[std::size_t(row)]);
     EXPECT_EQ(model.timeAt(4).toMSecsSinceEpoch(), 1700000001000);
     EXPECT_EQ(model.directionAt(3), BusMonitorModel::Direction::Sent);
     EXPECT_EQ(model.directionAt(4), BusMonitorModel::Direction::Received);

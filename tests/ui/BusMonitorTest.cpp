@@ -5,7 +5,7 @@
 #include "RailwayBinding.h"
 #include "StationTestSupport.h"
 #include "Translations.h"
-#include "cs2/FrameText.h"
+#include "can/FrameText.h"
 #include "model/Railway.h"
 
 #include <QAbstractItemModel>
@@ -33,7 +33,7 @@ constexpr int FramesMs = 10000;
 constexpr quint32 V100 = 0x18; // V 100 2023, MM2 address 24: stands still in the demo
 
 can::CanFrame frame(const char* text) {
-    const auto parsed = cs2::parseFrame(text);
+    const auto parsed = can::parseFrame(text);
     EXPECT_TRUE(parsed.hasValue()) << text;
     return parsed.hasValue() ? parsed.value().frame : can::CanFrame{};
 }

@@ -1,8 +1,8 @@
 #include "cs2/Crc16.h"
 
 #include "TestSupport.h"
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
-#include "cs2/FrameText.h"
 
 #include <fstream>
 #include <gtest/gtest.h>
@@ -47,7 +47,7 @@ TEST(Crc16, CorpusStreamChecksumCoversThePaddedDataBytes) {
     while (std::getline(in, line)) {
         if (line.find_first_not_of(" \t\r") == std::string::npos)
             continue;
-        const auto parsed = parseFrame(line);
+        const auto parsed = stellwerk::can::parseFrame(line);
         ASSERT_TRUE(parsed.hasValue()) << line;
         const auto message = decode(parsed->frame);
         ASSERT_TRUE(message.hasValue()) << line;

@@ -7,11 +7,11 @@
 // the data bytes as a comment). All frames use the document's hash 0x4711 unless a test says otherwise.
 
 #include "DocumentExamplesSupport.h"
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
 #include "cs2/Crc16.h"
 #include "cs2/Fields.h"
 #include "cs2/FrameReport.h"
-#include "cs2/FrameText.h"
 #include "cs2/Hash.h"
 #include "cs2/Header.h"
 #include "cs2/LocId.h"
@@ -81,9 +81,9 @@ TEST(Document_1_2_7_Ethernet, ThirteenByteDatagram) {
     EXPECT_EQ(go.toNetwork(), datagram);
     EXPECT_EQ(CanFrame::fromNetwork(datagram), go);
     EXPECT_EQ(formatNetwork(go), "00004711050000000001000000");
-    const auto parsed = parseFrame("00004711050000000001000000");
+    const auto parsed = can::parseFrame("00004711050000000001000000");
     ASSERT_TRUE(parsed.hasValue());
-    EXPECT_EQ(parsed->notation, FrameNotation::Network);
+    EXPECT_EQ(parsed->notation, can::FrameNotation::Network);
     EXPECT_EQ(parsed->frame, go);
 }
 

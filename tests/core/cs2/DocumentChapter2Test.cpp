@@ -7,11 +7,11 @@
 // the data bytes as a comment). All frames use the document's hash 0x4711 unless a test says otherwise.
 
 #include "DocumentExamplesSupport.h"
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
 #include "cs2/Crc16.h"
 #include "cs2/Fields.h"
 #include "cs2/FrameReport.h"
-#include "cs2/FrameText.h"
 #include "cs2/Hash.h"
 #include "cs2/Header.h"
 #include "cs2/LocId.h"
@@ -247,12 +247,12 @@ TEST(Document_2_7_AccessorySwitchTime, Time100ms) {
 }
 
 TEST(Document_2_7_AccessorySwitchTime, LiteralExampleIsRefused) {
-    const auto bytesOnly = parseFrame("00004711 7 00 00 00 00 06 0A");
+    const auto bytesOnly = can::parseFrame("00004711 7 00 00 00 00 06 0A");
     ASSERT_FALSE(bytesOnly.hasValue());
     EXPECT_TRUE(contains(bytesOnly.error(), "DLC 7 announces 7 data bytes, only 6 given"))
         << bytesOnly.error();
     // As printed, with its comment: the comment's first word stands where the seventh byte should be.
-    const auto asPrinted = parseFrame("00004711 7 00 00 00 00 06 0A Schaltzeit 100 ms festlegen");
+    const auto asPrinted = can::parseFrame("00004711 7 00 00 00 00 06 0A Schaltzeit 100 ms festlegen");
     ASSERT_FALSE(asPrinted.hasValue());
     EXPECT_TRUE(contains(asPrinted.error(), "'Schaltzeit'")) << asPrinted.error();
 }

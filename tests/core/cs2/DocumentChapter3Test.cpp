@@ -8,11 +8,11 @@
 // the data bytes as a comment). All frames use the document's hash 0x4711 unless a test says otherwise.
 
 #include "DocumentExamplesSupport.h"
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
 #include "cs2/Crc16.h"
 #include "cs2/Fields.h"
 #include "cs2/FrameReport.h"
-#include "cs2/FrameText.h"
 #include "cs2/Hash.h"
 #include "cs2/Header.h"
 #include "cs2/LocId.h"

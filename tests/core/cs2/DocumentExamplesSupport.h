@@ -4,9 +4,9 @@
 // document's notation, what describe() shows of them, and frames the decoder must refuse.
 
 #include "TestSupport.h"
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
 #include "cs2/Fields.h"
-#include "cs2/FrameText.h"
 #include "cs2/Messages.h"
 
 #include <cstdint>

@@ -5,11 +5,11 @@
 // the data bytes as a comment). All frames use the document's hash 0x4711 unless a test says otherwise.
 
 #include "DocumentExamplesSupport.h"
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
 #include "cs2/Crc16.h"
 #include "cs2/Fields.h"
 #include "cs2/FrameReport.h"
-#include "cs2/FrameText.h"
 #include "cs2/Hash.h"
 #include "cs2/Header.h"
 #include "cs2/LocId.h"
@@ -167,7 +167,7 @@ TEST(FieldNotes_ConfigData, CorpusStreamTestVector) {
     for (std::string line; std::getline(in, line);) {
         if (line.find_first_not_of(" \t\r") == std::string::npos)
             continue;
-        const auto parsed = parseFrame(line);
+        const auto parsed = can::parseFrame(line);
         ASSERT_TRUE(parsed.hasValue()) << line << ": " << parsed.error();
         frames.push_back(parsed->frame);
     }

@@ -2,8 +2,8 @@
 
 // Helpers shared by the codec tests: frames from the document's notation, and corpus paths.
 
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
-#include "cs2/FrameText.h"
 
 #include <filesystem>
 #include <gtest/gtest.h>
@@ -14,7 +14,7 @@ namespace stellwerk::cs2::test {
 
 // A frame written as in the document ("00004711 5 00 00 00 00 00"); fails the test if unreadable.
 inline CanFrame frame(std::string_view text) {
-    const auto parsed = parseFrame(text);
+    const auto parsed = can::parseFrame(text);
     EXPECT_TRUE(parsed.hasValue()) << text << ": " << (parsed ? "" : parsed.error());
     return parsed ? parsed->frame : CanFrame{};
 }

@@ -18,7 +18,7 @@ namespace {
 std::vector<std::string> documentLines(const std::vector<can::CanFrame>& frames) {
     std::vector<std::string> lines;
     for (const auto& f : frames)
-        lines.push_back(cs2::formatDocument(f));
+        lines.push_back(can::formatDocument(f));
     return lines;
 }
 
@@ -27,7 +27,7 @@ std::vector<CollectedConfigRequest> collect(ConfigRequestCollector& collector,
     std::vector<CollectedConfigRequest> found;
     for (const auto& f : frames) {
         const auto message = cs2::decode(f);
-        EXPECT_TRUE(message.hasValue()) << cs2::formatDocument(f);
+        EXPECT_TRUE(message.hasValue()) << can::formatDocument(f);
         if (!message)
             continue;
         if (auto request = collector.feed(*message))
@@ -60,7 +60,7 @@ TEST(ConfigRequest, EveryKeyWithoutFollowUpIsOneFrame) {
         ASSERT_TRUE(request.hasValue());
         const auto frames = request->frames(0x4711);
         ASSERT_EQ(frames.size(), 1u);
-        const auto body = cs2::test::decodeAs<cs2::ConfigDataRequest>(cs2::formatDocument(frames[0]));
+        const auto body = cs2::test::decodeAs<cs2::ConfigDataRequest>(can::formatDocument(frames[0]));
         EXPECT_EQ(body.text(), key);
     }
 }

@@ -98,7 +98,7 @@ TEST(ConfigStreamRoundTrip, TheCorpusStreamIsWhatOurSenderSends) {
     const auto sent = streamFrames(page, StreamFormat::Compressed, StreamAddress::broadcast(0x0300));
     ASSERT_EQ(sent.size(), logged.size());
     for (std::size_t i = 0; i < sent.size(); ++i)
-        EXPECT_EQ(cs2::formatDocument(sent[i]), cs2::formatDocument(logged[i])) << "frame " << i;
+        EXPECT_EQ(can::formatDocument(sent[i]), can::formatDocument(logged[i])) << "frame " << i;
 }
 
 TEST(ConfigStreamRoundTrip, FramesHaveTheDocumentedShape) {
@@ -138,7 +138,7 @@ TEST(ConfigStreamRoundTrip, BroadcastHeaderHasSevenBytes) {
 TEST(ConfigStreamRoundTrip, EmptyPlainFileIsAHeaderOnly) {
     const auto frames = streamFrames("", StreamFormat::Ms2Text, StreamAddress::reply(0x4711));
     ASSERT_EQ(frames.size(), 1u);
-    EXPECT_EQ(cs2::formatDocument(frames[0]), "00424711 6 00 00 00 00 FF FF");
+    EXPECT_EQ(can::formatDocument(frames[0]), "00424711 6 00 00 00 00 FF FF");
 }
 
 TEST(ConfigStreamRoundTrip, StreamFormatFollowsTheKey) {

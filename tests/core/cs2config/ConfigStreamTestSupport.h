@@ -4,8 +4,8 @@
 // to a receiver.
 
 #include "../cs2/TestSupport.h"
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
-#include "cs2/FrameText.h"
 #include "cs2config/ConfigStreamReceiver.h"
 
 #include <fstream>

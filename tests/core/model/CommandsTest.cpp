@@ -5,8 +5,8 @@
 
 #include "model/Commands.h"
 
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
-#include "cs2/FrameText.h"
 
 #include <gtest/gtest.h>
 #include <string>
@@ -23,14 +23,14 @@ std::string onWire(cs2::Message command) {
     EXPECT_FALSE(command.response);
     EXPECT_EQ(command.hash, 0) << "the session stamps the hash, not the model";
     command.hash = DocumentHash;
-    return cs2::formatDocument(cs2::encode(command));
+    return can::formatDocument(cs2::encode(command));
 }
 
 // A frame as the document prints it, without its comment.
 std::string document(std::string_view text) {
-    const auto parsed = cs2::parseFrame(text);
+    const auto parsed = can::parseFrame(text);
     EXPECT_TRUE(parsed.hasValue()) << text;
-    return parsed ? cs2::formatDocument(parsed->frame) : std::string();
+    return parsed ? can::formatDocument(parsed->frame) : std::string();
 }
 
 TEST(RailwayCommands, SpeedOfMfxLoco1Is800) {

@@ -3,8 +3,8 @@
 // Helpers for the simulated station tests: a small inline layout, frames written as the protocol
 // document writes them, and a probe that sends one frame and returns the station's answer.
 
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
-#include "cs2/FrameText.h"
 #include "sim/SimulatedStation.h"
 
 #include <gtest/gtest.h>
@@ -115,7 +115,7 @@ inline StationLayout inlineLayout() {
 }
 
 inline CanFrame frame(std::string_view documentLine) {
-    auto parsed = cs2::parseFrame(documentLine);
+    auto parsed = can::parseFrame(documentLine);
     EXPECT_TRUE(parsed.hasValue()) << documentLine;
     return parsed ? parsed->frame : CanFrame{};
 }
@@ -154,7 +154,7 @@ public:
 
     cs2::Message decoded(const CanFrame& f) const {
         auto message = cs2::decode(f);
-        EXPECT_TRUE(message.hasValue()) << cs2::formatDocument(f);
+        EXPECT_TRUE(message.hasValue()) << can::formatDocument(f);
         return message ? *message : cs2::Message{};
     }
 

@@ -3,8 +3,8 @@
 // Helpers shared by the simulated station's network tests: commands as a client sends them, the S88
 // events a station emits, waiting on the event loop.
 
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
-#include "cs2/FrameText.h"
 #include "cs2/Header.h"
 #include "cs2/Messages.h"
 #include "sim/SimulatedStation.h"

@@ -4,8 +4,8 @@
 // document says (acknowledgement = the command with the response bit; ping with its identity; files as
 // 0x21 streams; status data as packets and an end frame), and can be told to stay silent.
 
+#include "can/FrameText.h"
 #include "cs2/Codec.h"
-#include "cs2/FrameText.h"
 #include "cs2/Hash.h"
 #include "cs2config/ConfigStreamSender.h"
 #include "station/StationSession.h"

@@ -3,7 +3,7 @@
 // Helpers shared by the transport tests: recognisable frames, waiting on the event loop, free ports and a
 // recorder of what a transport delivered.
 
-#include "cs2/FrameText.h"
+#include "can/FrameText.h"
 #include "cs2/Header.h"
 #include "transport/Transport.h"
 #include "transport/TransportSettings.h"

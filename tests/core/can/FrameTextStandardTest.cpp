@@ -1,10 +1,10 @@
 // Standard (11-bit) frames in every notation: 3 hex digits, the candump convention.
 
-#include "cs2/FrameText.h"
+#include "can/FrameText.h"
 
 #include <gtest/gtest.h>
 
-namespace stellwerk::cs2::test {
+namespace stellwerk::can::test {
 namespace {
 
 const std::uint8_t TwoBytes[] = {0x01, 0x02};
@@ -40,4 +40,4 @@ TEST(FrameTextStandard, ThreeDigitsAboveSevenFfAreRefused) {
 }
 
 } // namespace
-} // namespace stellwerk::cs2::test
+} // namespace stellwerk::can::test

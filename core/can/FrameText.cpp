@@ -1,11 +1,11 @@
-#include "cs2/FrameText.h"
+#include "can/FrameText.h"
 
 #include <charconv>
 #include <cstdio>
 #include <optional>
 #include <vector>
 
-namespace stellwerk::cs2 {
+namespace stellwerk::can {
 namespace {
 
 using Tokens = std::vector<std::string_view>;
@@ -237,4 +237,4 @@ std::string formatNetwork(const CanFrame& frame) {
     return out;
 }
 
-} // namespace stellwerk::cs2
+} // namespace stellwerk::can

@@ -1,12 +1,12 @@
 #pragma once
 
 #include "base/Expected.h"
-#include "cs2/Header.h"
+#include "can/CanFrame.h"
 
 #include <string>
 #include <string_view>
 
-namespace stellwerk::cs2 {
+namespace stellwerk::can {
 
 // The ways people write a frame down.
 enum class FrameNotation {
@@ -33,4 +33,4 @@ std::string formatCandump(const CanFrame& frame);  // "00004711#0000000000"
 // Extended frames only (check CanFrame::fitsNetworkForm()).
 std::string formatNetwork(const CanFrame& frame); // "00004711050000000000000000"
 
-} // namespace stellwerk::cs2
+} // namespace stellwerk::can

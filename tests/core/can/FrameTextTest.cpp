@@ -1,8 +1,8 @@
-#include "cs2/FrameText.h"
+#include "can/FrameText.h"
 
 #include <gtest/gtest.h>
 
-using namespace stellwerk::cs2;
+using namespace stellwerk::can;
 
 namespace {
 

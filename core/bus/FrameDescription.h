@@ -1,0 +1,68 @@
+#pragma once
+
+#include "bus/FrameClassifier.h"
+#include "can/CanFrame.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace stellwerk::bus {
+
+// What one protocol reads in a frame; each protocol of the bus has its own (bus/ProtocolReadings.h).
+class FrameReading {
+public:
+    virtual ~FrameReading() = default;
+
+    virtual std::string_view name() const = 0;
+    virtual bool decoded() const = 0;
+    virtual bool isResponse() const = 0;
+    // "key=value ..." of the fields, or why the frame did not decode.
+    virtual std::string detailText() const = 0;
+    // The whole line: frame, name and details, as `stellwerk-cli decode` prints it.
+    virtual std::string text() const = 0;
+    // One JSON object whose first key is "protocol".
+    virtual std::string json() const = 0;
+    // A numeric field by key ("locId", "contact", ...), when the frame has it.
+    virtual std::optional<std::uint64_t> number(std::string_view key) const = 0;
+};
+
+// What a frame on a bus says, in terms every protocol shares: the protocol it belongs to, a name, fields
+// and its text and JSON forms. The bus monitor, the frame decoder panel and `stellwerk-cli decode` show
+// this and never call a codec themselves. Decodes once, when made; cheap to copy.
+class FrameDescription {
+public:
+    FrameDescription(const can::CanFrame& frame, const BusProfile& profile);
+
+    const can::CanFrame& frame() const { return frame_; }
+    Protocol protocol() const { return protocol_; }
+    // "cs2", "foreign".
+    std::string_view protocolName() const { return bus::protocolName(protocol_); }
+    // The message's name ("loco.speed"); a frame that did not decode has the name it would have had.
+    std::string_view name() const { return reading_->name(); }
+    bool decoded() const { return reading_->decoded(); }
+    bool isResponse() const { return reading_->isResponse(); }
+    // The frame in the protocol document's notation: "00084711 6 00 00 C0 03 01 20".
+    std::string frameText() const;
+    std::string detailText() const { return reading_->detailText(); }
+    std::string text() const { return reading_->text(); }
+    std::string json() const { return reading_->json(); }
+    std::optional<std::uint64_t> number(std::string_view key) const { return reading_->number(key); }
+
+private:
+    can::CanFrame frame_;
+    Protocol protocol_;
+    std::shared_ptr<const FrameReading> reading_;
+};
+
+// Every message name the protocols of this profile know, for choosing one in a filter.
+std::vector<std::string_view> messageNames(const BusProfile& profile);
+
+// A locomotive as people type it into a filter: a Loc-ID ("0x4005", "16389") or a protocol and address
+// ("mm2 5", "dcc 3", "mfx 12"); the Loc-ID that frames about it carry in their "locId" field.
+std::optional<std::uint32_t> parseLocoReference(std::string_view text);
+
+} // namespace stellwerk::bus
