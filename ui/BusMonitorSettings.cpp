@@ -1,7 +1,7 @@
 #include "BusMonitorSettings.h"
 
 #include "BusMonitorModel.h"
-#include "StellwerkSettings.h"
+#include "common/StellwerkSettings.h"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "RowIndex.h"
+#include "common/RowIndex.h"
 #include "model/FeedbackContact.h"
 
 #include <QAbstractTableModel>

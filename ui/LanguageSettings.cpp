@@ -1,6 +1,6 @@
 #include "LanguageSettings.h"
 
-#include "StellwerkSettings.h"
+#include "common/StellwerkSettings.h"
 
 #include <QtDebug>
 

@@ -1,8 +1,8 @@
 #include "LayoutOverview.h"
 
 #include "ContactTableModel.h"
-#include "LocomotiveTableModel.h"
-#include "PowerStatus.h"
+#include "common/LocomotiveTableModel.h"
+#include "common/PowerStatus.h"
 #include "model/Railway.h"
 
 #include <QEvent>

@@ -11,7 +11,6 @@
 #include "LanguageSettings.h"
 #include "LayoutOverview.h"
 #include "LocomotivePanel.h"
-#include "PowerStatus.h"
 #include "ProgrammingPanel.h"
 #include "StartupProgress.h"
 #include "StatusPanel.h"
@@ -25,6 +24,7 @@
 #include "TurnoutPanel.h"
 #include "WindowLayoutSettings.h"
 #include "Workspace.h"
+#include "common/PowerStatus.h"
 #include "connection/StationConnection.h"
 
 #include <QCloseEvent>

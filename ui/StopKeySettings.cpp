@@ -1,6 +1,6 @@
 #include "StopKeySettings.h"
 
-#include "StellwerkSettings.h"
+#include "common/StellwerkSettings.h"
 
 namespace stellwerk::ui {
 namespace {

@@ -1,8 +1,8 @@
 #include "ThrottlePanel.h"
 
-#include "LayoutStateBanner.h"
 #include "ThrottleSettings.h"
 #include "ThrottleWidget.h"
+#include "common/LayoutStateBanner.h"
 #include "model/Railway.h"
 
 #include <QComboBox>

@@ -1,6 +1,6 @@
 #include "ThrottleSettings.h"
 
-#include "StellwerkSettings.h"
+#include "common/StellwerkSettings.h"
 
 #include <QStringList>
 

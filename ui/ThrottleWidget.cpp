@@ -1,10 +1,10 @@
 #include "ThrottleWidget.h"
 
 #include "FunctionPad.h"
-#include "LocomotiveTableModel.h"
-#include "NotReported.h"
 #include "SpeedScale.h"
 #include "StyleSheetSupport.h"
+#include "common/LocomotiveTableModel.h"
+#include "common/NotReported.h"
 
 #include <QComboBox>
 #include <QEvent>

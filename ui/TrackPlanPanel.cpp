@@ -1,10 +1,10 @@
 #include "TrackPlanPanel.h"
 
-#include "LayoutStateBanner.h"
-#include "NotReported.h"
 #include "TrackPageView.h"
 #include "TrackTileInfo.h"
 #include "TrackTileLook.h"
+#include "common/LayoutStateBanner.h"
+#include "common/NotReported.h"
 #include "connection/StationConnection.h"
 #include "model/Railway.h"
 

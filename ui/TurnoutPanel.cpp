@@ -1,7 +1,7 @@
 #include "TurnoutPanel.h"
 
-#include "NotReported.h"
 #include "TurnoutKey.h"
+#include "common/NotReported.h"
 #include "model/Railway.h"
 
 #include <QComboBox>

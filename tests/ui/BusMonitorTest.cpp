@@ -2,10 +2,10 @@
 #include "BusMonitorPanel.h"
 #include "BusMonitorReplay.h"
 #include "RailwayBinding.h"
-#include "StationTestSupport.h"
 #include "Translations.h"
 #include "cs2/FrameText.h"
 #include "model/Railway.h"
+#include "support/StationTestSupport.h"
 
 #include <QAbstractItemModel>
 #include <QColor>

@@ -1,9 +1,9 @@
 #include "ConnectDialog.h"
 
 #include "MainWindow.h"
-#include "StationTestSupport.h"
 #include "StationUrlSettings.h"
 #include "Translations.h"
+#include "support/StationTestSupport.h"
 #include "transport/CanBusTransport.h"
 
 #include <QAbstractButton>

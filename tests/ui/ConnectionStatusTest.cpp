@@ -1,8 +1,8 @@
 #include "ConnectionStatus.h"
 
 #include "MainWindow.h"
-#include "StationTestSupport.h"
 #include "Translations.h"
+#include "support/StationTestSupport.h"
 
 #include <QCoreApplication>
 #include <QEvent>

@@ -5,16 +5,16 @@
 #include "ConnectionStatus.h"
 #include "FrameDecoderPanel.h"
 #include "MainWindow.h"
-#include "PowerStatus.h"
 #include "RailwayBinding.h"
 #include "StartupProgress.h"
-#include "StationTestSupport.h"
 #include "StatusPanel.h"
 #include "StopGoButton.h"
 #include "TrafficStatus.h"
 #include "Translations.h"
 #include "Workspace.h"
+#include "common/PowerStatus.h"
 #include "model/Railway.h"
+#include "support/StationTestSupport.h"
 
 #include <QAction>
 #include <QDockWidget>

@@ -3,9 +3,9 @@
 // station reports the new value and the page says it was accepted.
 
 #include "DeviceSettingEditor.h"
-#include "KeyboardTestSupport.h"
 #include "StatusPanel.h"
 #include "sim/StatusChannels.h"
+#include "support/KeyboardTestSupport.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

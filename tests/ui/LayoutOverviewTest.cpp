@@ -2,13 +2,13 @@
 
 #include "BusMonitorPanel.h"
 #include "ContactTableModel.h"
-#include "LocomotiveTableModel.h"
 #include "MainWindow.h"
 #include "RailwayBinding.h"
-#include "StationTestSupport.h"
 #include "Translations.h"
 #include "Workspace.h"
+#include "common/LocomotiveTableModel.h"
 #include "model/Railway.h"
+#include "support/StationTestSupport.h"
 
 #include <QCoreApplication>
 #include <QDockWidget>

@@ -5,9 +5,9 @@
 #include "LocomotiveFileModel.h"
 #include "LocomotiveForm.h"
 #include "RailwayBinding.h"
-#include "StationTestSupport.h"
 #include "Translations.h"
 #include "model/Railway.h"
+#include "support/StationTestSupport.h"
 
 #include <QComboBox>
 #include <QFile>

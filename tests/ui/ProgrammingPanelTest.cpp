@@ -6,10 +6,10 @@
 #include "LocomotiveFileModel.h"
 #include "LocomotivePanel.h"
 #include "RailwayBinding.h"
-#include "StationTestSupport.h"
 #include "Translations.h"
 #include "connection/EmbeddedStation.h"
 #include "model/Railway.h"
+#include "support/StationTestSupport.h"
 
 #include <QApplication>
 #include <QComboBox>

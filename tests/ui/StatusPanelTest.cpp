@@ -4,10 +4,10 @@
 #include "LayoutOverview.h"
 #include "MainWindow.h"
 #include "RailwayBinding.h"
-#include "StationTestSupport.h"
 #include "Translations.h"
 #include "Workspace.h"
 #include "model/Railway.h"
+#include "support/StationTestSupport.h"
 
 #include <QCoreApplication>
 #include <QDockWidget>

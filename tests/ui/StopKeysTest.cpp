@@ -5,7 +5,7 @@
 #include "EmergencyStopKeys.h"
 #include "StopKeyMenu.h"
 #include "StopKeySettings.h"
-#include "TrustTestSupport.h"
+#include "support/TrustTestSupport.h"
 
 #include <QAction>
 #include <QApplication>

@@ -6,11 +6,11 @@
 #include "FunctionPad.h"
 #include "RailwayBinding.h"
 #include "SpeedScale.h"
-#include "StationTestSupport.h"
 #include "ThrottlePanel.h"
 #include "ThrottleWidget.h"
 #include "Translations.h"
 #include "model/Railway.h"
+#include "support/StationTestSupport.h"
 
 #include <QApplication>
 #include <QComboBox>

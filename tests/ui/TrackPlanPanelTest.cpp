@@ -1,11 +1,11 @@
 #include "TrackPlanPanel.h"
 
 #include "RailwayBinding.h"
-#include "StationTestSupport.h"
 #include "TrackPageView.h"
 #include "TrackTileLook.h"
 #include "Translations.h"
 #include "model/Railway.h"
+#include "support/StationTestSupport.h"
 
 #include <QSignalSpy>
 #include <QTabWidget>

@@ -4,8 +4,8 @@
 
 #include "TurnoutPanel.h"
 
-#include "KeyboardTestSupport.h"
 #include "TurnoutKey.h"
+#include "support/KeyboardTestSupport.h"
 
 #include <QComboBox>
 #include <QLabel>

@@ -4,7 +4,7 @@
 #include "LocomotiveForm.h"
 #include "LocomotivePanel.h"
 #include "TrackPlanPanel.h"
-#include "TrustTestSupport.h"
+#include "support/TrustTestSupport.h"
 
 #include <QAbstractButton>
 #include <QAction>

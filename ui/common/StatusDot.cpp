@@ -1,4 +1,4 @@
-#include "StatusDot.h"
+#include "common/StatusDot.h"
 
 #include <QPainter>
 #include <QPixmap>

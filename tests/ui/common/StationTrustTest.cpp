@@ -4,17 +4,17 @@
 
 #include "ContactTableModel.h"
 #include "LayoutOverview.h"
-#include "LayoutStateBanner.h"
-#include "NotReported.h"
-#include "PowerStatus.h"
 #include "StopGoButton.h"
 #include "ThrottlePanel.h"
 #include "ThrottleWidget.h"
 #include "TrackPageView.h"
 #include "TrackPlanPanel.h"
-#include "TrustTestSupport.h"
 #include "TurnoutKey.h"
 #include "TurnoutPanel.h"
+#include "common/LayoutStateBanner.h"
+#include "common/NotReported.h"
+#include "common/PowerStatus.h"
+#include "support/TrustTestSupport.h"
 
 #include <QImage>
 #include <QPointer>

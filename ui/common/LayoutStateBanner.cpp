@@ -1,4 +1,4 @@
-#include "LayoutStateBanner.h"
+#include "common/LayoutStateBanner.h"
 
 #include "model/Railway.h"
 

@@ -1,6 +1,6 @@
-#include "LocomotiveTableModel.h"
+#include "common/LocomotiveTableModel.h"
 
-#include "NotReported.h"
+#include "common/NotReported.h"
 #include "model/Railway.h"
 
 #include <QPalette>

@@ -4,8 +4,8 @@
 // keyboard and settings tests can check what it did; and a connection with its railway bound to it.
 
 #include "RailwayBinding.h"
-#include "StationTestSupport.h"
 #include "model/Railway.h"
+#include "support/StationTestSupport.h"
 
 #include <QTest>
 #include <memory>

@@ -5,11 +5,11 @@
 
 #include "MainWindow.h"
 #include "RailwayBinding.h"
-#include "StationTestSupport.h"
-#include "StellwerkSettings.h"
 #include "Translations.h"
+#include "common/StellwerkSettings.h"
 #include "cs2/Codec.h"
 #include "model/Railway.h"
+#include "support/StationTestSupport.h"
 
 #include <QTest>
 #include <gtest/gtest.h>

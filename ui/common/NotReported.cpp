@@ -1,4 +1,4 @@
-#include "NotReported.h"
+#include "common/NotReported.h"
 
 #include "model/Railway.h"
 

@@ -1,7 +1,7 @@
-#include "PowerStatus.h"
+#include "common/PowerStatus.h"
 
-#include "NotReported.h"
-#include "StatusDot.h"
+#include "common/NotReported.h"
+#include "common/StatusDot.h"
 #include "model/Railway.h"
 
 #include <QEvent>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "RowIndex.h"
+#include "common/RowIndex.h"
 
 #include <QAbstractTableModel>
 #include <QPointer>
