@@ -5,7 +5,6 @@
 //      late the event loop serves a 5 ms timer (the UI's responsiveness).
 // A plain harness printing figures. Run: QT_QPA_PLATFORM=offscreen build/bench/stellwerk-trackplan-bench
 
-#include "RailwayBinding.h"
 #include "TrackColors.h"
 #include "TrackPageView.h"
 #include "TrackPlanPanel.h"
@@ -14,6 +13,7 @@
 #include "connection/StationConnection.h"
 #include "cs2config/TrackElementType.h"
 #include "model/Railway.h"
+#include "shell/RailwayBinding.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"

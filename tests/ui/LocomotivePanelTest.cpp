@@ -4,9 +4,9 @@
 
 #include "LocomotiveFileModel.h"
 #include "LocomotiveForm.h"
-#include "RailwayBinding.h"
-#include "Translations.h"
 #include "model/Railway.h"
+#include "shell/RailwayBinding.h"
+#include "shell/Translations.h"
 #include "support/StationTestSupport.h"
 
 #include <QComboBox>

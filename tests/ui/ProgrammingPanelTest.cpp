@@ -5,10 +5,10 @@
 
 #include "LocomotiveFileModel.h"
 #include "LocomotivePanel.h"
-#include "RailwayBinding.h"
-#include "Translations.h"
 #include "connection/EmbeddedStation.h"
 #include "model/Railway.h"
+#include "shell/RailwayBinding.h"
+#include "shell/Translations.h"
 #include "support/StationTestSupport.h"
 
 #include <QApplication>

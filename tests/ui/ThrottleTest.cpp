@@ -4,12 +4,12 @@
 
 #include "FunctionIcons.h"
 #include "FunctionPad.h"
-#include "RailwayBinding.h"
 #include "SpeedScale.h"
 #include "ThrottlePanel.h"
 #include "ThrottleWidget.h"
-#include "Translations.h"
 #include "model/Railway.h"
+#include "shell/RailwayBinding.h"
+#include "shell/Translations.h"
 #include "support/StationTestSupport.h"
 
 #include <QApplication>

@@ -1,10 +1,10 @@
 #include "TrackPlanPanel.h"
 
-#include "RailwayBinding.h"
 #include "TrackPageView.h"
 #include "TrackTileLook.h"
-#include "Translations.h"
 #include "model/Railway.h"
+#include "shell/RailwayBinding.h"
+#include "shell/Translations.h"
 #include "support/StationTestSupport.h"
 
 #include <QSignalSpy>

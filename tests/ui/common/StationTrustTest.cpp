@@ -2,9 +2,6 @@
 // state greyed as "not reported"; after a reconnect nothing claims power on before the station says so;
 // with the power off the power key and the banners on the plan and the throttles say the layout stopped.
 
-#include "ContactTableModel.h"
-#include "LayoutOverview.h"
-#include "StopGoButton.h"
 #include "ThrottlePanel.h"
 #include "ThrottleWidget.h"
 #include "TrackPageView.h"
@@ -14,6 +11,9 @@
 #include "common/LayoutStateBanner.h"
 #include "common/NotReported.h"
 #include "common/PowerStatus.h"
+#include "layout/ContactTableModel.h"
+#include "layout/LayoutOverview.h"
+#include "stopkeys/StopGoButton.h"
 #include "support/TrustTestSupport.h"
 
 #include <QImage>

@@ -3,8 +3,8 @@
 // The demo layout's simulated CS2 on a free loopback port, with the station itself at hand so that the
 // keyboard and settings tests can check what it did; and a connection with its railway bound to it.
 
-#include "RailwayBinding.h"
 #include "model/Railway.h"
+#include "shell/RailwayBinding.h"
 #include "support/StationTestSupport.h"
 
 #include <QTest>

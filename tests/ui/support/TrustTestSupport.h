@@ -3,12 +3,12 @@
 // Helpers for the tests of trust during a running session: what reached the wire, and the main window on
 // a simulated CS2 on loopback that can fall silent and come back on the same port.
 
-#include "MainWindow.h"
-#include "RailwayBinding.h"
-#include "Translations.h"
 #include "common/StellwerkSettings.h"
 #include "cs2/Codec.h"
 #include "model/Railway.h"
+#include "shell/MainWindow.h"
+#include "shell/RailwayBinding.h"
+#include "shell/Translations.h"
 #include "support/StationTestSupport.h"
 
 #include <QTest>
