@@ -5,11 +5,6 @@
 //      late the event loop serves a 5 ms timer (the UI's responsiveness).
 // A plain harness printing figures. Run: QT_QPA_PLATFORM=offscreen build/bench/stellwerk-trackplan-bench
 
-#include "TrackColors.h"
-#include "TrackPageView.h"
-#include "TrackPlanPanel.h"
-#include "TrackTileLook.h"
-#include "TrackTilePainter.h"
 #include "connection/StationConnection.h"
 #include "cs2config/TrackElementType.h"
 #include "model/Railway.h"
@@ -19,6 +14,11 @@
 #include "sim/StationServer.h"
 #include "station/StationSession.h"
 #include "station/StationUpdates.h"
+#include "trackplan/TrackColors.h"
+#include "trackplan/TrackPageView.h"
+#include "trackplan/TrackPlanPanel.h"
+#include "trackplan/TrackTileLook.h"
+#include "trackplan/TrackTilePainter.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

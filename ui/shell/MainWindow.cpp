@@ -1,19 +1,17 @@
 #include "shell/MainWindow.h"
 
-#include "LocomotivePanel.h"
-#include "ProgrammingPanel.h"
-#include "ThrottlePanel.h"
-#include "TrackPlanPanel.h"
-#include "TurnoutPanel.h"
 #include "common/PowerStatus.h"
 #include "connect/ConnectDialog.h"
 #include "connect/ConnectionStatus.h"
 #include "connect/StartupProgress.h"
 #include "connect/TrafficStatus.h"
 #include "connection/StationConnection.h"
+#include "keyboard/TurnoutPanel.h"
 #include "layout/LayoutOverview.h"
+#include "locomotives/LocomotivePanel.h"
 #include "monitor/BusMonitorPanel.h"
 #include "monitor/FrameDecoderPanel.h"
+#include "programming/ProgrammingPanel.h"
 #include "shell/AboutBox.h"
 #include "shell/ApplicationInfo.h"
 #include "shell/LanguageMenu.h"
@@ -26,6 +24,8 @@
 #include "stopkeys/StopGoButton.h"
 #include "stopkeys/StopKeyMenu.h"
 #include "stopkeys/StopKeySettings.h"
+#include "throttle/ThrottlePanel.h"
+#include "trackplan/TrackPlanPanel.h"
 
 #include <QCloseEvent>
 #include <QDockWidget>

@@ -2,19 +2,19 @@
 // state greyed as "not reported"; after a reconnect nothing claims power on before the station says so;
 // with the power off the power key and the banners on the plan and the throttles say the layout stopped.
 
-#include "ThrottlePanel.h"
-#include "ThrottleWidget.h"
-#include "TrackPageView.h"
-#include "TrackPlanPanel.h"
-#include "TurnoutKey.h"
-#include "TurnoutPanel.h"
 #include "common/LayoutStateBanner.h"
 #include "common/NotReported.h"
 #include "common/PowerStatus.h"
+#include "keyboard/TurnoutKey.h"
+#include "keyboard/TurnoutPanel.h"
 #include "layout/ContactTableModel.h"
 #include "layout/LayoutOverview.h"
 #include "stopkeys/StopGoButton.h"
 #include "support/TrustTestSupport.h"
+#include "throttle/ThrottlePanel.h"
+#include "throttle/ThrottleWidget.h"
+#include "trackplan/TrackPageView.h"
+#include "trackplan/TrackPlanPanel.h"
 
 #include <QImage>
 #include <QPointer>

@@ -1,11 +1,11 @@
 #include "shell/MainWindow.h"
 
-#include "TrackPlanPanel.h"
 #include "layout/LayoutOverview.h"
 #include "monitor/FrameDecoderPanel.h"
 #include "shell/LanguageSettings.h"
 #include "shell/Translations.h"
 #include "shell/Workspace.h"
+#include "trackplan/TrackPlanPanel.h"
 
 #include <QAction>
 #include <QCoreApplication>
