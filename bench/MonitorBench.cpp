@@ -10,10 +10,10 @@
 //      the longest flush, events processed after each flush as the window would.
 // A plain harness printing figures. Run: build/bench/stellwerk-monitor-bench [frame count]
 
-#include "BusMonitorFilter.h"
-#include "BusMonitorModel.h"
-#include "BusMonitorPanel.h"
 #include "cs2/Header.h"
+#include "monitor/BusMonitorFilter.h"
+#include "monitor/BusMonitorModel.h"
+#include "monitor/BusMonitorPanel.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

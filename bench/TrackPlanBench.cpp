@@ -5,20 +5,20 @@
 //      late the event loop serves a 5 ms timer (the UI's responsiveness).
 // A plain harness printing figures. Run: QT_QPA_PLATFORM=offscreen build/bench/stellwerk-trackplan-bench
 
-#include "RailwayBinding.h"
-#include "TrackColors.h"
-#include "TrackPageView.h"
-#include "TrackPlanPanel.h"
-#include "TrackTileLook.h"
-#include "TrackTilePainter.h"
 #include "connection/StationConnection.h"
 #include "cs2config/TrackElementType.h"
 #include "model/Railway.h"
+#include "shell/RailwayBinding.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
 #include "station/StationSession.h"
 #include "station/StationUpdates.h"
+#include "trackplan/TrackColors.h"
+#include "trackplan/TrackPageView.h"
+#include "trackplan/TrackPlanPanel.h"
+#include "trackplan/TrackTileLook.h"
+#include "trackplan/TrackTilePainter.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

@@ -1,16 +1,16 @@
 // Start-up of the Stellwerk desktop application: language from the settings, then the main window, then the
 // station (the one in the settings or on the command line; the embedded simulated one when none is set).
 
-#include "ApplicationInfo.h"
-#include "FrameDecoderPanel.h"
-#include "LanguageSettings.h"
-#include "MainWindow.h"
-#include "RailwayBinding.h"
-#include "StationUrlSettings.h"
-#include "Translations.h"
-#include "Workspace.h"
+#include "connect/StationUrlSettings.h"
 #include "connection/StationConnection.h"
 #include "model/Railway.h"
+#include "monitor/FrameDecoderPanel.h"
+#include "shell/ApplicationInfo.h"
+#include "shell/LanguageSettings.h"
+#include "shell/MainWindow.h"
+#include "shell/RailwayBinding.h"
+#include "shell/Translations.h"
+#include "shell/Workspace.h"
 #include "sim/EmbeddedStation.h"
 
 #include <QApplication>

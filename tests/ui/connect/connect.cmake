@@ -1,0 +1,5 @@
+# The station's status line and the Connect dialog against simulated stations on loopback.
+target_sources(stellwerk-ui-tests PRIVATE
+    connect/ConnectDialogTest.cpp
+    connect/ConnectionStatusTest.cpp
+)

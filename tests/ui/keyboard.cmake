@@ -1,6 +1,0 @@
-# Widget tests of the turnout panel and the Status page's device settings, against the demo's simulated CS2.
-target_sources(stellwerk-ui-tests PRIVATE
-    KeyboardTestSupport.h
-    TurnoutPanelTest.cpp
-    DeviceSettingsTest.cpp
-)

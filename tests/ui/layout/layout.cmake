@@ -1,0 +1,2 @@
+# The Layout page on the embedded demo station.
+target_sources(stellwerk-ui-tests PRIVATE layout/LayoutOverviewTest.cpp)

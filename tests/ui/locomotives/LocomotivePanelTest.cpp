@@ -1,0 +1,165 @@
+// The Locomotives page on the embedded simulated CS2: edit, refuse, add and save lokomotive.cs2.
+
+#include "locomotives/LocomotivePanel.h"
+
+#include "EmbeddedStationSupport.h"
+#include "locomotives/LocomotiveFileModel.h"
+#include "locomotives/LocomotiveForm.h"
+#include "model/Railway.h"
+#include "shell/RailwayBinding.h"
+#include "shell/Translations.h"
+#include "support/StationTestSupport.h"
+
+#include <QComboBox>
+#include <QFile>
+#include <QItemSelectionModel>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTest>
+#include <algorithm>
+#include <gtest/gtest.h>
+
+using namespace stellwerk;
+using namespace stellwerk::ui;
+using State = connection::StationConnection::State;
+
+namespace {
+
+constexpr quint32 V100 = 0x18; // V 100 2023, MM2 address 24
+
+QStringList linesOf(const QByteArray& bytes) {
+    return QString::fromUtf8(bytes).split(QLatin1Char('\n'));
+}
+
+class LocomotivePanelTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        ASSERT_TRUE(translations.select(Language::English));
+        QObject::connect(&railways, &RailwayBinding::railwayChanged, &panel, &LocomotivePanel::setRailway);
+        station.connectToSimulator();
+        ASSERT_TRUE(test::waitForState(station, State::Ready));
+        ASSERT_NE(railways.railway(), nullptr);
+        ASSERT_NE(railways.railway()->locomotiveFile(), nullptr);
+    }
+    model::Railway& railway() { return *railways.railway(); }
+    QByteArray stationFile() const {
+        return QByteArray::fromStdString(
+            cs2config::LocomotiveEditor(*railways.railway()->locomotiveFile()).bytes());
+    }
+
+    Translations translations;
+    connection::StationConnection station{support::withEmbeddedStation()};
+    RailwayBinding railways{station};
+    LocomotivePanel panel;
+};
+
+} // namespace
+
+TEST_F(LocomotivePanelTest, ListsTheStationsLocomotivesWithAddressDecoderAndFunctions) {
+    const LocomotiveFileModel& list = *panel.model();
+    ASSERT_EQ(list.rowCount(), 12);
+    ASSERT_TRUE(panel.selectLocomotive(QStringLiteral("V 100 2023")));
+    const int row = panel.table()->selectionModel()->selectedRows().value(0).row();
+    EXPECT_EQ(list.index(row, LocomotiveFileModel::Address).data().toString(), QStringLiteral("MM2 24"));
+    EXPECT_EQ(list.index(row, LocomotiveFileModel::Decoder).data().toString(),
+              QStringLiteral("MM2 (programmable)"));
+    EXPECT_EQ(list.index(row, LocomotiveFileModel::Functions).data().toString(), QStringLiteral("5"));
+    EXPECT_EQ(panel.form()->nameEdit()->text(), QStringLiteral("V 100 2023"));
+    EXPECT_EQ(panel.form()->addressBox()->value(), 24);
+}
+
+TEST_F(LocomotivePanelTest, ARenameIsSavedToTheChosenFolderAndEverythingElseStays) {
+    const QByteArray before = stationFile();
+    ASSERT_TRUE(panel.selectLocomotive(QStringLiteral("V 100 2023")));
+    panel.form()->nameEdit()->setText(QStringLiteral("V 100 Museum"));
+    ASSERT_TRUE(panel.applyForm()) << panel.messageText().toStdString();
+    EXPECT_EQ(railway().locomotive(V100)->name(), QStringLiteral("V 100 Museum"))
+        << "the railway follows the edit";
+
+    QTemporaryDir folder;
+    ASSERT_TRUE(folder.isValid());
+    ASSERT_TRUE(panel.saveTo(folder.path())) << panel.messageText().toStdString();
+    EXPECT_TRUE(panel.messageText().startsWith(QStringLiteral("Saved to")));
+    QFile saved(folder.filePath(QStringLiteral("config/lokomotive.cs2")));
+    ASSERT_TRUE(saved.open(QIODevice::ReadOnly));
+    const QStringList old = linesOf(before), now = linesOf(saved.readAll());
+    ASSERT_EQ(now.size(), old.size());
+    QStringList changed;
+    for (int i = 0; i < now.size(); ++i)
+        if (now[i] != old[i])
+            changed << now[i];
+    EXPECT_EQ(changed, QStringList{QStringLiteral(" .name=V 100 Museum")});
+}
+
+TEST_F(LocomotivePanelTest, AnAddressOutsideTheDecodersRangeIsRefusedWithTheReason) {
+    const QByteArray before = stationFile();
+    ASSERT_TRUE(panel.selectLocomotive(QStringLiteral("Köf III"))); // MM2 with DIL switches
+    panel.form()->addressBox()->setValue(200);
+    EXPECT_FALSE(panel.applyForm());
+    EXPECT_EQ(panel.messageText(), QStringLiteral("The address must be between 1 and 80 for this decoder."));
+    EXPECT_FALSE(panel.editor().modified());
+    EXPECT_EQ(stationFile(), before) << "nothing changed";
+    EXPECT_EQ(panel.form()->addressBox()->value(), 200) << "the typed value stays to be corrected";
+}
+
+TEST_F(LocomotivePanelTest, AnAddressInUseNamesTheOtherLocomotive) {
+    ASSERT_TRUE(panel.selectLocomotive(QStringLiteral("BR 212 DB"))); // DCC 3
+    panel.form()->addressBox()->setValue(16);                         // Taurus 1016 ÖBB
+    EXPECT_FALSE(panel.applyForm());
+    EXPECT_EQ(panel.messageText(), QStringLiteral("'Taurus 1016 ÖBB' already uses this address."));
+}
+
+TEST_F(LocomotivePanelTest, ANewDccLocomotiveWithATimedFunctionJoinsTheRailway) {
+    panel.startNewLocomotive();
+    panel.form()->nameEdit()->setText(QStringLiteral("BR 80 Werklok"));
+    panel.form()->decoderBox()->setCurrentIndex(
+        panel.form()->decoderBox()->findData(int(cs2config::LocomotiveDecoder::Dcc)));
+    panel.form()->addressBox()->setValue(80);
+    panel.form()->iconBox(2)->setValue(7);
+    panel.form()->triggerBox(2)->setCurrentIndex(2); // timed
+    panel.form()->durationBox(2)->setValue(4);
+    ASSERT_TRUE(panel.applyForm()) << panel.messageText().toStdString();
+    EXPECT_EQ(panel.model()->rowCount(), 13);
+    const model::Locomotive* added = railway().locomotive(0xC050);
+    ASSERT_NE(added, nullptr);
+    EXPECT_EQ(added->name(), QStringLiteral("BR 80 Werklok"));
+    ASSERT_NE(added->function(2), nullptr);
+    EXPECT_EQ(added->function(2)->trigger, cs2config::FunctionTrigger::Timed);
+    const cs2config::Locomotive& record = panel.editor().locomotives().back();
+    EXPECT_EQ(record.function(2)->duration, 4);
+    EXPECT_EQ(record.function(2)->icon, 7);
+}
+
+TEST_F(LocomotivePanelTest, ADeletedLocomotiveLeavesTheListAndTheRailway) {
+    ASSERT_TRUE(panel.selectLocomotive(QStringLiteral("V 100 2023")));
+    ASSERT_TRUE(panel.removeSelected());
+    EXPECT_EQ(panel.model()->rowCount(), 11);
+    EXPECT_EQ(railway().locomotive(V100), nullptr);
+}
+
+TEST_F(LocomotivePanelTest, EnterInTheNameFieldAppliesTheEdit) {
+    ASSERT_TRUE(panel.selectLocomotive(QStringLiteral("E 44 043")));
+    panel.form()->nameEdit()->setText(QStringLiteral("E 44 Bw Freilassing"));
+    QTest::keyClick(panel.form()->nameEdit(), Qt::Key_Return);
+    EXPECT_EQ(railway().locomotive(0x2C)->name(), QStringLiteral("E 44 Bw Freilassing"));
+    EXPECT_TRUE(panel.editor().modified());
+}
+
+TEST(LocomotivePanelWithoutStation, SaysSoAndOffersNothingToSave) {
+    Translations translations;
+    ASSERT_TRUE(translations.select(Language::English));
+    LocomotivePanel panel;
+    EXPECT_EQ(panel.model()->rowCount(), 0);
+    EXPECT_FALSE(panel.findChild<QPushButton*>(QStringLiteral("saveLocomotives"))->isEnabled());
+    EXPECT_FALSE(panel.findChild<QPushButton*>(QStringLiteral("newLocomotive"))->isEnabled());
+    EXPECT_FALSE(panel.form()->isEnabled());
+    EXPECT_FALSE(panel.applyForm());
+    const QList<QLabel*> labels = panel.findChildren<QLabel*>();
+    EXPECT_TRUE(std::any_of(labels.begin(), labels.end(), [](const QLabel* label) {
+        return label->text() == QStringLiteral("No station connected.");
+    }));
+}

@@ -1,0 +1,98 @@
+#pragma once
+
+// Helpers for the tests of trust during a running session: what reached the wire, and the main window on
+// a simulated CS2 on loopback that can fall silent and come back on the same port.
+
+#include "EmbeddedStationSupport.h"
+#include "common/StellwerkSettings.h"
+#include "cs2/Codec.h"
+#include "model/Railway.h"
+#include "shell/MainWindow.h"
+#include "shell/RailwayBinding.h"
+#include "shell/Translations.h"
+#include "support/StationTestSupport.h"
+
+#include <QTest>
+#include <gtest/gtest.h>
+#include <memory>
+#include <variant>
+
+namespace stellwerk::ui::test {
+
+// Counts the system commands a connection wrote to the wire (its outgoing framesSeen).
+class WireWatch {
+public:
+    explicit WireWatch(const connection::StationConnection& station) {
+        QObject::connect(&station, &connection::StationConnection::framesSeen, &context_,
+                         [this](const std::vector<can::CanFrame>& frames, bool outgoing) {
+                             if (outgoing)
+                                 for (const can::CanFrame& frame : frames)
+                                     count(frame);
+                         });
+    }
+    int stops() const { return stops_; }
+    int goes() const { return goes_; }
+
+private:
+    void count(const can::CanFrame& frame) {
+        const cs2::DecodeResult decoded = cs2::decode(frame);
+        if (!decoded.hasValue() || decoded.value().response)
+            return;
+        stops_ += std::holds_alternative<cs2::SystemStop>(decoded.value().body) ? 1 : 0;
+        goes_ += std::holds_alternative<cs2::SystemGo>(decoded.value().body) ? 1 : 0;
+    }
+
+    QObject context_;
+    int stops_ = 0;
+    int goes_ = 0;
+};
+
+// The main window on a TestStation, ready, with track power on (switched on by us: a CS2 starts in STOP).
+class DeskOnTestStation : public ::testing::Test {
+protected:
+    static constexpr int CommandMs = 5000;
+
+    void SetUp() override {
+        stellwerkSettings().clear();
+        ASSERT_TRUE(translations.select(Language::English));
+        ASSERT_TRUE(server.start());
+        window = std::make_unique<MainWindow>(translations);
+        railways = std::make_unique<RailwayBinding>(connection);
+        QObject::connect(railways.get(), &RailwayBinding::railwayChanged, window.get(),
+                         &MainWindow::setRailway);
+        window->setConnection(&connection);
+        window->resize(1366, 768);
+        window->show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+        connection.connectTo(server.url());
+        ASSERT_TRUE(waitForState(connection, connection::StationConnection::State::Ready));
+        ASSERT_TRUE(QTest::qWaitFor([this] { return railway() && railway()->isStateReported(); }, CommandMs));
+        railway()->go();
+        ASSERT_TRUE(powerBecomes(station::PowerState::Running));
+    }
+    // The railway goes before the window, as when a session ends while the window stays.
+    void TearDown() override {
+        railways.reset();
+        window.reset();
+        stellwerkSettings().clear();
+    }
+
+    model::Railway* railway() const { return railways->railway(); }
+    std::optional<station::PowerState> power() const { return railway() ? railway()->power() : std::nullopt; }
+    bool powerBecomes(station::PowerState state) const {
+        return QTest::qWaitFor([this, state] { return power() == state; }, CommandMs);
+    }
+    bool reported(bool wanted) const {
+        return QTest::qWaitFor([this, wanted] { return railway() && railway()->isStateReported() == wanted; },
+                               3 * CommandMs);
+    }
+
+    Translations translations;
+    TestStation server;
+    connection::StationConnection connection{
+        support::withEmbeddedStation()}; // outlives the railway and the window
+    std::unique_ptr<MainWindow> window;
+    std::unique_ptr<RailwayBinding> railways;
+};
+
+} // namespace stellwerk::ui::test

@@ -1,2 +1,0 @@
-# Widget tests of the throttles, against the demo layout's simulated CS2 on loopback.
-target_sources(stellwerk-ui-tests PRIVATE ThrottleTest.cpp)

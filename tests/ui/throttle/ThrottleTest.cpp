@@ -1,0 +1,400 @@
+// The throttles against the demo layout's simulated CS2 on a loopback port: what a throttle sends, the
+// station carries out (seen through a second connection, as another controller would see it); what
+// another controller does shows in the throttle; what the station does not acknowledge is marked.
+
+#include "EmbeddedStationSupport.h"
+#include "model/Railway.h"
+#include "shell/RailwayBinding.h"
+#include "shell/Translations.h"
+#include "support/StationTestSupport.h"
+#include "throttle/FunctionIcons.h"
+#include "throttle/FunctionPad.h"
+#include "throttle/SpeedScale.h"
+#include "throttle/ThrottlePanel.h"
+#include "throttle/ThrottleWidget.h"
+
+#include <QApplication>
+#include <QComboBox>
+#include <QPalette>
+#include <QPushButton>
+#include <QSettings>
+#include <QShortcut>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QTest>
+#include <QToolButton>
+#include <functional>
+#include <gtest/gtest.h>
+
+using namespace stellwerk;
+using namespace stellwerk::ui;
+using namespace std::chrono_literals;
+using State = connection::StationConnection::State;
+using Control = model::Railway::LocomotiveControl;
+
+namespace {
+
+constexpr int CommandMs = 5000;
+constexpr quint32 V100 = 0x18;    // V 100 2023, MM2 24, tachomax 100: stands still in the demo
+constexpr quint32 Br218 = 0x4001; // BR 218 Ost, mfx, tachomax 140
+constexpr int Horn = 2;           // V 100's F2: icon 138, the horn, momentary
+
+connection::ConnectionSettings impatient() {
+    connection::ConnectionSettings settings;
+    settings.session.commands.timeout = 150ms;
+    settings.session.commands.retries = 0;
+    return settings;
+}
+
+// A throttle on one connection to a TestStation, and a second connection ("another controller").
+class ThrottleTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        ASSERT_TRUE(translations.select(Language::English));
+        ASSERT_TRUE(testStation.start());
+        QObject::connect(&railways, &RailwayBinding::railwayChanged, &throttle, &ThrottleWidget::setRailway);
+        connection.connectTo(testStation.url());
+        other.connectTo(testStation.url());
+        ASSERT_TRUE(test::waitForState(connection, State::Ready));
+        ASSERT_TRUE(test::waitForState(other, State::Ready));
+        ASSERT_NE(railways.railway(), nullptr);
+        throttle.setLocomotive(V100);
+        throttle.show();
+    }
+
+    const model::Locomotive& mine() const { return *railways.railway()->locomotive(V100); }
+    const model::Locomotive& seenByOther() const { return *otherRailways.railway()->locomotive(V100); }
+    QToolButton* key(int function) const { return throttle.functions()->button(function); }
+    static bool waitFor(const std::function<bool()>& condition) {
+        return QTest::qWaitFor(condition, CommandMs);
+    }
+
+    Translations translations;
+    test::TestStation testStation;
+    connection::StationConnection connection{support::withEmbeddedStation(impatient())};
+    connection::StationConnection other{support::withEmbeddedStation()};
+    RailwayBinding railways{connection};
+    RailwayBinding otherRailways{other};
+    ThrottleWidget throttle;
+};
+
+} // namespace
+
+TEST_F(ThrottleTest, PicksALocomotiveFromTheStationsListWithItsAddressAndScale) {
+    QComboBox* choice = throttle.locomotiveChoice();
+    ASSERT_EQ(choice->count(), 13) << "a prompt and the demo's 12 locomotives";
+    EXPECT_EQ(choice->currentText(), QStringLiteral("V 100 2023 (MM2 24)"));
+    const int br218 = choice->findData(Br218);
+    ASSERT_GE(br218, 0);
+    EXPECT_EQ(choice->itemText(br218), QStringLiteral("BR 218 Ost (MFX 1)"));
+    EXPECT_EQ(throttle.speedScale()->tachoMax(), 100);
+    EXPECT_EQ(throttle.speedScale()->markTexts().last(), QStringLiteral("100 km/h"));
+    EXPECT_EQ(throttle.speedText(), QStringLiteral("0 km/h"));
+
+    QSignalSpy chosen(&throttle, &ThrottleWidget::locomotiveChosen);
+    choice->setCurrentIndex(br218);
+    emit choice->activated(br218);
+    EXPECT_EQ(throttle.locomotive(), Br218);
+    ASSERT_EQ(chosen.count(), 1);
+    EXPECT_EQ(throttle.speedScale()->tachoMax(), 140);
+}
+
+TEST_F(ThrottleTest, FunctionKeysShowTheirIconAndHowTheyAct) {
+    ASSERT_NE(key(0), nullptr);
+    EXPECT_FALSE(key(0)->icon().isNull()) << "F0 is the light (icon 1)";
+    EXPECT_TRUE(key(0)->toolTip().startsWith(QStringLiteral("F0: Light (on/off)")))
+        << key(0)->toolTip().toStdString();
+    ASSERT_NE(key(Horn), nullptr);
+    EXPECT_TRUE(key(Horn)->toolTip().startsWith(QStringLiteral("F2: Horn (on while held)")));
+    EXPECT_EQ(key(9), nullptr) << "F9 has no icon in the file: no key";
+}
+
+TEST_F(ThrottleTest, TheSliderDrivesTheLocomotiveAndTheStationConfirmsIt) {
+    throttle.speedSlider()->setValue(50);
+    ASSERT_TRUE(waitFor([&] { return seenByOther().speed() == 500; }));
+    ASSERT_TRUE(waitFor([&] { return mine().speed() == 500; }));
+    EXPECT_EQ(throttle.speedSlider()->value(), 50);
+    EXPECT_EQ(throttle.speedText(), QStringLiteral("50 km/h"));
+    EXPECT_FALSE(throttle.isUnacknowledged(Control::Speed));
+}
+
+TEST_F(ThrottleTest, AFunctionKeyTogglesTheFunctionOnTheStation) {
+    const bool before = mine().functionOn(0); // the demo's V 100 may start with its light on
+    EXPECT_EQ(key(0)->isChecked(), before);
+    QTest::mouseClick(key(0), Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return seenByOther().functionOn(0) != before; }));
+    ASSERT_TRUE(waitFor([&] { return key(0)->isChecked() != before; }));
+    QTest::mouseClick(key(0), Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return seenByOther().functionOn(0) == before; }));
+    ASSERT_TRUE(waitFor([&] { return key(0)->isChecked() == before; }));
+}
+
+TEST_F(ThrottleTest, AMomentaryFunctionIsOnOnlyWhileItsKeyIsHeld) {
+    QTest::mousePress(key(Horn), Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return seenByOther().functionOn(Horn); }));
+    ASSERT_TRUE(waitFor([&] { return key(Horn)->isChecked(); }));
+    QTest::mouseRelease(key(Horn), Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return !seenByOther().functionOn(Horn); }));
+    ASSERT_TRUE(waitFor([&] { return !key(Horn)->isChecked(); }));
+}
+
+TEST_F(ThrottleTest, ATimedFunctionSwitchesOffAgainByItself) {
+    constexpr quint32 Ice3 = 0x4002;
+    constexpr int TimedHorn = 3; // ICE 3's F3: the horn for 2 (..dauer=2)
+    throttle.setLocomotive(Ice3);
+    ASSERT_NE(key(TimedHorn), nullptr);
+    EXPECT_TRUE(key(TimedHorn)->toolTip().startsWith(QStringLiteral("F3: Horn (on for 2 s)")));
+    const model::Locomotive& ice3 = *otherRailways.railway()->locomotive(Ice3);
+    QTest::mouseClick(key(TimedHorn), Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return ice3.functionOn(TimedHorn); }));
+    ASSERT_TRUE(waitFor([&] { return !ice3.functionOn(TimedHorn); }));
+    ASSERT_TRUE(waitFor([&] { return !key(TimedHorn)->isChecked(); }));
+}
+
+TEST_F(ThrottleTest, StopLocoStopsOnlyThisLocomotive) {
+    throttle.speedSlider()->setValue(60);
+    ASSERT_TRUE(waitFor([&] { return mine().speed() == 600; }));
+    otherRailways.railway()->setSpeed(Br218, 400);
+    ASSERT_TRUE(waitFor([&] { return railways.railway()->locomotive(Br218)->speed() == 400; }));
+    QTest::mouseClick(throttle.emergencyStopButton(), Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return mine().speed() == 0 && throttle.speedSlider()->value() == 0; }));
+    EXPECT_EQ(throttle.speedText(), QStringLiteral("0 km/h"));
+    EXPECT_EQ(railways.railway()->locomotive(Br218)->speed(), 400);
+    EXPECT_EQ(otherRailways.railway()->locomotive(Br218)->speed(), 400);
+}
+
+TEST_F(ThrottleTest, WhatAnotherControllerDoesShowsInTheThrottle) {
+    otherRailways.railway()->setSpeed(V100, 300);
+    ASSERT_TRUE(waitFor([&] { return throttle.speedSlider()->value() == 30; }));
+    EXPECT_EQ(throttle.speedText(), QStringLiteral("30 km/h"));
+    otherRailways.railway()->setFunction(V100, 0, true);
+    ASSERT_TRUE(waitFor([&] { return key(0)->isChecked(); }));
+    otherRailways.railway()->setDirection(V100, cs2::Direction::Backward);
+    ASSERT_TRUE(waitFor([&] { return throttle.directionButton()->text() == QStringLiteral("◀ Backward"); }));
+}
+
+TEST_F(ThrottleTest, ACommandTheStationDoesNotAcknowledgeIsMarked) {
+    testStation.stop();
+    throttle.speedSlider()->setValue(40);
+    ASSERT_TRUE(waitFor([&] { return throttle.isUnacknowledged(Control::Speed); }));
+    EXPECT_TRUE(throttle.speedSlider()->toolTip().startsWith(
+        QStringLiteral("The station did not acknowledge the last command")))
+        << throttle.speedSlider()->toolTip().toStdString();
+    EXPECT_EQ(throttle.speedSlider()->value(), 0) << "back to what the station confirmed";
+    const bool light = mine().functionOn(0);
+    // With the station gone its state is not reported: the keys are greyed, so the command comes from
+    // the railway itself (another panel, a route), and the throttle still marks it.
+    ASSERT_TRUE(waitFor([&] { return !railways.railway()->isStateReported(); }));
+    EXPECT_FALSE(key(0)->isEnabled());
+    railways.railway()->toggleFunction(V100, 0);
+    ASSERT_TRUE(waitFor([&] { return throttle.isUnacknowledged(Control::Function, 0); }));
+    EXPECT_TRUE(key(0)->property("unacknowledged").toBool());
+    EXPECT_EQ(key(0)->isChecked(), light) << "the key still shows what the station confirmed";
+    EXPECT_TRUE(key(0)->toolTip().contains(QStringLiteral("did not acknowledge")));
+    if (const QString dir = qEnvironmentVariable("STELLWERK_SCREENSHOT_DIR"); !dir.isEmpty()) {
+        EXPECT_TRUE(throttle.grab().save(dir + QStringLiteral("/throttle-unacknowledged.png")));
+    }
+}
+
+TEST_F(ThrottleTest, AnAcknowledgedCommandClearsTheMark) {
+    // The railway reports a failure and later an acknowledgement for the same control, as it does when
+    // the station misses one command and answers the next.
+    model::Railway* railway = railways.railway();
+    emit railway->locomotiveCommandFailed(V100, Control::Speed, -1, QStringLiteral("no answer"));
+    ASSERT_TRUE(throttle.isUnacknowledged(Control::Speed));
+    throttle.speedSlider()->setValue(20);
+    ASSERT_TRUE(waitFor([&] { return mine().speed() == 200; }));
+    ASSERT_TRUE(waitFor([&] { return !throttle.isUnacknowledged(Control::Speed); }));
+    EXPECT_FALSE(throttle.speedSlider()->toolTip().contains(QStringLiteral("did not acknowledge")));
+}
+
+TEST_F(ThrottleTest, KeysDriveSpeedDirectionAndFunctions) {
+    throttle.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&throttle));
+    throttle.setFocus();
+    QWidget* focus = QApplication::focusWidget();
+    ASSERT_NE(focus, nullptr);
+    QTest::keyClick(focus, Qt::Key_Up);
+    QTest::keyClick(focus, Qt::Key_Plus);
+    ASSERT_TRUE(waitFor([&] { return seenByOther().speed() == 100; })) << "two steps of 5 %";
+    QTest::keyClick(focus, Qt::Key_Minus);
+    ASSERT_TRUE(waitFor([&] { return seenByOther().speed() == 50; }));
+    const bool light = seenByOther().functionOn(0);
+    QTest::keyClick(focus, Qt::Key_0);
+    ASSERT_TRUE(waitFor([&] { return seenByOther().functionOn(0) != light; }));
+    QTest::keyPress(focus, Qt::Key_2);
+    ASSERT_TRUE(waitFor([&] { return seenByOther().functionOn(Horn); }));
+    QTest::keyRelease(focus, Qt::Key_2);
+    ASSERT_TRUE(waitFor([&] { return !seenByOther().functionOn(Horn); }));
+    QTest::keyClick(focus, Qt::Key_R);
+    ASSERT_TRUE(waitFor([&] { return seenByOther().direction() == cs2::Direction::Backward; }));
+    QTest::keyClick(focus, Qt::Key_PageUp);
+    ASSERT_TRUE(waitFor([&] { return seenByOther().speed() == 250; })) << "a page is 25 %";
+    QTest::keyClick(focus, Qt::Key_E);
+    ASSERT_TRUE(waitFor([&] { return mine().speed() == 0 && throttle.speedSlider()->value() == 0; }));
+}
+
+TEST_F(ThrottleTest, SpaceAndEscapeStayWithTheWindow) {
+    QWidget window;
+    auto* inside = new ThrottleWidget(&window);
+    inside->setRailway(railways.railway());
+    inside->setLocomotive(V100);
+    QShortcut stop(QKeySequence(Qt::Key_Space), &window);
+    QShortcut escape(QKeySequence(Qt::Key_Escape), &window);
+    QSignalSpy stops(&stop, &QShortcut::activated);
+    QSignalSpy escapes(&escape, &QShortcut::activated);
+    window.show();
+    window.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&window));
+    inside->setFocus();
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Escape);
+    EXPECT_EQ(stops.count(), 1);
+    EXPECT_EQ(escapes.count(), 1);
+}
+
+class ThrottlePanelTest : public ThrottleTest {
+protected:
+    void SetUp() override {
+        QSettings("Stellwerk", "Stellwerk").remove("throttles");
+        ThrottleTest::SetUp();
+    }
+};
+
+TEST_F(ThrottlePanelTest, RemembersWhichLocomotivesWereOpen) {
+    {
+        ThrottlePanel panel;
+        EXPECT_TRUE(panel.throttles().isEmpty());
+        panel.setRailway(railways.railway());
+        panel.addThrottle(Br218);
+        panel.addThrottle(V100);
+        ThrottleWidget* third = panel.addThrottle();
+        panel.removeThrottle(panel.throttles().first());
+        third->setLocomotive(Br218);
+    }
+    ThrottlePanel restored;
+    ASSERT_EQ(restored.throttles().size(), 2);
+    EXPECT_EQ(restored.throttles()[0]->locomotive(), V100);
+    EXPECT_EQ(restored.throttles()[1]->locomotive(), Br218);
+    QComboBox* first = restored.throttles()[0]->locomotiveChoice();
+    EXPECT_EQ(first->currentText(), QStringLiteral("Locomotive 0x18 (waiting for the station)"));
+    restored.setRailway(railways.railway());
+    EXPECT_EQ(first->currentText(), QStringLiteral("V 100 2023 (MM2 24)"));
+}
+
+TEST_F(ThrottlePanelTest, SaysWhatToDoWhileThereIsNothingToDrive) {
+    ThrottlePanel panel;
+    EXPECT_TRUE(panel.emptyText().startsWith(QStringLiteral("No station connected")))
+        << panel.emptyText().toStdString();
+    panel.setRailway(railways.railway());
+    EXPECT_TRUE(panel.emptyText().startsWith(QStringLiteral("No throttle open")))
+        << panel.emptyText().toStdString();
+    ThrottleWidget* throttle = panel.addThrottle();
+    EXPECT_EQ(panel.emptyText(), QString());
+    EXPECT_EQ(throttle->locomotiveChoice()->currentText(), QStringLiteral("Choose a locomotive…"));
+    EXPECT_FALSE(throttle->speedSlider()->isEnabled()) << "nothing to drive yet";
+    panel.removeThrottle(throttle);
+    EXPECT_TRUE(panel.emptyText().startsWith(QStringLiteral("No throttle open")));
+}
+
+TEST_F(ThrottlePanelTest, AltAndANumberPutTheKeyboardOnThatThrottle) {
+    ThrottlePanel panel;
+    panel.setRailway(railways.railway());
+    panel.addThrottle(Br218);
+    panel.addThrottle(V100);
+    panel.show();
+    panel.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&panel));
+    QTest::keyClick(&panel, Qt::Key_2, Qt::AltModifier);
+    EXPECT_TRUE(panel.throttles()[1]->isAncestorOf(QApplication::focusWidget()));
+    QTest::keyClick(&panel, Qt::Key_1, Qt::AltModifier);
+    EXPECT_TRUE(panel.throttles()[0]->isAncestorOf(QApplication::focusWidget()));
+    EXPECT_FALSE(panel.focusThrottle(3));
+}
+
+namespace {
+
+QPalette darkPalette() {
+    QPalette dark;
+    dark.setColor(QPalette::Window, QColor(0x2b, 0x2b, 0x2b));
+    dark.setColor(QPalette::WindowText, QColor(0xe6, 0xe6, 0xe6));
+    dark.setColor(QPalette::Base, QColor(0x1e, 0x1e, 0x1e));
+    dark.setColor(QPalette::Text, QColor(0xe6, 0xe6, 0xe6));
+    dark.setColor(QPalette::Button, QColor(0x3c, 0x3c, 0x3c));
+    dark.setColor(QPalette::ButtonText, QColor(0xe6, 0xe6, 0xe6));
+    dark.setColor(QPalette::Mid, QColor(0x5a, 0x5a, 0x5a));
+    dark.setColor(QPalette::Highlight, QColor(0x2f, 0x7d, 0xd1));
+    dark.setColor(QPalette::HighlightedText, Qt::white);
+    dark.setColor(QPalette::Disabled, QPalette::WindowText, QColor(0x9a, 0x9a, 0x9a));
+    dark.setColor(QPalette::Disabled, QPalette::ButtonText, QColor(0x80, 0x80, 0x80));
+    return dark;
+}
+
+} // namespace
+
+// Three throttles side by side, each wide enough for its keys and texts. With STELLWERK_SCREENSHOT_DIR
+// set, the page is saved as throttles.png (and throttles-dark.png) there for docs/screenshots.
+TEST_F(ThrottlePanelTest, ThreeThrottlesStandSideBySideUnclipped) {
+    ThrottlePanel panel;
+    panel.setRailway(railways.railway());
+    constexpr quint32 Ice3 = 0x4002;
+    for (const quint32 loco : {Br218, Ice3, V100})
+        panel.addThrottle(loco);
+    model::Railway* railway = railways.railway();
+    railway->setSpeed(Br218, 640);
+    railway->setFunction(Br218, 0, true);
+    railway->setFunction(Br218, 1, true);
+    railway->setFunction(V100, 0, true);
+    railway->setDirection(Ice3, cs2::Direction::Backward);
+    panel.resize(1060, 720);
+    panel.show();
+    ASSERT_TRUE(waitFor([&] {
+        return railway->locomotive(Br218)->speed() == 640 && railway->locomotive(V100)->functionOn(0);
+    }));
+    ASSERT_TRUE(waitFor(
+        [&] { return panel.throttles()[1]->directionButton()->text() == QStringLiteral("◀ Backward"); }));
+    QTest::qWait(50);
+    for (qsizetype i = 0; i < panel.throttles().size(); ++i) {
+        ThrottleWidget* throttle = panel.throttles()[i];
+        EXPECT_TRUE(throttle->isVisible());
+        EXPECT_GE(throttle->width(), throttle->minimumSizeHint().width());
+        if (i > 0) {
+            EXPECT_GE(throttle->x(), panel.throttles()[i - 1]->geometry().right()) << "side by side";
+        }
+    }
+    if (const QString dir = qEnvironmentVariable("STELLWERK_SCREENSHOT_DIR"); !dir.isEmpty()) {
+        EXPECT_TRUE(panel.grab().save(dir + QStringLiteral("/throttles.png")));
+        const QPalette light = QApplication::palette();
+        QApplication::setPalette(darkPalette());
+        ThrottlePanel dark; // the same throttles, from the settings
+        dark.setRailway(railway);
+        dark.resize(panel.size());
+        dark.show();
+        QTest::qWait(50);
+        EXPECT_TRUE(dark.grab().save(dir + QStringLiteral("/throttles-dark.png")));
+        QApplication::setPalette(light);
+    }
+}
+
+TEST(FunctionIconsTable, MapsCs2IconNumbersToOurDrawings) {
+    EXPECT_EQ(FunctionIcons::kindOf(1), FunctionKind::Light);
+    EXPECT_EQ(FunctionIcons::kindOf(10), FunctionKind::Horn);
+    EXPECT_EQ(FunctionIcons::kindOf(138), FunctionKind::Horn) << "bit 7 only marks a momentary key";
+    EXPECT_EQ(FunctionIcons::kindOf(7), FunctionKind::Smoke);
+    EXPECT_EQ(FunctionIcons::kindOf(9), FunctionKind::Coupler);
+    EXPECT_EQ(FunctionIcons::kindOf(8), FunctionKind::Shunting);
+    EXPECT_EQ(FunctionIcons::kindOf(20), FunctionKind::BrakeSound);
+    EXPECT_EQ(FunctionIcons::kindOf(42), FunctionKind::CabLight);
+    EXPECT_EQ(FunctionIcons::kindOf(52), FunctionKind::Numbered) << "50 + n is the plain key Fn";
+    EXPECT_EQ(FunctionIcons::kindOf(0), FunctionKind::Numbered);
+}
+
+TEST(FunctionIconsTable, EveryDrawingIsEmbeddedAndReadable) {
+    for (int kind = int(FunctionKind::Light); kind <= int(FunctionKind::Announcement); ++kind) {
+        const auto k = FunctionKind(kind);
+        EXPECT_FALSE(FunctionIcons::icon(k, Qt::black, 24).isNull())
+            << FunctionIcons::resourcePath(k).toStdString();
+        EXPECT_NE(FunctionIcons::name(k), FunctionIcons::name(FunctionKind::Numbered));
+    }
+    EXPECT_TRUE(FunctionIcons::icon(FunctionKind::Numbered, Qt::black, 24).isNull());
+}

@@ -1,0 +1,2 @@
+# Widget tests of the throttles, against the demo layout's simulated CS2 on loopback.
+target_sources(stellwerk-ui-tests PRIVATE throttle/ThrottleTest.cpp)

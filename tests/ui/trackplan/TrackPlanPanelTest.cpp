@@ -1,0 +1,270 @@
+#include "trackplan/TrackPlanPanel.h"
+
+#include "EmbeddedStationSupport.h"
+#include "model/Railway.h"
+#include "shell/RailwayBinding.h"
+#include "shell/Translations.h"
+#include "support/StationTestSupport.h"
+#include "trackplan/TrackPageView.h"
+#include "trackplan/TrackTileLook.h"
+
+#include <QSignalSpy>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <gtest/gtest.h>
+
+using namespace stellwerk;
+using namespace stellwerk::ui;
+using State = connection::StationConnection::State;
+
+namespace {
+
+constexpr int CommandMs = 5000;
+
+// The track plan on a railway bound to the demo layout's simulated CS2 (without moving trains).
+class TrackPlanPanelTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        ASSERT_TRUE(translations.select(Language::English));
+        ASSERT_TRUE(server.start());
+        QObject::connect(&railways, &RailwayBinding::railwayChanged, &panel, &TrackPlanPanel::setRailway);
+        panel.setConnection(&station);
+        station.connectTo(server.url());
+        ASSERT_TRUE(test::waitForState(station, State::Ready));
+        ASSERT_NE(railways.railway(), nullptr);
+        panel.resize(1000, 700);
+        panel.show();
+    }
+
+    // The first tile of this category on any page.
+    std::optional<model::TileRef> firstTile(cs2config::TrackCategory category) const {
+        const auto& pages = panel.layout()->pages();
+        for (int p = 0; p < int(pages.size()); ++p)
+            for (int t = 0; t < int(pages[std::size_t(p)].tiles.size()); ++t)
+                if (pages[std::size_t(p)].tiles[std::size_t(t)].category == category)
+                    return model::TileRef{p, t};
+        return std::nullopt;
+    }
+    void click(model::TileRef ref) {
+        panel.pageTabs()->setCurrentIndex(ref.page);
+        TrackPageView* view = panel.pageView(ref.page);
+        QTest::mouseClick(view, Qt::LeftButton, {}, view->tileRect(ref.tile).center());
+    }
+
+    Translations translations;
+    test::TestStation server;
+    connection::StationConnection station{support::withEmbeddedStation()};
+    RailwayBinding railways{station};
+    TrackPlanPanel panel;
+};
+
+std::filesystem::path gbertFolder() {
+    return std::filesystem::path(STELLWERK_SHARED_DIR) / "corpus/GBert__railroad/can2udp/files/maerklin";
+}
+
+} // namespace
+
+TEST_F(TrackPlanPanelTest, ShowsTheDemoPagesAsTabs) {
+    QTabWidget* tabs = panel.pageTabs();
+    ASSERT_EQ(tabs->count(), 3);
+    EXPECT_EQ(tabs->tabText(0), QStringLiteral("Bahnhof"));
+    EXPECT_EQ(tabs->tabText(1), QStringLiteral("Strecke"));
+    EXPECT_EQ(tabs->tabText(2), QStringLiteral("Bw"));
+    EXPECT_EQ(panel.objectName(), QStringLiteral("trackPlanPanel"));
+}
+
+TEST_F(TrackPlanPanelTest, ClickingATurnoutSwitchesItOnceTheStationConfirms) {
+    const std::optional<model::TileRef> turnout = firstTile(cs2config::TrackCategory::Turnout);
+    ASSERT_TRUE(turnout);
+    const int before = panel.lookOf(*turnout).position;
+    ASSERT_GE(before, 0);
+    const int count =
+        railways.railway()->accessory(*panel.layout()->tile(*turnout).accessory)->positionCount();
+    QSignalSpy tiles(railways.railway(), &model::Railway::tilesChanged);
+    click(*turnout);
+    EXPECT_TRUE(
+        QTest::qWaitFor([&] { return panel.lookOf(*turnout).position == (before + 1) % count; }, CommandMs));
+    ASSERT_GE(tiles.count(), 1);
+    EXPECT_TRUE(tiles.last().at(0).value<QList<model::TileRef>>().contains(*turnout));
+}
+
+TEST_F(TrackPlanPanelTest, AnS88EventLightsTheContactTile) {
+    const std::optional<model::TileRef> contactTile = firstTile(cs2config::TrackCategory::Feedback);
+    ASSERT_TRUE(contactTile);
+    const model::ContactKey key = *panel.layout()->tile(*contactTile).contact;
+    const bool before = panel.lookOf(*contactTile).occupied;
+    server.station().setContact(std::uint16_t(key >> 16), std::uint16_t(key & 0xFFFF), !before);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return panel.lookOf(*contactTile).occupied == !before; }, CommandMs));
+}
+
+TEST_F(TrackPlanPanelTest, ClickingARouteButtonRunsTheRouteAndMarksTheButton) {
+    const std::optional<model::TileRef> button = firstTile(cs2config::TrackCategory::RouteButton);
+    ASSERT_TRUE(button);
+    EXPECT_FALSE(panel.lookOf(*button).running);
+    QSignalSpy started(railways.railway(), &model::Railway::routeStarted);
+    QSignalSpy finished(railways.railway(), &model::Railway::routeFinished);
+    click(*button);
+    ASSERT_EQ(started.count(), 1);
+    EXPECT_EQ(started.first().at(0).toLongLong(), *panel.layout()->tile(*button).route);
+    EXPECT_TRUE(panel.lookOf(*button).running);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return finished.count() == 1; }, 3 * CommandMs));
+    EXPECT_FALSE(panel.lookOf(*button).running);
+}
+
+TEST_F(TrackPlanPanelTest, ClickingAPageLinkGoesToThatPage) {
+    const std::optional<model::TileRef> link = firstTile(cs2config::TrackCategory::PageLink);
+    ASSERT_TRUE(link);
+    const std::int64_t target = *panel.layout()->tile(*link).page;
+    click(*link);
+    EXPECT_EQ(panel.layout()->pages()[std::size_t(panel.pageTabs()->currentIndex())].id, target);
+}
+
+TEST_F(TrackPlanPanelTest, ATooltipNamesTypeAddressAndName) {
+    const std::optional<model::TileRef> turnout = firstTile(cs2config::TrackCategory::Turnout);
+    ASSERT_TRUE(turnout);
+    const model::LayoutTile& tile = panel.layout()->tile(*turnout);
+    const QString text = panel.toolTipOf(*turnout);
+    EXPECT_TRUE(text.contains(QStringLiteral("Accessory %1").arg(*tile.accessory))) << text.toStdString();
+    EXPECT_TRUE(text.contains(railways.railway()->accessory(*tile.accessory)->name())) << text.toStdString();
+}
+
+TEST_F(TrackPlanPanelTest, ExportsTheStationsLayoutAsAFolderThatOpensAgain) {
+    QTemporaryDir target;
+    ASSERT_TRUE(panel.exportTo(target.path())) << panel.problemText().toStdString();
+    for (const char* file : {"gleisbild.cs2", "gleisbilder/Bahnhof.cs2", "gleisbilder/Bw.cs2",
+                             "magnetartikel.cs2", "lokomotive.cs2", "fahrstrassen.cs2"})
+        EXPECT_TRUE(QFile::exists(target.path() + QStringLiteral("/config/") + QLatin1String(file))) << file;
+    ASSERT_TRUE(panel.openFolder(target.path()));
+    EXPECT_EQ(panel.pageTabs()->count(), 3);
+    EXPECT_EQ(panel.layout()->pages()[0].tiles.size(), railways.railway()->layout().pages()[0].tiles.size());
+}
+
+TEST(TrackPlanPanelFiles, OpensACorpusLayoutWithoutAStation) {
+    TrackPlanPanel panel;
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    ASSERT_EQ(panel.pageTabs()->count(), 1);
+    EXPECT_EQ(panel.pageTabs()->tabText(0), QStringLiteral("karben"));
+    EXPECT_EQ(panel.layout()->pages()[0].tiles.size(), 37U);
+}
+
+// karben.cs2 links several tiles to one article and labels tiles with other articles' names: the layout
+// check's findings are shown in the problem banner, the first ones in full.
+TEST(TrackPlanPanelFiles, TheLayoutChecksFindingsAreShownInTheProblemBanner) {
+    TrackPlanPanel panel;
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    const QString text = panel.problemText();
+    EXPECT_TRUE(text.startsWith(QStringLiteral("The layout's files disagree in 13 place(s):")))
+        << text.toStdString();
+    EXPECT_TRUE(
+        text.contains(QStringLiteral("gleisbilder/karben.cs2:16: tile '23' (rechtsweiche at column 5, row 1) "
+                                     "and 2 other tiles switch the same article 1 '23'")))
+        << text.toStdString();
+    EXPECT_TRUE(text.endsWith(QStringLiteral("... and 8 more."))) << text.toStdString();
+    panel.showStationPlan();
+    EXPECT_EQ(panel.problemText(), QString());
+}
+
+TEST(TrackPlanPanelFiles, AConsistentLayoutShowsNoProblem) {
+    TrackPlanPanel panel;
+    QTemporaryDir folder;
+    const std::string index = "[gleisbild]\nseite\n .id=1\n .name=Bahnhof\n";
+    const std::string page =
+        "[gleisbildseite]\nelement\n .id=0x102\n .typ=rechtsweiche\n .artikel=2\n .text=W1\n";
+    const std::string articles = "[magnetartikel]\nartikel\n .id=1\n .name=W1\n .typ=rechtsweiche\n";
+    ASSERT_EQ(cs2config::LayoutFolder::write(folder.path().toStdString(), {{"gleisbild.cs2", index},
+                                                                           {"gleisbilder/Bahnhof.cs2", page},
+                                                                           {"magnetartikel.cs2", articles}}),
+              "");
+    ASSERT_TRUE(panel.openFolder(folder.path()));
+    EXPECT_EQ(panel.pageTabs()->count(), 1);
+    EXPECT_EQ(panel.problemText(), QString());
+}
+
+TEST(TrackPlanPanelFiles, AMissingFolderIsShownAsAProblemAndKeepsThePlan) {
+    TrackPlanPanel panel;
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    EXPECT_FALSE(panel.openFolder(QStringLiteral("/nonexistent/layout")));
+    EXPECT_TRUE(panel.problemText().contains(QStringLiteral("/nonexistent/layout does not exist")))
+        << panel.problemText().toStdString();
+    EXPECT_EQ(panel.pageTabs()->count(), 1);
+}
+
+TEST(TrackPlanPanelFiles, ExportingWithoutALayoutSaysWhy) {
+    TrackPlanPanel panel;
+    QTemporaryDir target;
+    EXPECT_FALSE(panel.exportTo(target.path()));
+    EXPECT_TRUE(panel.problemText().startsWith(QStringLiteral("There is no track plan to export")));
+}
+
+TEST(TrackPlanPanelFiles, ZoomChangesTheTileSize) {
+    TrackPlanPanel panel;
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    const int before = panel.tileSize();
+    panel.zoomIn();
+    EXPECT_GT(panel.tileSize(), before);
+    EXPECT_EQ(panel.pageView(0)->tileSize(), panel.tileSize());
+    panel.zoomOut();
+    panel.zoomOut();
+    EXPECT_LT(panel.tileSize(), before);
+}
+
+namespace {
+
+// Saves a picture of the panel into $STELLWERK_SCREENSHOT_DIR (for docs/screenshots) when it is set.
+void keepScreenshot(const QImage& image, const QString& name) {
+    const QString folder = qEnvironmentVariable("STELLWERK_SCREENSHOT_DIR");
+    if (!folder.isEmpty())
+        image.save(folder + QLatin1Char('/') + name);
+}
+
+// Pixels of the image that are not the most common colour (the page's background).
+int drawnPixels(const QImage& image) {
+    std::map<QRgb, int> counts;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            ++counts[image.pixel(x, y)];
+    int most = 0;
+    for (const auto& [colour, count] : counts)
+        most = std::max(most, count);
+    return image.width() * image.height() - most;
+}
+
+} // namespace
+
+TEST_F(TrackPlanPanelTest, TheDemoPlanIsDrawnInLightAndDarkPalettes) {
+    panel.fitToWindow();
+    const QImage light = panel.grab().toImage();
+    EXPECT_GT(drawnPixels(light), 5000);
+    keepScreenshot(light, QStringLiteral("track-plan.png"));
+    for (int page = 1; page < panel.pageTabs()->count(); ++page) { // the other pages are drawn as well
+        panel.pageTabs()->setCurrentIndex(page);
+        const QImage other = panel.grab().toImage();
+        EXPECT_GT(drawnPixels(other), 5000) << page;
+        keepScreenshot(other, QStringLiteral("track-plan-page%1.png").arg(page));
+    }
+    panel.pageTabs()->setCurrentIndex(0);
+    QPalette dark;
+    dark.setColor(QPalette::Window, QColor(45, 45, 48));
+    dark.setColor(QPalette::WindowText, QColor(225, 225, 225));
+    dark.setColor(QPalette::Base, QColor(30, 30, 33));
+    dark.setColor(QPalette::Text, QColor(230, 230, 230));
+    dark.setColor(QPalette::Button, QColor(60, 60, 64));
+    dark.setColor(QPalette::ButtonText, QColor(225, 225, 225));
+    panel.setPalette(dark);
+    const QImage darkImage = panel.grab().toImage();
+    EXPECT_GT(drawnPixels(darkImage), 5000);
+    EXPECT_LT(QColor(darkImage.pixel(darkImage.width() / 2, darkImage.height() - 20)).lightness(), 100);
+    keepScreenshot(darkImage, QStringLiteral("track-plan-dark.png"));
+}
+
+TEST(TrackPlanPanelFiles, DrawsACorpusPage) {
+    TrackPlanPanel panel;
+    panel.resize(900, 400);
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    panel.show();
+    panel.fitToWindow();
+    const QImage image = panel.grab().toImage();
+    EXPECT_GT(drawnPixels(image), 3000);
+    keepScreenshot(image, QStringLiteral("track-plan-karben.png"));
+}

@@ -1,0 +1,99 @@
+#include "trackplan/TrackTileCache.h"
+
+#include "cs2config/TrackElementType.h"
+#include "trackplan/TrackColors.h"
+#include "trackplan/TrackTileLook.h"
+#include "trackplan/TrackTilePainter.h"
+
+#include <QApplication>
+#include <QImage>
+#include <QPainter>
+#include <QPalette>
+#include <gtest/gtest.h>
+#include <string>
+#include <vector>
+
+using namespace stellwerk;
+using namespace stellwerk::ui;
+
+namespace {
+
+constexpr int Size = 40;
+const QPoint Cell(3 * Size, 2 * Size);
+
+TrackColors colors() {
+    return TrackColors::from(QApplication::palette());
+}
+
+// A tile drawn into a blank picture of 6 x 4 cells, either straight from the painter or from the cache.
+QImage drawn(const TrackTileLook& look, TrackTileCache* cache) {
+    QImage image(6 * Size, 4 * Size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(colors().background);
+    QPainter painter(&image);
+    painter.setFont(QApplication::font());
+    if (cache) {
+        cache->prepare(Size, 1.0, colors(), QApplication::font());
+        cache->paint(painter, Cell, look);
+    } else {
+        TrackTilePainter::paint(painter, QRectF(Cell, QSizeF(Size, Size)), look, colors());
+    }
+    return image;
+}
+
+// The largest difference of a colour channel between two pictures of the same size.
+int largestDifference(const QImage& a, const QImage& b) {
+    int largest = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            const QColor p = a.pixelColor(x, y);
+            const QColor q = b.pixelColor(x, y);
+            largest = std::max({largest, std::abs(p.red() - q.red()), std::abs(p.green() - q.green()),
+                                std::abs(p.blue() - q.blue())});
+        }
+    return largest;
+}
+
+TrackTileLook look(const char* type, int rotation, int position = -1, QString text = {}) {
+    const cs2config::TrackElementType* known = cs2config::findTrackElementType(type);
+    const auto category = known ? known->category : cs2config::TrackCategory::Text;
+    return {QString::fromLatin1(type), category, rotation, position, false, false, std::move(text)};
+}
+
+} // namespace
+
+TEST(TrackTileCache, DrawsEveryTypeInEveryRotationAsThePainterDoes) {
+    TrackTileCache cache;
+    std::vector<TrackTileLook> tiles{look("text", 0, -1, QStringLiteral("Gleis 1")),
+                                     look("text", 1, -1, QStringLiteral("Tunnel")),
+                                     look("text", 2, -1, QStringLiteral("Bahnhof"))};
+    for (const cs2config::TrackElementType& type : cs2config::trackElementTypes())
+        for (int rotation = 0; rotation < 4; ++rotation)
+            tiles.push_back(look(std::string(type.name).c_str(), rotation, type.switchable() ? 1 : -1));
+    for (const TrackTileLook& tile : tiles) {
+        const QImage direct = drawn(tile, nullptr);
+        EXPECT_LE(largestDifference(drawn(tile, &cache), direct), 8)
+            << tile.type.toStdString() << tile.rotation;
+        EXPECT_LE(largestDifference(drawn(tile, &cache), direct), 8) << "drawn again from the cache";
+    }
+}
+
+TEST(TrackTileCache, KeepsTheDrawnPartOfOnePicturePerLookAndStartsAfreshWhenTheSizeChanges) {
+    TrackTileCache cache;
+    cache.prepare(Size, 1.0, colors(), QApplication::font());
+    const QRect straight = cache.area(look("gerade", 0), Cell);
+    EXPECT_EQ(straight.left(), Cell.x()) << "a straight runs from edge to edge";
+    EXPECT_GE(straight.right(), Cell.x() + Size - 1);
+    EXPECT_LT(straight.height(), Size / 3) << "only the part of the tile that is drawn on is kept";
+    cache.area(look("gerade", 0), Cell + QPoint(Size, 0));
+    EXPECT_EQ(cache.size(), 1) << "the same look elsewhere uses the same picture";
+    cache.area(look("linksweiche", 3, 0), Cell);
+    cache.area(look("linksweiche", 3, 1), Cell);
+    EXPECT_EQ(cache.size(), 3) << "each position of a turnout has its picture";
+
+    const QRect label = cache.area(look("text", 0, -1, QStringLiteral("Bahnhof Stellwerkhausen")), Cell);
+    EXPECT_GT(label.right(), Cell.x() + 3 * Size) << "a label runs beyond its tile";
+
+    cache.prepare(2 * Size, 1.0, colors(), QApplication::font());
+    EXPECT_EQ(cache.size(), 0);
+    EXPECT_GE(cache.area(look("gerade", 0), Cell).width(), 2 * Size);
+}

@@ -1,0 +1,154 @@
+#include "trackplan/TrackTilePainter.h"
+
+#include "cs2config/TrackElementType.h"
+#include "trackplan/TrackColors.h"
+#include "trackplan/TrackTileLook.h"
+
+#include <QImage>
+#include <QPainter>
+#include <QPalette>
+#include <gtest/gtest.h>
+#include <set>
+
+using namespace stellwerk;
+using namespace stellwerk::ui;
+
+namespace {
+
+constexpr int Size = 48;
+
+QPalette paletteOf(bool dark) {
+    QPalette palette;
+    palette.setColor(QPalette::Base, dark ? QColor(32, 32, 36) : QColor(255, 255, 255));
+    palette.setColor(QPalette::Text, dark ? QColor(230, 230, 230) : QColor(20, 20, 20));
+    palette.setColor(QPalette::Button, dark ? QColor(60, 60, 64) : QColor(230, 230, 230));
+    palette.setColor(QPalette::Highlight, QColor(42, 130, 218));
+    return palette;
+}
+
+QImage render(const TrackTileLook& look, bool dark) {
+    const TrackColors colors = TrackColors::from(paletteOf(dark));
+    QImage image(Size, Size, QImage::Format_ARGB32);
+    image.fill(colors.background);
+    QPainter painter(&image);
+    TrackTilePainter::paint(painter, QRectF(0, 0, Size, Size), look, colors);
+    return image;
+}
+
+// Pixels that differ clearly (not just by anti-aliasing) between two images.
+int differences(const QImage& a, const QImage& b) {
+    int count = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            const QColor p = a.pixelColor(x, y);
+            const QColor q = b.pixelColor(x, y);
+            if (std::abs(p.red() - q.red()) + std::abs(p.green() - q.green()) +
+                    std::abs(p.blue() - q.blue()) >
+                60)
+                ++count;
+        }
+    return count;
+}
+
+QImage blank(bool dark) {
+    QImage image(Size, Size, QImage::Format_ARGB32);
+    image.fill(TrackColors::from(paletteOf(dark)).background);
+    return image;
+}
+
+TrackTileLook lookOf(const cs2config::TrackElementType& type, int rotation) {
+    TrackTileLook look;
+    look.type = QString::fromLatin1(type.name.data(), qsizetype(type.name.size()));
+    look.category = type.category;
+    look.rotation = rotation;
+    look.position = type.switchable() ? 0 : -1;
+    look.text = QStringLiteral("Ab");
+    return look;
+}
+
+// Shapes that look the same after half a turn, as on the CS2 (a straight has no direction).
+const std::set<std::string_view> halfTurnSymmetric{"gerade",        "doppelbogen", "s88doppelbogen",
+                                                   "unterfuehrung", "tunnel",      "hosentraeger",
+                                                   "dkweiche",      "dkweiche_2",  "kreuzung"};
+
+} // namespace
+
+class TrackTilePainterTest : public ::testing::TestWithParam<bool> {};
+
+TEST_P(TrackTilePainterTest, EveryTypeDrawsSomethingInEveryRotation) {
+    const bool dark = GetParam();
+    for (const cs2config::TrackElementType& type : cs2config::trackElementTypes()) {
+        if (type.name == "leer")
+            continue;
+        for (int rotation = 0; rotation < 4; ++rotation)
+            EXPECT_GT(differences(render(lookOf(type, rotation), dark), blank(dark)), 20)
+                << type.name << " rotation " << rotation;
+    }
+}
+
+TEST_P(TrackTilePainterTest, RotationsLookDifferent) {
+    const bool dark = GetParam();
+    for (const cs2config::TrackElementType& type : cs2config::trackElementTypes()) {
+        if (type.name == "leer" || type.name == "kreuzung") // a plain crossing looks alike in every rotation
+            continue;
+        QImage images[4];
+        for (int rotation = 0; rotation < 4; ++rotation)
+            images[rotation] = render(lookOf(type, rotation), dark);
+        EXPECT_GT(differences(images[0], images[1]), 10) << type.name;
+        EXPECT_GT(differences(images[1], images[2]), 10) << type.name;
+        EXPECT_GT(differences(images[2], images[3]), 10) << type.name;
+        if (!halfTurnSymmetric.contains(type.name)) {
+            EXPECT_GT(differences(images[0], images[2]), 10) << type.name;
+            EXPECT_GT(differences(images[1], images[3]), 10) << type.name;
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(LightAndDark, TrackTilePainterTest, ::testing::Values(false, true),
+                         [](const auto& info) { return info.param ? "Dark" : "Light"; });
+
+TEST(TrackTilePainter, ATurnoutShowsWhichWayItIsSet) {
+    TrackTileLook look{
+        QStringLiteral("linksweiche"), cs2config::TrackCategory::Turnout, 0, 0, false, false, {}};
+    const QImage diverging = render(look, false);
+    look.position = 1;
+    EXPECT_GT(differences(diverging, render(look, false)), 20);
+}
+
+TEST(TrackTilePainter, AnOccupiedContactIsHighlighted) {
+    TrackTileLook look{
+        QStringLiteral("s88kontakt"), cs2config::TrackCategory::Feedback, 0, -1, false, false, {}};
+    const QImage free = render(look, false);
+    look.occupied = true;
+    const QImage occupied = render(look, false);
+    EXPECT_GT(differences(free, occupied), 30);
+    const QColor red = TrackColors::from(paletteOf(false)).occupied;
+    EXPECT_EQ(occupied.pixelColor(Size / 2, Size * 26 / 100).rgb(), red.rgb()); // inside the contact's marker
+}
+
+TEST(TrackTilePainter, ARunningRouteButtonIsHighlighted) {
+    TrackTileLook look{
+        QStringLiteral("fahrstrasse"), cs2config::TrackCategory::RouteButton, 0, -1, false, false, {}};
+    const QImage idle = render(look, false);
+    look.running = true;
+    EXPECT_GT(differences(idle, render(look, false)), 100);
+}
+
+TEST(TrackTilePainter, ASignalLightsTheLampOfItsAspect) {
+    TrackTileLook look{QStringLiteral("signal"), cs2config::TrackCategory::Signal, 0, 0, false, false, {}};
+    const QImage stop = render(look, false);
+    look.position = 1;
+    const QImage proceed = render(look, false);
+    const TrackColors colors = TrackColors::from(paletteOf(false));
+    const QPoint red(int(0.34 * Size), int(0.8 * Size));
+    const QPoint green(int(0.50 * Size), int(0.8 * Size));
+    EXPECT_EQ(stop.pixelColor(red).rgb(), colors.red.rgb());
+    EXPECT_EQ(proceed.pixelColor(green).rgb(), colors.green.rgb());
+    EXPECT_EQ(proceed.pixelColor(red).rgb(), colors.dim.rgb());
+}
+
+TEST(TrackTilePainter, AnUnknownTypeStillShowsAMark) {
+    const TrackTileLook look{
+        QStringLiteral("custom_perm_left"), cs2config::TrackCategory::Unknown, 0, -1, false, false, {}};
+    EXPECT_GT(differences(render(look, false), blank(false)), 20);
+}

@@ -1,0 +1,7 @@
+# The track plan tab against the simulated station, and every tile type drawn in every rotation.
+target_sources(stellwerk-ui-tests PRIVATE
+    trackplan/TrackPlanPanelTest.cpp
+    trackplan/TrackTileCacheTest.cpp
+    trackplan/TrackTilePainterTest.cpp
+)
+target_compile_definitions(stellwerk-ui-tests PRIVATE STELLWERK_SHARED_DIR="${STELLWERK_SHARED_DIR}")

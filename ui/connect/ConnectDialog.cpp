@@ -1,0 +1,312 @@
+#include "connect/ConnectDialog.h"
+
+#include "connect/ConnectionStatus.h"
+#include "connect/StationUrlSettings.h"
+#include "transport/CanBusTransport.h"
+#include "transport/TransportAddress.h"
+
+#include <QButtonGroup>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QEvent>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QVBoxLayout>
+
+namespace stellwerk::ui {
+
+namespace {
+
+// How a person names an address in the recent list.
+QString describeUrl(const QString& url) {
+    if (url.isEmpty())
+        return ConnectionStatus::describe(connection::StationEndpoint::simulated());
+    const auto parsed = transport::parseTransportUrl(url);
+    const auto endpoint =
+        parsed ? connection::StationEndpoint::of(*parsed) : connection::StationEndpoint::unusable(url);
+    return ConnectionStatus::describe(endpoint);
+}
+
+// The address for `host`, keeping the ports of `current` when it is of the same kind; just the scheme while
+// there is no host yet.
+// (`typename`, not `class`: lupdate would read the rest of the file as that class's texts.)
+template <typename Kind>
+QString withHost(const Expected<transport::TransportSettings, QString>& current, const QString& host,
+                 const QString& scheme) {
+    if (host.isEmpty())
+        return scheme;
+    Kind settings = current && std::holds_alternative<Kind>(*current) ? std::get<Kind>(*current) : Kind{};
+    settings.host = host;
+    return transport::transportUrl(settings);
+}
+
+QRadioButton* radio(QWidget* parent, const char* name) {
+    auto* button = new QRadioButton(parent);
+    button->setObjectName(QLatin1String(name));
+    return button;
+}
+
+} // namespace
+
+ConnectDialog::ConnectDialog(const QString& url, QWidget* parent) : QDialog(parent) {
+    setObjectName(QStringLiteral("connectDialog"));
+    createWidgets();
+    refreshInterfaces();
+    createRecent();
+    retranslate();
+    setUrl(url);
+}
+
+void ConnectDialog::createWidgets() {
+    m_recentLabel = new QLabel(this);
+    m_recent = new QComboBox(this);
+    m_recent->setObjectName(QStringLiteral("recentStations"));
+    m_recentLabel->setBuddy(m_recent);
+    m_urlLabel = new QLabel(this);
+    m_url = new QLineEdit(this);
+    m_url->setObjectName(QStringLiteral("stationUrl"));
+    m_url->setPlaceholderText(QStringLiteral("udp://192.168.2.5"));
+    m_url->setMinimumWidth(m_url->fontMetrics().averageCharWidth() * 40);
+    m_urlLabel->setBuddy(m_url);
+    m_examples = new QLabel(this);
+    m_examples->setObjectName(QStringLiteral("urlExamples"));
+    m_examples->setTextFormat(Qt::PlainText);
+    m_examples->setForegroundRole(QPalette::PlaceholderText);
+    m_error = new QLabel(this);
+    m_error->setObjectName(QStringLiteral("urlError"));
+    m_error->setStyleSheet(QStringLiteral("color: #c82c2c"));
+    m_error->setWordWrap(true);
+    m_buttons = new QDialogButtonBox(QDialogButtonBox::Cancel, this);
+    m_connect = m_buttons->addButton(QString(), QDialogButtonBox::AcceptRole);
+    m_connect->setObjectName(QStringLiteral("connectButton"));
+    m_connect->setDefault(true);
+
+    auto* recentLine = new QHBoxLayout;
+    recentLine->addWidget(m_recentLabel);
+    recentLine->addWidget(m_recent, 1);
+    auto* address = new QFormLayout;
+    address->addRow(m_urlLabel, m_url);
+    address->addRow(QString(), m_examples);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(recentLine);
+    layout->addLayout(createChoices());
+    layout->addLayout(address);
+    layout->addWidget(m_error);
+    layout->addStretch(1);
+    layout->addWidget(m_buttons);
+
+    connect(m_url, &QLineEdit::textEdited, this, &ConnectDialog::readUrl);
+    connect(m_url, &QLineEdit::textChanged, this, &ConnectDialog::check);
+    connect(m_buttons, &QDialogButtonBox::accepted, this, &ConnectDialog::accept);
+    connect(m_buttons, &QDialogButtonBox::rejected, this, &ConnectDialog::reject);
+}
+
+// One radio button per kind of station, with the fields that kind needs beside it.
+QLayout* ConnectDialog::createChoices() {
+    m_kinds = new QButtonGroup(this);
+    m_simulated = radio(this, "useSimulatedStation");
+    m_udp = radio(this, "useUdp");
+    m_tcp = radio(this, "useTcp");
+    m_can = radio(this, "useCan");
+    m_kinds->addButton(m_simulated, int(Kind::Simulated));
+    m_kinds->addButton(m_udp, int(Kind::Udp));
+    m_kinds->addButton(m_tcp, int(Kind::Tcp));
+    m_kinds->addButton(m_can, int(Kind::CanBus));
+    m_hostLabel = new QLabel(this);
+    m_host = new QLineEdit(this);
+    m_host->setObjectName(QStringLiteral("stationHost"));
+    m_host->setPlaceholderText(QStringLiteral("192.168.2.5"));
+    m_hostLabel->setBuddy(m_host);
+    m_interfaceLabel = new QLabel(this);
+    m_interface = new QComboBox(this);
+    m_interface->setObjectName(QStringLiteral("canInterface"));
+    m_interface->setEditable(true);
+    m_interface->setMinimumContentsLength(24);
+    m_interfaceLabel->setBuddy(m_interface);
+    m_refresh = new QPushButton(this);
+    m_refresh->setObjectName(QStringLiteral("refreshInterfaces"));
+
+    auto* grid = new QGridLayout;
+    grid->addWidget(m_simulated, 0, 0, 1, 4);
+    grid->addWidget(m_udp, 1, 0, 1, 4);
+    grid->addWidget(m_tcp, 2, 0, 1, 4);
+    grid->addWidget(m_hostLabel, 3, 1);
+    grid->addWidget(m_host, 3, 2, 1, 2);
+    grid->addWidget(m_can, 4, 0, 1, 4);
+    grid->addWidget(m_interfaceLabel, 5, 1);
+    grid->addWidget(m_interface, 5, 2);
+    grid->addWidget(m_refresh, 5, 3);
+    grid->setColumnMinimumWidth(0, fontMetrics().averageCharWidth() * 3);
+    grid->setColumnStretch(2, 1);
+
+    connect(m_kinds, &QButtonGroup::idClicked, this, [this](int id) { chooseKind(Kind(id)); });
+    connect(m_host, &QLineEdit::textEdited, this, &ConnectDialog::composeUrl);
+    connect(m_interface, &QComboBox::currentTextChanged, this, &ConnectDialog::composeUrl);
+    connect(m_refresh, &QPushButton::clicked, this, &ConnectDialog::refreshInterfaces);
+    return grid;
+}
+
+// The recent stations, newest first; choosing one fills the dialog with it.
+void ConnectDialog::createRecent() {
+    m_recent->clear();
+    m_recent->addItem(QString());
+    for (const QString& url : StationUrlSettings::recent()) {
+        const QString shown =
+            url.isEmpty() ? describeUrl(url) : describeUrl(url) + QStringLiteral(" — ") + url;
+        m_recent->addItem(shown, url);
+    }
+    m_recent->setEnabled(m_recent->count() > 1);
+    connect(m_recent, &QComboBox::activated, this, [this](int index) {
+        if (index > 0)
+            setUrl(m_recent->itemData(index).toString());
+    });
+}
+
+void ConnectDialog::refreshInterfaces() {
+    const QString typed = m_interface->currentText();
+    const bool wasSyncing = std::exchange(m_syncing, true);
+    m_interface->clear();
+    for (const transport::CanBusInterface& found : transport::CanBusTransport::availableInterfaces()) {
+        const QString name = found.plugin + QLatin1Char('/') + found.name;
+        m_interface->addItem(name, name);
+        if (!found.description.isEmpty())
+            m_interface->setItemData(m_interface->count() - 1, found.description, Qt::ToolTipRole);
+    }
+    m_interface->setCurrentText(typed.isEmpty() && m_interface->count() > 0 ? m_interface->itemText(0)
+                                                                            : typed);
+    m_syncing = wasSyncing;
+}
+
+QString ConnectDialog::url() const {
+    return m_simulated->isChecked() ? QString() : m_url->text().trimmed();
+}
+
+ConnectDialog::Kind ConnectDialog::kind() const {
+    return Kind(m_kinds->checkedId());
+}
+
+void ConnectDialog::setUrl(const QString& url) {
+    m_url->setText(url.trimmed());
+    if (url.trimmed().isEmpty())
+        chooseKind(Kind::Simulated);
+    else
+        readUrl();
+    check();
+}
+
+void ConnectDialog::accept() {
+    check();
+    if (!m_connect->isEnabled())
+        return;
+    StationUrlSettings::save(url());
+    QDialog::accept();
+}
+
+void ConnectDialog::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QDialog::changeEvent(event);
+}
+
+void ConnectDialog::retranslate() {
+    setWindowTitle(tr("Connect to a station"));
+    m_recentLabel->setText(tr("&Recent:"));
+    m_recent->setItemText(0, m_recent->count() > 1 ? tr("Choose a station used before…") : tr("None yet"));
+    m_simulated->setText(tr("&Simulated station (demo layout, no hardware needed)"));
+    m_udp->setText(tr("CS2 or CS3 over &UDP (the CAN gateway, ports 15731/15730)"));
+    m_tcp->setText(tr("CS2 or CS3 over &TCP (port 15731)"));
+    m_hostLabel->setText(tr("&Host:"));
+    m_can->setText(tr("CAN &interface (Gleisbox through a CAN adapter)"));
+    m_interfaceLabel->setText(tr("&Interface:"));
+    m_interface->lineEdit()->setPlaceholderText(tr("plugin/interface, e.g. socketcan/can0"));
+    m_refresh->setText(tr("&Look again"));
+    m_refresh->setToolTip(tr("List the CAN interfaces Qt's plugins find now"));
+    m_urlLabel->setText(tr("&Address:"));
+    m_examples->setText(tr("Examples:\n"
+                           "udp://192.168.2.5 — a CS2 with its CAN-UDP gateway switched on\n"
+                           "tcp://192.168.2.5 — a CS3, or a CS2 over TCP\n"
+                           "can://socketcan/can0 — a Gleisbox through a CAN adapter"));
+    m_connect->setText(tr("&Connect"));
+    check();
+}
+
+void ConnectDialog::chooseKind(Kind kind) {
+    m_kinds->button(int(kind))->setChecked(true);
+    composeUrl();
+}
+
+// The fields become the address; what only the address says (ports, bitrate) is kept.
+void ConnectDialog::composeUrl() {
+    if (m_syncing || kind() == Kind::Simulated) { // the address stays as it was, unused
+        check();
+        return;
+    }
+    const auto current = transport::parseTransportUrl(m_url->text().trimmed());
+    QString url;
+    switch (kind()) {
+    case Kind::Simulated:
+        break;
+    case Kind::Udp:
+        url = withHost<transport::UdpSettings>(current, m_host->text().trimmed(), QStringLiteral("udp://"));
+        break;
+    case Kind::Tcp:
+        url = withHost<transport::TcpSettings>(current, m_host->text().trimmed(), QStringLiteral("tcp://"));
+        break;
+    case Kind::CanBus:
+        url = QStringLiteral("can://") + m_interface->currentText().trimmed();
+        break;
+    }
+    const bool wasSyncing = std::exchange(m_syncing, true);
+    m_url->setText(url);
+    m_syncing = wasSyncing;
+    check();
+}
+
+// A typed or given address picks its kind and fills the fields.
+void ConnectDialog::readUrl() {
+    if (m_syncing)
+        return;
+    const auto parsed = transport::parseTransportUrl(m_url->text().trimmed());
+    if (!parsed)
+        return;
+    const bool wasSyncing = std::exchange(m_syncing, true);
+    if (const auto* udp = std::get_if<transport::UdpSettings>(&*parsed)) {
+        m_udp->setChecked(true);
+        m_host->setText(udp->host);
+    } else if (const auto* tcp = std::get_if<transport::TcpSettings>(&*parsed)) {
+        m_tcp->setChecked(true);
+        m_host->setText(tcp->host);
+    } else if (const auto* bus = std::get_if<transport::CanBusSettings>(&*parsed)) {
+        m_can->setChecked(true);
+        m_interface->setCurrentText(bus->plugin + QLatin1Char('/') + bus->interfaceName);
+    }
+    m_syncing = wasSyncing;
+    check();
+}
+
+// The address must be readable unless the simulated station is chosen; the reason is shown at once.
+void ConnectDialog::check() {
+    const Kind chosen = kind();
+    const bool simulated = chosen == Kind::Simulated;
+    m_url->setEnabled(!simulated);
+    m_host->setEnabled(chosen == Kind::Udp || chosen == Kind::Tcp);
+    m_interface->setEnabled(chosen == Kind::CanBus);
+    m_refresh->setEnabled(chosen == Kind::CanBus);
+    QString error;
+    if (!simulated) {
+        const QString text = m_url->text().trimmed();
+        if (text.isEmpty())
+            error = tr("Enter the station's address, or use the simulated station.");
+        else if (const auto parsed = transport::parseTransportUrl(text); !parsed)
+            error = tr("This address cannot be used: %1").arg(parsed.error());
+    }
+    m_error->setText(error);
+    m_error->setVisible(!error.isEmpty());
+    m_connect->setEnabled(error.isEmpty());
+}
+
+} // namespace stellwerk::ui

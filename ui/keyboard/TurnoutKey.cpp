@@ -1,0 +1,287 @@
+#include "keyboard/TurnoutKey.h"
+
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QMenu>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPixmap>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace stellwerk::ui {
+namespace {
+
+constexpr int KeyWidth = 150;
+constexpr int FaceHeight = 112;
+constexpr int ButtonRowHeight = 30;
+constexpr int MaxButtons = 4; // more positions go into a menu
+const QColor PendingAmber{0xe0, 0x9a, 0x1a};
+const QColor UnconfirmedRed{0xd0, 0x36, 0x36};
+
+QIcon colourChip(const QColor& colour) {
+    QPixmap pixmap(12, 12);
+    pixmap.fill(Qt::transparent);
+    QPainter painter(&pixmap);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setPen(QPen(QColor(0x20, 0x20, 0x20), 1));
+    painter.setBrush(colour);
+    painter.drawEllipse(QRectF(1, 1, 10, 10));
+    return QIcon(pixmap);
+}
+
+} // namespace
+
+TurnoutKey::TurnoutKey(QWidget* parent) : QWidget(parent) {
+    setObjectName(QStringLiteral("turnoutKey"));
+    setAttribute(Qt::WA_Hover);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(6, FaceHeight, 6, 6);
+    layout->setSpacing(0);
+    m_buttonRow = new QHBoxLayout;
+    m_buttonRow->setSpacing(3);
+    layout->addLayout(m_buttonRow);
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+}
+
+QSize TurnoutKey::sizeHint() const {
+    return {KeyWidth, FaceHeight + ButtonRowHeight + 6};
+}
+
+QSize TurnoutKey::minimumSizeHint() const {
+    return {KeyWidth - 30, FaceHeight + ButtonRowHeight + 6};
+}
+
+void TurnoutKey::setFace(const KeyFace& face) {
+    const bool otherButtons = face.address != m_face.address || face.role != m_face.role ||
+                              face.positions != m_face.positions || face.kind != m_face.kind;
+    m_face = face;
+    if (otherButtons)
+        rebuildButtons();
+    updateButtons();
+    setFocusPolicy(toggles() ? Qt::StrongFocus : Qt::NoFocus);
+    setCursor(toggles() ? Qt::PointingHandCursor : Qt::ArrowCursor);
+    updateToolTip();
+    update();
+}
+
+void TurnoutKey::setPending(bool pending) {
+    if (m_pending == pending)
+        return;
+    m_pending = pending;
+    updateToolTip();
+    update();
+}
+
+void TurnoutKey::setUnconfirmed(bool unconfirmed) {
+    if (m_unconfirmed == unconfirmed)
+        return;
+    m_unconfirmed = unconfirmed;
+    updateToolTip();
+    update();
+}
+
+bool TurnoutKey::toggles() const {
+    return m_face.role == KeyFace::Role::Article && m_face.positions.size() == 2;
+}
+
+QString TurnoutKey::positionText() const {
+    if (m_face.role == KeyFace::Role::PartOfArticle)
+        return tr("part of %1").arg(m_face.owner);
+    if (m_face.role == KeyFace::Role::Address && m_face.position < 0)
+        return tr("position unknown");
+    return AccessoryIcon::positionName(m_face.kind, m_face.position);
+}
+
+int TurnoutKey::nextPosition() const {
+    const QList<int>& positions = m_face.positions;
+    const qsizetype at = positions.indexOf(m_face.position);
+    return at < 0 ? positions.value(1, 1) : positions.at((at + 1) % positions.size());
+}
+
+void TurnoutKey::clearButtons() {
+    qDeleteAll(m_buttons);
+    m_buttons.clear();
+    delete m_menuButton;
+    m_menuButton = nullptr;
+}
+
+// A button per position (red/green for a plain number), a menu for more than four positions.
+void TurnoutKey::rebuildButtons() {
+    clearButtons();
+    const bool plain = m_face.role == KeyFace::Role::Address;
+    if (m_face.role == KeyFace::Role::PartOfArticle || (!plain && m_face.positions.size() <= 2))
+        return;
+    if (m_face.positions.size() > MaxButtons) {
+        m_menuButton = new QToolButton(this);
+        m_menuButton->setPopupMode(QToolButton::InstantPopup);
+        m_menuButton->setToolButtonStyle(Qt::ToolButtonTextOnly);
+        m_menuButton->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+        auto* menu = new QMenu(m_menuButton);
+        for (const int position : m_face.positions)
+            menu->addAction(AccessoryIcon::positionName(m_face.kind, position), this,
+                            [this, position] { emit switchRequested(m_face.address, position); });
+        m_menuButton->setMenu(menu);
+        m_buttonRow->addWidget(m_menuButton);
+        return;
+    }
+    for (const int position : m_face.positions) {
+        auto* button = new QToolButton(this);
+        button->setCheckable(true);
+        if (m_face.positions.size() <= 2) { // three or four names need the room
+            button->setIcon(colourChip(AccessoryIcon::positionColour(position)));
+            button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+        }
+        button->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+        button->setMinimumWidth(0);
+        connect(button, &QToolButton::clicked, this, [this, position] {
+            updateButtons(); // the check mark follows the station, not the click
+            emit switchRequested(m_face.address, position);
+        });
+        m_buttonRow->addWidget(button);
+        m_buttons.push_back(button);
+    }
+}
+
+void TurnoutKey::updateButtons() {
+    for (qsizetype i = 0; i < m_buttons.size(); ++i) {
+        const int position = m_face.positions.value(i);
+        const QString name = AccessoryIcon::positionName(m_face.kind, position);
+        // Four buttons share a key: their text is the short name, the tooltip the full one.
+        m_buttons[i]->setText(m_face.positions.size() > 2 ? name.section(QLatin1Char(','), 0, 0) : name);
+        m_buttons[i]->setToolTip(tr("Switch %1 to %2").arg(m_face.address).arg(name));
+        m_buttons[i]->setChecked(position == m_face.position);
+    }
+    if (m_menuButton) {
+        m_menuButton->setText(tr("Position…"));
+        const QList<QAction*> actions = m_menuButton->menu()->actions();
+        for (qsizetype i = 0; i < actions.size(); ++i)
+            actions[i]->setText(AccessoryIcon::positionName(m_face.kind, m_face.positions.value(i)));
+    }
+}
+
+void TurnoutKey::updateToolTip() {
+    QString text;
+    switch (m_face.role) {
+    case KeyFace::Role::Article:
+        text = tr("%1 (%2), address %3: %4")
+                   .arg(m_face.name, m_face.type)
+                   .arg(m_face.address)
+                   .arg(positionText());
+        break;
+    case KeyFace::Role::Address:
+        text = tr("Address %1 has no article; it switches as an MM2 address").arg(m_face.address);
+        break;
+    case KeyFace::Role::PartOfArticle:
+        text = tr("Address %1 belongs to %2, which starts on %3")
+                   .arg(m_face.address)
+                   .arg(m_face.ownerName)
+                   .arg(m_face.owner);
+        break;
+    }
+    setAccessibleName(text);
+    if (m_pending)
+        text += QLatin1Char('\n') + tr("Switching: waiting for the station to confirm");
+    else if (m_unconfirmed)
+        text += QLatin1Char('\n') + tr("The station did not confirm the last switching");
+    setToolTip(text);
+}
+
+QRectF TurnoutKey::faceRect() const {
+    return QRectF(rect()).adjusted(1.5, 1.5, -1.5, -1.5);
+}
+
+QColor TurnoutKey::frameColour() const {
+    if (m_pending)
+        return PendingAmber;
+    if (m_unconfirmed)
+        return UnconfirmedRed;
+    if (hasFocus())
+        return palette().color(QPalette::Highlight);
+    return palette().color(QPalette::Mid);
+}
+
+void TurnoutKey::paintEvent(QPaintEvent*) {
+    QPainter painter(this);
+    painter.setRenderHint(QPainter::Antialiasing);
+    const QRectF face = faceRect();
+    const bool part = m_face.role == KeyFace::Role::PartOfArticle;
+    QColor background = palette().color(part ? QPalette::Window : QPalette::Button);
+    if (toggles() && underMouse())
+        background = background.lighter(palette().color(QPalette::Window).lightness() < 128 ? 130 : 106);
+    QPen frame(frameColour(), m_pending || m_unconfirmed ? 3 : 1);
+    if (m_unconfirmed && !m_pending)
+        frame.setStyle(Qt::DashLine);
+    painter.setPen(frame);
+    painter.setBrush(background);
+    painter.drawRoundedRect(face, 6, 6);
+    if (part || !isEnabled()) // greyed: part of another article, or a position nobody vouches for now
+        painter.setOpacity(0.45);
+    const int iconSize = m_buttons.isEmpty() && !m_menuButton ? 66 : 54;
+    const QRectF icon(face.center().x() - iconSize / 2.0, face.top() + 20, iconSize, iconSize);
+    AccessoryIcon::paint(painter, icon, m_face.kind, part ? -1 : m_face.position, palette());
+    painter.setOpacity(1);
+    paintTexts(painter, face);
+}
+
+// The number top left, a mark top right while switching, name and position at the bottom of the face.
+void TurnoutKey::paintTexts(QPainter& painter, const QRectF& face) const {
+    QFont bold = font();
+    bold.setBold(true);
+    painter.setFont(bold);
+    painter.setPen(palette().color(QPalette::ButtonText));
+    const QRectF top(face.left() + 7, face.top() + 3, face.width() - 14, 18);
+    painter.drawText(top, Qt::AlignLeft | Qt::AlignVCenter, QString::number(m_face.address));
+    if (m_pending || m_unconfirmed) {
+        painter.setPen(m_pending ? PendingAmber : UnconfirmedRed);
+        painter.drawText(top, Qt::AlignRight | Qt::AlignVCenter,
+                         m_pending ? QStringLiteral("…") : QStringLiteral("!"));
+    }
+    const bool buttons = !m_buttons.isEmpty() || m_menuButton;
+    const double textTop = buttons ? face.top() + FaceHeight - 38 : face.bottom() - 40;
+    const QRectF nameRect(face.left() + 6, textTop, face.width() - 12, 18);
+    const QString name = m_face.role == KeyFace::Role::Address         ? tr("no article")
+                         : m_face.role == KeyFace::Role::PartOfArticle ? m_face.ownerName
+                                                                       : m_face.name;
+    painter.setFont(m_face.role == KeyFace::Role::Article ? bold : font());
+    painter.setPen(palette().color(m_face.role == KeyFace::Role::Article ? QPalette::ButtonText
+                                                                         : QPalette::PlaceholderText));
+    painter.drawText(nameRect, Qt::AlignCenter,
+                     painter.fontMetrics().elidedText(name, Qt::ElideRight, int(nameRect.width())));
+    painter.setFont(font());
+    QColor positionColour = palette().color(QPalette::PlaceholderText);
+    if (m_face.role != KeyFace::Role::PartOfArticle && m_face.position >= 0)
+        positionColour = palette().color(QPalette::ButtonText);
+    painter.setPen(positionColour);
+    painter.drawText(nameRect.translated(0, 17), Qt::AlignCenter, positionText());
+}
+
+void TurnoutKey::mouseReleaseEvent(QMouseEvent* event) {
+    if (event->button() == Qt::LeftButton && toggles() && rect().contains(event->position().toPoint())) {
+        emit switchRequested(m_face.address, nextPosition());
+        event->accept();
+        return;
+    }
+    QWidget::mouseReleaseEvent(event);
+}
+
+// Enter switches a focused key; Space is not used: in the main window it stops the whole layout.
+void TurnoutKey::keyPressEvent(QKeyEvent* event) {
+    if (toggles() && (event->key() == Qt::Key_Return || event->key() == Qt::Key_Enter)) {
+        emit switchRequested(m_face.address, nextPosition());
+        return;
+    }
+    QWidget::keyPressEvent(event);
+}
+
+void TurnoutKey::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) {
+        updateButtons();
+        updateToolTip();
+        update();
+    }
+    QWidget::changeEvent(event);
+}
+
+} // namespace stellwerk::ui

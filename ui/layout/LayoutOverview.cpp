@@ -1,0 +1,100 @@
+#include "layout/LayoutOverview.h"
+
+#include "common/LocomotiveTableModel.h"
+#include "common/PowerStatus.h"
+#include "layout/ContactTableModel.h"
+#include "model/Railway.h"
+
+#include <QEvent>
+#include <QGroupBox>
+#include <QHeaderView>
+#include <QSplitter>
+#include <QTableView>
+#include <QVBoxLayout>
+
+namespace stellwerk::ui {
+
+LayoutOverview::LayoutOverview(QWidget* parent)
+    : QWidget(parent), locomotives_(new LocomotiveTableModel(this)), contacts_(new ContactTableModel(this)),
+      power_(new PowerStatus(this)), locomotiveView_(tableView(QStringLiteral("locomotiveTable"))),
+      contactView_(tableView(QStringLiteral("contactTable"))) {
+    setObjectName(QStringLiteral("layoutOverview"));
+    locomotiveView_->setModel(locomotives_);
+    contactView_->setModel(contacts_);
+    auto* tables = new QSplitter(Qt::Horizontal, this);
+    locomotiveBox_ = tableBox(locomotiveView_, QStringLiteral("locomotiveBox"));
+    contactBox_ = tableBox(contactView_, QStringLiteral("contactBox"));
+    tables->addWidget(locomotiveBox_);
+    tables->addWidget(contactBox_);
+    tables->setStretchFactor(0, 3);
+    tables->setStretchFactor(1, 2);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(power_);
+    layout->addWidget(tables, 1);
+    retranslate();
+}
+
+// A table that is read, not edited: whole rows, no row numbers, columns as wide as their contents.
+QTableView* LayoutOverview::tableView(const QString& objectName) {
+    auto* view = new QTableView(this);
+    view->setObjectName(objectName);
+    view->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    view->setAlternatingRowColors(true);
+    view->setShowGrid(false);
+    view->setWordWrap(false);
+    view->verticalHeader()->hide();
+    view->horizontalHeader()->setStretchLastSection(true);
+    view->horizontalHeader()->setHighlightSections(false);
+    return view;
+}
+
+QGroupBox* LayoutOverview::tableBox(QTableView* view, const QString& objectName) {
+    auto* box = new QGroupBox(this);
+    box->setObjectName(objectName);
+    auto* layout = new QVBoxLayout(box);
+    layout->addWidget(view);
+    return box;
+}
+
+void LayoutOverview::setRailway(const model::Railway* railway) {
+    if (railway_)
+        disconnect(railway_, nullptr, this, nullptr);
+    railway_ = railway;
+    locomotives_->setRailway(railway);
+    contacts_->setRailway(railway);
+    if (railway_) {
+        connect(railway_, &model::Railway::loaded, this, &LayoutOverview::fitColumns);
+        // "(not reported)" comes and goes
+        connect(railway_, &model::Railway::stateReportedChanged, this, &LayoutOverview::fitColumns);
+        connect(railway_, &QObject::destroyed, this, [this] { setRailway(nullptr); });
+    }
+    power_->setRailway(railway);
+}
+
+QString LayoutOverview::powerText() const {
+    return power_->text();
+}
+
+void LayoutOverview::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void LayoutOverview::retranslate() {
+    locomotiveBox_->setTitle(tr("Locomotives"));
+    contactBox_->setTitle(tr("Feedback contacts"));
+    locomotives_->retranslate();
+    contacts_->retranslate();
+    fitColumns(); // headers and texts of another language have other widths
+}
+
+// Every column but the last, which stretches over the rest.
+void LayoutOverview::fitColumns() {
+    for (QTableView* view : {locomotiveView_, contactView_})
+        for (int column = 0; column + 1 < view->model()->columnCount(); ++column)
+            view->resizeColumnToContents(column);
+}
+
+} // namespace stellwerk::ui

@@ -1,0 +1,131 @@
+#include "locomotives/LocomotiveFileModel.h"
+
+#include <algorithm>
+
+namespace stellwerk::ui {
+
+using cs2config::LocomotiveDecoder;
+
+LocomotiveFileModel::LocomotiveFileModel(QObject* parent) : QAbstractTableModel(parent) {}
+
+void LocomotiveFileModel::show(const cs2config::LocomotiveEditor* editor) {
+    beginResetModel();
+    m_editor = editor;
+    m_rows.clear();
+    if (m_editor)
+        for (std::size_t i = 0; i < m_editor->locomotives().size(); ++i)
+            if (!m_editor->locomotives()[i].isEmpty())
+                m_rows.push_back(i);
+    endResetModel();
+}
+
+std::optional<int> LocomotiveFileModel::rowOf(std::size_t fileIndex) const {
+    for (std::size_t row = 0; row < m_rows.size(); ++row)
+        if (m_rows[row] == fileIndex)
+            return int(row);
+    return std::nullopt;
+}
+
+void LocomotiveFileModel::retranslate() {
+    emit headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
+    if (rowCount() > 0)
+        emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1), {Qt::DisplayRole});
+}
+
+int LocomotiveFileModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : int(m_rows.size());
+}
+
+int LocomotiveFileModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant LocomotiveFileModel::data(const QModelIndex& index, int role) const {
+    if (!m_editor || !index.isValid() || index.row() >= rowCount())
+        return {};
+    const cs2config::Locomotive& locomotive = m_editor->locomotives()[fileIndex(index.row())];
+    if (role == Qt::DisplayRole)
+        return text(locomotive, index.column());
+    if (role == Qt::TextAlignmentRole && index.column() == Functions)
+        return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+    return {};
+}
+
+QString LocomotiveFileModel::text(const cs2config::Locomotive& locomotive, int column) const {
+    switch (column) {
+    case Name:
+        return QString::fromStdString(locomotive.name);
+    case Address:
+        return addressText(locomotive);
+    case Decoder:
+        return locomotive.decoder == LocomotiveDecoder::Unknown
+                   ? QString::fromStdString(locomotive.decoderText)
+                   : decoderText(locomotive.decoder);
+    case Icon:
+        return locomotive.icon.empty() ? QStringLiteral("–") : QString::fromStdString(locomotive.icon);
+    case Functions: // keys with an icon: stations write a block for every key, used or not
+        return QString::number(std::ranges::count_if(
+            locomotive.functions, [](const cs2config::Function& f) { return f.icon != 0; }));
+    }
+    return {};
+}
+
+QVariant LocomotiveFileModel::headerData(int section, Qt::Orientation orientation, int role) const {
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return QAbstractTableModel::headerData(section, orientation, role);
+    switch (section) {
+    case Name:
+        return tr("Name");
+    case Address:
+        return tr("Address");
+    case Decoder:
+        return tr("Decoder");
+    case Icon:
+        return tr("Icon");
+    case Functions:
+        return tr("Functions");
+    }
+    return {};
+}
+
+QString LocomotiveFileModel::decoderText(LocomotiveDecoder decoder) {
+    switch (decoder) {
+    case LocomotiveDecoder::Mm2Prg:
+        return tr("MM2 (programmable)");
+    case LocomotiveDecoder::Mm2Dil8:
+        return tr("MM2 (DIL switches)");
+    case LocomotiveDecoder::MmPrg:
+        return tr("MM (programmable)");
+    case LocomotiveDecoder::Mmm2Lok:
+        return tr("MM2 (mLD/mSD)");
+    case LocomotiveDecoder::Dcc:
+        return tr("DCC");
+    case LocomotiveDecoder::Mfx:
+        return tr("mfx");
+    case LocomotiveDecoder::Sx1:
+        return tr("SX1");
+    case LocomotiveDecoder::None:
+    case LocomotiveDecoder::Unknown:
+        break;
+    }
+    return tr("none");
+}
+
+QString LocomotiveFileModel::addressText(const cs2config::Locomotive& locomotive) {
+    const cs2config::LocomotiveSettings settings = cs2config::LocomotiveSettings::of(locomotive);
+    switch (locomotive.decoder) {
+    case LocomotiveDecoder::Dcc:
+        return tr("DCC %1").arg(settings.address);
+    case LocomotiveDecoder::Mfx:
+        return tr("mfx SID %1").arg(settings.address);
+    case LocomotiveDecoder::Sx1:
+        return tr("SX1 %1").arg(settings.address);
+    case LocomotiveDecoder::None:
+    case LocomotiveDecoder::Unknown:
+        return QString::number(settings.address);
+    default:
+        return tr("MM2 %1").arg(settings.address);
+    }
+}
+
+} // namespace stellwerk::ui

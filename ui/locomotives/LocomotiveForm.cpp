@@ -1,0 +1,175 @@
+#include "locomotives/LocomotiveForm.h"
+
+#include "locomotives/LocomotiveFileModel.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace stellwerk::ui {
+
+namespace {
+
+using cs2config::FunctionTrigger;
+using cs2config::LocomotiveDecoder;
+
+constexpr LocomotiveDecoder Decoders[] = {LocomotiveDecoder::Mfx,     LocomotiveDecoder::Mm2Prg,
+                                          LocomotiveDecoder::Mm2Dil8, LocomotiveDecoder::Mmm2Lok,
+                                          LocomotiveDecoder::MmPrg,   LocomotiveDecoder::Dcc,
+                                          LocomotiveDecoder::Sx1};
+// Unknown: a `..dauer` value the file holds and Stellwerk does not understand; kept as it is.
+constexpr FunctionTrigger Triggers[] = {FunctionTrigger::Latching, FunctionTrigger::Momentary,
+                                        FunctionTrigger::Timed, FunctionTrigger::Unknown};
+enum FunctionColumn { IconColumn, TriggerColumn, DurationColumn, FunctionColumns };
+constexpr int MaxAddress = 0x3FFF;
+
+} // namespace
+
+LocomotiveForm::LocomotiveForm(QWidget* parent)
+    : QWidget(parent), m_form(new QFormLayout), m_name(new QLineEdit(this)), m_decoder(new QComboBox(this)),
+      m_address(new QSpinBox(this)), m_addressRange(new QLabel(this)), m_nameLabel(new QLabel(this)),
+      m_decoderLabel(new QLabel(this)), m_addressLabel(new QLabel(this)),
+      m_functions(new QTableWidget(cs2config::LocomotiveEditor::MaxFunctions, FunctionColumns, this)) {
+    setObjectName(QStringLiteral("locomotiveForm"));
+    m_name->setObjectName(QStringLiteral("locomotiveName"));
+    m_decoder->setObjectName(QStringLiteral("locomotiveDecoder"));
+    m_address->setObjectName(QStringLiteral("locomotiveAddress"));
+    m_functions->setObjectName(QStringLiteral("locomotiveFunctions"));
+    for (const LocomotiveDecoder decoder : Decoders)
+        m_decoder->addItem(QString(), int(decoder));
+    m_address->setRange(0, MaxAddress); // wider than any decoder: the editor explains what is allowed
+    m_addressRange->setEnabled(false);
+    auto* address = new QHBoxLayout;
+    address->addWidget(m_address);
+    address->addWidget(m_addressRange, 1);
+    m_form->addRow(m_nameLabel, m_name);
+    m_form->addRow(m_decoderLabel, m_decoder);
+    m_form->addRow(m_addressLabel, address);
+    buildFunctionRows();
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addLayout(m_form);
+    layout->addWidget(m_functions, 1);
+    connect(m_name, &QLineEdit::textEdited, this, &LocomotiveForm::edited);
+    connect(m_decoder, &QComboBox::currentIndexChanged, this, [this] {
+        showAddressRange();
+        emit edited();
+    });
+    connect(m_address, &QSpinBox::valueChanged, this, &LocomotiveForm::edited);
+    retranslate();
+}
+
+void LocomotiveForm::buildFunctionRows() {
+    m_functions->setSelectionMode(QAbstractItemView::NoSelection);
+    m_functions->setFocusPolicy(Qt::NoFocus);
+    m_functions->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_functions->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    for (int row = 0; row < m_functions->rowCount(); ++row) {
+        m_functions->setVerticalHeaderItem(row, new QTableWidgetItem(QStringLiteral("F%1").arg(row)));
+        auto* icon = new QSpinBox(m_functions);
+        icon->setRange(0, cs2config::LocomotiveEditor::MaxIcon);
+        auto* trigger = new QComboBox(m_functions);
+        for (const FunctionTrigger kind : Triggers)
+            trigger->addItem(QString(), int(kind));
+        auto* duration = new QSpinBox(m_functions);
+        duration->setRange(0, cs2config::LocomotiveEditor::MaxDuration);
+        m_functions->setCellWidget(row, IconColumn, icon);
+        m_functions->setCellWidget(row, TriggerColumn, trigger);
+        m_functions->setCellWidget(row, DurationColumn, duration);
+        connect(icon, &QSpinBox::valueChanged, this, &LocomotiveForm::edited);
+        connect(duration, &QSpinBox::valueChanged, this, &LocomotiveForm::edited);
+        connect(trigger, &QComboBox::currentIndexChanged, this, [this, row] {
+            updateDuration(row);
+            emit edited();
+        });
+        updateDuration(row);
+    }
+}
+
+QSpinBox* LocomotiveForm::iconBox(int function) const {
+    return qobject_cast<QSpinBox*>(m_functions->cellWidget(function, IconColumn));
+}
+
+QComboBox* LocomotiveForm::triggerBox(int function) const {
+    return qobject_cast<QComboBox*>(m_functions->cellWidget(function, TriggerColumn));
+}
+
+QSpinBox* LocomotiveForm::durationBox(int function) const {
+    return qobject_cast<QSpinBox*>(m_functions->cellWidget(function, DurationColumn));
+}
+
+// The time only means something for a timed key; a new timed key starts at 1.
+void LocomotiveForm::updateDuration(int function) {
+    const bool timed = triggerBox(function)->currentData().toInt() == int(FunctionTrigger::Timed);
+    QSpinBox* duration = durationBox(function);
+    duration->setEnabled(timed);
+    if (timed && duration->value() == 0)
+        duration->setValue(1);
+}
+
+void LocomotiveForm::setSettings(const cs2config::LocomotiveSettings& settings) {
+    const QSignalBlocker blockName(m_name), blockDecoder(m_decoder), blockAddress(m_address);
+    m_name->setText(QString::fromStdString(settings.name));
+    m_decoder->setCurrentIndex(m_decoder->findData(int(settings.decoder)));
+    m_address->setValue(int(settings.address));
+    for (int row = 0; row < m_functions->rowCount(); ++row) {
+        cs2config::FunctionSetting function{row, 0, FunctionTrigger::Latching, 0};
+        for (const cs2config::FunctionSetting& given : settings.functions)
+            if (given.number == row)
+                function = given;
+        const QSignalBlocker blockIcon(iconBox(row)), blockTrigger(triggerBox(row)),
+            blockDuration(durationBox(row));
+        iconBox(row)->setValue(function.icon);
+        const int trigger = triggerBox(row)->findData(int(function.trigger));
+        triggerBox(row)->setCurrentIndex(trigger < 0 ? 0 : trigger);
+        durationBox(row)->setValue(function.duration);
+        updateDuration(row);
+    }
+    showAddressRange();
+}
+
+cs2config::LocomotiveSettings LocomotiveForm::settings() const {
+    cs2config::LocomotiveSettings settings;
+    settings.name = m_name->text().toStdString();
+    settings.decoder = m_decoder->currentIndex() < 0 ? LocomotiveDecoder::None
+                                                     : LocomotiveDecoder(m_decoder->currentData().toInt());
+    settings.address = std::uint32_t(m_address->value());
+    for (int row = 0; row < m_functions->rowCount(); ++row) {
+        const auto trigger = FunctionTrigger(triggerBox(row)->currentData().toInt());
+        settings.functions.push_back({row, iconBox(row)->value(), trigger,
+                                      trigger == FunctionTrigger::Timed ? durationBox(row)->value() : 0});
+    }
+    return settings;
+}
+
+void LocomotiveForm::showAddressRange() {
+    const auto range = cs2config::addressRange(LocomotiveDecoder(m_decoder->currentData().toInt()));
+    m_addressRange->setText(range ? tr("allowed: %1–%2").arg(range->minimum).arg(range->maximum) : QString());
+}
+
+void LocomotiveForm::retranslate() {
+    m_nameLabel->setText(tr("Name:"));
+    m_decoderLabel->setText(tr("Decoder:"));
+    m_addressLabel->setText(tr("Address:"));
+    for (int i = 0; i < m_decoder->count(); ++i)
+        m_decoder->setItemText(
+            i, LocomotiveFileModel::decoderText(LocomotiveDecoder(m_decoder->itemData(i).toInt())));
+    m_functions->setHorizontalHeaderLabels({tr("Icon"), tr("Trigger"), tr("Time")});
+    for (int row = 0; row < m_functions->rowCount(); ++row) {
+        QComboBox* trigger = triggerBox(row);
+        trigger->setItemText(0, tr("latching"));
+        trigger->setItemText(1, tr("momentary"));
+        trigger->setItemText(2, tr("timed"));
+        trigger->setItemText(3, tr("as in the file"));
+        iconBox(row)->setSpecialValueText(tr("none"));
+        durationBox(row)->setSpecialValueText(QStringLiteral("–"));
+    }
+    showAddressRange();
+}
+
+} // namespace stellwerk::ui

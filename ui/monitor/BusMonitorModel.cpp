@@ -1,0 +1,285 @@
+#include "monitor/BusMonitorModel.h"
+
+#include "cs2/Fields.h"
+#include "cs2/FrameReport.h"
+
+#include <QColor>
+#include <QGuiApplication>
+#include <QPalette>
+#include <QTimer>
+#include <algorithm>
+#include <cctype>
+#include <string_view>
+
+namespace stellwerk::ui {
+namespace {
+
+// The group of a command, from the first word of its name in the core's vocabulary ("loco.speed").
+BusMonitorModel::Group groupOf(std::string_view name) {
+    using Group = BusMonitorModel::Group;
+    const std::string_view word = name.substr(0, name.find('.'));
+    if (word == "system" || word == "ping")
+        return Group::System;
+    if (word == "loco" || word == "mfx" || word == "config")
+        return Group::Loco;
+    if (word == "accessory" || word == "automation")
+        return Group::Accessory;
+    if (word == "feedback")
+        return Group::Feedback;
+    if (word == "configdata" || word == "statusdata" || word == "connect6021")
+        return Group::Stream;
+    return Group::Other;
+}
+
+// A light tint of the group's hue over the palette's base colour: the text colour of the palette
+// stays readable on it in light and dark themes alike.
+QColor tint(BusMonitorModel::Group group) {
+    static constexpr int hues[] = {50, 210, 280, 120, 180, -1}; // system yellow, loco blue, ...
+    const int hue = hues[int(group)];
+    const QColor base = QGuiApplication::palette().color(QPalette::Base);
+    if (hue < 0)
+        return base;
+    const QColor colour = QColor::fromHsv(hue, 200, 230);
+    constexpr double share = 0.16;
+    return QColor::fromRgbF(float(base.redF() * (1 - share) + colour.redF() * share),
+                            float(base.greenF() * (1 - share) + colour.greenF() * share),
+                            float(base.blueF() * (1 - share) + colour.blueF() * share));
+}
+
+bool darkPalette() {
+    return QGuiApplication::palette().color(QPalette::Base).lightness() < 128;
+}
+
+// Sent rows in orange, received ones in blue, dark on light themes and light on dark ones.
+QColor directionColour(BusMonitorModel::Direction direction) {
+    const bool sent = direction == BusMonitorModel::Direction::Sent;
+    if (darkPalette())
+        return sent ? QColor::fromHsv(28, 150, 255) : QColor::fromHsv(205, 110, 255);
+    return sent ? QColor::fromHsv(24, 255, 180) : QColor::fromHsv(210, 255, 160);
+}
+
+can::CanFrame frameOf(std::uint32_t id, std::uint8_t dlc, const std::array<std::uint8_t, 8>& data) {
+    can::CanFrame frame;
+    frame.id = id;
+    frame.dlc = dlc;
+    frame.data = data;
+    return frame;
+}
+
+} // namespace
+
+BusMonitorModel::BusMonitorModel(QObject* parent)
+    : QAbstractTableModel(parent), m_flushTimer(new QTimer(this)) {
+    m_flushTimer->setSingleShot(true);
+    m_flushTimer->setInterval(FlushIntervalMs);
+    connect(m_flushTimer, &QTimer::timeout, this, &BusMonitorModel::flush);
+}
+
+BusMonitorModel::Record BusMonitorModel::record(const can::CanFrame& frame, Direction direction,
+                                                qint64 timeMs) {
+    return Record{timeMs, frame.id, frame.dlc, direction, frame.data};
+}
+
+void BusMonitorModel::addFrames(std::span<const can::CanFrame> frames, Direction direction) {
+    addFrames(frames, direction, QDateTime::currentDateTime());
+}
+
+void BusMonitorModel::addFrames(std::span<const can::CanFrame> frames, Direction direction,
+                                const QDateTime& time) {
+    if (frames.empty())
+        return;
+    const qint64 timeMs = time.toMSecsSinceEpoch();
+    for (const can::CanFrame& frame : frames)
+        m_queued.push_back(record(frame, direction, timeMs));
+    // Never hold more than the table could show: the oldest queued frames would be dropped anyway.
+    const auto limit = std::size_t(m_historyLimit);
+    if (m_queued.size() > limit)
+        m_queued.erase(m_queued.begin(), m_queued.begin() + std::ptrdiff_t(m_queued.size() - limit));
+    m_total += frames.size();
+    if (m_paused)
+        m_heldBack += frames.size();
+    if (!m_flushTimer->isActive())
+        m_flushTimer->start();
+}
+
+void BusMonitorModel::flush() {
+    m_flushTimer->stop();
+    if (m_paused) {
+        emit countsChanged();
+        return;
+    }
+    if (m_queued.empty())
+        return;
+    const auto limit = std::size_t(m_historyLimit);
+    const std::size_t incoming = m_queued.size(); // at most `limit`, see addFrames()
+    if (m_rows.size() + incoming > limit)
+        dropOldest(m_rows.size() + incoming - limit);
+    const int first = int(m_rows.size());
+    beginInsertRows({}, first, first + int(incoming) - 1);
+    m_rows.insert(m_rows.end(), m_queued.begin(), m_queued.end());
+    endInsertRows();
+    m_queued.clear();
+    emit countsChanged();
+}
+
+void BusMonitorModel::dropOldest(std::size_t count) {
+    count = std::min(count, m_rows.size());
+    if (count == 0)
+        return;
+    beginRemoveRows({}, 0, int(count) - 1);
+    m_rows.erase(m_rows.begin(), m_rows.begin() + std::ptrdiff_t(count));
+    m_dropped += count;
+    endRemoveRows();
+}
+
+void BusMonitorModel::setHistoryLimit(int rows) {
+    m_historyLimit = std::max(1, rows);
+    const auto limit = std::size_t(m_historyLimit);
+    if (m_rows.size() > limit)
+        dropOldest(m_rows.size() - limit);
+    if (m_queued.size() > limit)
+        m_queued.erase(m_queued.begin(), m_queued.begin() + std::ptrdiff_t(m_queued.size() - limit));
+}
+
+void BusMonitorModel::setPaused(bool paused) {
+    if (paused == m_paused)
+        return;
+    m_paused = paused;
+    m_heldBack = 0;
+    if (!m_paused)
+        flush();
+    emit countsChanged();
+}
+
+void BusMonitorModel::clear() {
+    beginResetModel();
+    m_rows.clear();
+    m_rows.shrink_to_fit();
+    m_queued.clear();
+    m_dropped = 0;
+    endResetModel();
+    m_total = 0;
+    m_heldBack = 0;
+    emit countsChanged();
+}
+
+can::CanFrame BusMonitorModel::frameAt(int row) const {
+    const Record& r = m_rows.at(std::size_t(row));
+    return frameOf(r.id, r.dlc, r.data);
+}
+
+QDateTime BusMonitorModel::timeAt(int row) const {
+    return QDateTime::fromMSecsSinceEpoch(m_rows.at(std::size_t(row)).timeMs);
+}
+
+BusMonitorModel::Direction BusMonitorModel::directionAt(int row) const {
+    return m_rows.at(std::size_t(row)).direction;
+}
+
+std::string_view BusMonitorModel::commandAt(int row) const {
+    const Record& r = m_rows.at(std::size_t(row));
+    return cs2::intendedName(frameOf(r.id, r.dlc, r.data));
+}
+
+bool BusMonitorModel::containsText(int row, std::string_view lowerNeedle) const {
+    const Record& r = m_rows.at(std::size_t(row));
+    const cs2::FrameReport report(frameOf(r.id, r.dlc, r.data));
+    const auto contains = [lowerNeedle](std::string_view text) {
+        const auto equal = [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; };
+        return std::search(text.begin(), text.end(), lowerNeedle.begin(), lowerNeedle.end(), equal) !=
+               text.end();
+    };
+    return contains(report.name()) || contains(report.detailText()) || contains(report.frameText());
+}
+
+std::optional<std::uint32_t> BusMonitorModel::locIdAt(int row) const {
+    const Record& r = m_rows.at(std::size_t(row));
+    const cs2::DecodeResult decoded = cs2::decode(frameOf(r.id, r.dlc, r.data));
+    if (!decoded)
+        return std::nullopt;
+    for (const cs2::Field& field : cs2::describe(decoded.value()))
+        if (field.key == "locId")
+            return std::uint32_t(field.number);
+    return std::nullopt;
+}
+
+int BusMonitorModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : int(m_rows.size());
+}
+
+int BusMonitorModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant BusMonitorModel::data(const QModelIndex& index, int role) const {
+    if (!index.isValid() || index.row() >= int(m_rows.size()))
+        return {};
+    const Record& r = m_rows[std::size_t(index.row())];
+    switch (role) {
+    case Qt::DisplayRole:
+        return display(r, index.column());
+    case Qt::ToolTipRole:
+        return index.column() == DetailsColumn ? display(r, index.column()) : QVariant();
+    case Qt::ForegroundRole:
+        return index.column() == DirectionColumn ? directionColour(r.direction) : QVariant();
+    case Qt::BackgroundRole:
+        return tint(groupOf(cs2::intendedName(frameOf(r.id, r.dlc, r.data))));
+    case GroupRole:
+        return int(groupOf(cs2::intendedName(frameOf(r.id, r.dlc, r.data))));
+    case CommandRole: {
+        const std::string_view name = cs2::intendedName(frameOf(r.id, r.dlc, r.data));
+        return QString::fromLatin1(name.data(), qsizetype(name.size()));
+    }
+    case LocIdRole: {
+        const auto locId = locIdAt(index.row());
+        return locId ? QVariant::fromValue(uint(*locId)) : QVariant();
+    }
+    case SearchTextRole: {
+        const cs2::FrameReport report(frameOf(r.id, r.dlc, r.data));
+        return QString::fromStdString(std::string(report.name()) + ' ' + report.detailText() + ' ' +
+                                      report.frameText());
+    }
+    default:
+        return {};
+    }
+}
+
+QVariant BusMonitorModel::display(const Record& r, int column) const {
+    switch (column) {
+    case TimeColumn:
+        return QDateTime::fromMSecsSinceEpoch(r.timeMs).toString(QStringLiteral("HH:mm:ss.zzz"));
+    case DirectionColumn:
+        return r.direction == Direction::Received ? tr("← received") : tr("→ sent");
+    case MessageColumn: {
+        const cs2::FrameReport report(frameOf(r.id, r.dlc, r.data));
+        return QString::fromUtf8(report.name().data(), qsizetype(report.name().size()));
+    }
+    case DetailsColumn:
+        return QString::fromStdString(cs2::FrameReport(frameOf(r.id, r.dlc, r.data)).detailText());
+    case FrameColumn:
+        return QString::fromStdString(cs2::FrameReport(frameOf(r.id, r.dlc, r.data)).frameText());
+    default:
+        return {};
+    }
+}
+
+QVariant BusMonitorModel::headerData(int section, Qt::Orientation orientation, int role) const {
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case TimeColumn:
+        return tr("Time");
+    case DirectionColumn:
+        return tr("Direction");
+    case MessageColumn:
+        return tr("Message");
+    case DetailsColumn:
+        return tr("Details");
+    case FrameColumn:
+        return tr("Frame");
+    default:
+        return {};
+    }
+}
+
+} // namespace stellwerk::ui

@@ -1,0 +1,554 @@
+#include "programming/ProgrammingPanel.h"
+
+#include "model/Railway.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QEvent>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace stellwerk::ui {
+
+namespace {
+
+using Outcome = model::ProgrammingResult::Outcome;
+using Problem = model::ProgrammingResult::Problem;
+using Task = model::ProgrammingResult::Task;
+
+constexpr cs2::Protocol Protocols[] = {cs2::Protocol::Mfx, cs2::Protocol::Dcc, cs2::Protocol::Mm2,
+                                       cs2::Protocol::Sx1};
+constexpr int MaxAddress = 0x3FFF;
+constexpr int MaxSid = 0x3FFF;
+enum Label {
+    LocomotiveLabel,
+    DecoderLabel,
+    CvLabel,
+    IndexLabel,
+    ValueLabel,
+    TrackLabel,
+    ModeLabel,
+    BitLabel,
+    LabelCount
+};
+
+QString uidText(std::uint32_t uid) {
+    return QStringLiteral("0x%1").arg(uid, 8, 16, QLatin1Char('0'));
+}
+
+template <class T>
+T* named(T* widget, const char* name) {
+    widget->setObjectName(QLatin1String(name));
+    return widget;
+}
+
+} // namespace
+
+ProgrammingPanel::ProgrammingPanel(QWidget* parent) : QWidget(parent) {
+    setObjectName(QStringLiteral("programmingPanel"));
+    auto* layout = new QHBoxLayout(this);
+    layout->addWidget(buildRegistration(), 1);
+    layout->addWidget(buildCvProgramming(), 1);
+    retranslate();
+    updateEnabled();
+}
+
+QGroupBox* ProgrammingPanel::buildRegistration() {
+    m_registration = named(new QGroupBox(this), "mfxRegistration");
+    m_search = named(new QPushButton(m_registration), "searchDecoders");
+    m_progress = named(new QProgressBar(m_registration), "searchProgress");
+    m_progress->setRange(0, model::Programmer::DiscoverySteps);
+    m_progress->setValue(0);
+    m_progress->setFormat(QStringLiteral("%v / %m"));
+    m_searchText = named(new QLabel(m_registration), "searchText");
+    m_searchText->setWordWrap(true);
+    m_decoders = named(new QTableWidget(0, 2, m_registration), "foundDecoders");
+    m_decoders->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_decoders->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_decoders->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_decoders->verticalHeader()->hide();
+    m_decoders->horizontalHeader()->setStretchLastSection(true);
+    m_sidLabel = new QLabel(m_registration);
+    m_sid = named(new QSpinBox(m_registration), "bindSid");
+    m_sid->setRange(1, MaxSid);
+    m_register = named(new QPushButton(m_registration), "registerDecoder");
+    auto* searchLine = new QHBoxLayout;
+    searchLine->addWidget(m_search);
+    searchLine->addWidget(m_progress, 1);
+    auto* bindLine = new QHBoxLayout;
+    bindLine->addWidget(m_sidLabel);
+    bindLine->addWidget(m_sid);
+    bindLine->addStretch(1);
+    bindLine->addWidget(m_register);
+    auto* box = new QVBoxLayout(m_registration);
+    box->addLayout(searchLine);
+    box->addWidget(m_searchText);
+    box->addWidget(m_decoders, 1);
+    box->addLayout(bindLine);
+    connect(m_search, &QPushButton::clicked, this, &ProgrammingPanel::search);
+    connect(m_register, &QPushButton::clicked, this, &ProgrammingPanel::registerDecoder);
+    connect(m_decoders, &QTableWidget::itemSelectionChanged, this, &ProgrammingPanel::updateEnabled);
+    return m_registration;
+}
+
+// The fields of a CV request; the labels are named in retranslate().
+void ProgrammingPanel::createCvFields() {
+    QWidget* box = m_programming;
+    m_locomotive = named(new QComboBox(box), "cvLocomotive");
+    m_protocol = named(new QComboBox(box), "cvProtocol");
+    for (const cs2::Protocol protocol : Protocols)
+        m_protocol->addItem(QString(), int(protocol));
+    m_address = named(new QSpinBox(box), "cvAddress");
+    m_address->setRange(0, MaxAddress);
+    m_cv = named(new QSpinBox(box), "cvNumber");
+    m_cv->setRange(1, 1023);
+    m_index = named(new QSpinBox(box), "cvIndex");
+    m_index->setRange(0, 63);
+    m_value = named(new QSpinBox(box), "cvValue");
+    m_value->setRange(0, 255);
+    m_track = named(new QComboBox(box), "cvTrack");
+    m_track->addItems({QString(), QString()});
+    m_mode = named(new QComboBox(box), "cvMode");
+    m_mode->addItems({QString(), QString(), QString()});
+    m_bit = named(new QSpinBox(box), "cvBit");
+    m_bit->setRange(0, 7);
+    m_bitOn = named(new QCheckBox(box), "cvBitOn");
+    m_protocolNote = named(new QLabel(box), "cvNote");
+    m_protocolNote->setWordWrap(true);
+    m_protocolNote->setEnabled(false);
+    m_read = named(new QPushButton(box), "readCv");
+    m_write = named(new QPushButton(box), "writeCv");
+    m_result = named(new QLabel(box), "cvResult");
+    m_result->setWordWrap(true);
+    m_result->setMinimumHeight(m_result->fontMetrics().height() * 3);
+    m_result->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    for (int i = 0; i < LabelCount; ++i)
+        m_labels << new QLabel(box);
+}
+
+QGridLayout* ProgrammingPanel::cvGrid() {
+    auto* grid = new QGridLayout;
+    const auto row = [&](int line, Label label, QWidget* first, QWidget* second = nullptr,
+                         Label secondLabel = LabelCount) {
+        grid->addWidget(m_labels[label], line, 0);
+        grid->addWidget(first, line, 1);
+        if (secondLabel != LabelCount)
+            grid->addWidget(m_labels[secondLabel], line, 2, Qt::AlignRight);
+        if (second)
+            grid->addWidget(second, line, 3);
+    };
+    grid->addWidget(m_labels[LocomotiveLabel], 0, 0);
+    grid->addWidget(m_locomotive, 0, 1, 1, 4);
+    auto* decoder = new QHBoxLayout;
+    decoder->addWidget(m_protocol, 1);
+    decoder->addWidget(m_address, 1);
+    grid->addWidget(m_labels[DecoderLabel], 1, 0);
+    grid->addLayout(decoder, 1, 1);
+    row(2, CvLabel, m_cv, m_index, IndexLabel);
+    row(3, ValueLabel, m_value);
+    row(4, TrackLabel, m_track);
+    row(5, ModeLabel, m_mode, m_bit, BitLabel);
+    grid->addWidget(m_bitOn, 5, 4);
+    grid->setColumnStretch(1, 1);
+    grid->setColumnStretch(3, 1);
+    return grid;
+}
+
+QGroupBox* ProgrammingPanel::buildCvProgramming() {
+    m_programming = named(new QGroupBox(this), "cvProgramming");
+    createCvFields();
+    auto* buttons = new QHBoxLayout;
+    buttons->addStretch(1);
+    buttons->addWidget(m_read);
+    buttons->addWidget(m_write);
+    auto* layout = new QVBoxLayout(m_programming);
+    layout->addLayout(cvGrid());
+    layout->addWidget(m_protocolNote);
+    layout->addLayout(buttons);
+    layout->addWidget(m_result);
+    layout->addStretch(1);
+    connect(m_locomotive, &QComboBox::activated, this, &ProgrammingPanel::locomotiveChosen);
+    connect(m_protocol, &QComboBox::currentIndexChanged, this, &ProgrammingPanel::protocolChosen);
+    connect(m_mode, &QComboBox::currentIndexChanged, this, &ProgrammingPanel::protocolChosen);
+    connect(m_read, &QPushButton::clicked, this, &ProgrammingPanel::readCv);
+    connect(m_write, &QPushButton::clicked, this, &ProgrammingPanel::writeCv);
+    return m_programming;
+}
+
+void ProgrammingPanel::setRailway(model::Railway* railway) {
+    if (m_railway) {
+        disconnect(m_railway, nullptr, this, nullptr);
+        disconnect(&m_railway->programmer(), nullptr, this, nullptr);
+    }
+    m_railway = railway;
+    if (m_railway) {
+        connect(m_railway, &model::Railway::loaded, this, &ProgrammingPanel::fillLocomotives);
+        connect(m_railway, &QObject::destroyed, this, [this] { setRailway(nullptr); });
+        connect(&m_railway->programmer(), &model::Programmer::discoveryProgress, this,
+                &ProgrammingPanel::progressed);
+        connect(&m_railway->programmer(), &model::Programmer::finished, this, &ProgrammingPanel::finished);
+    }
+    m_decoders->setRowCount(0);
+    m_progress->setValue(0);
+    m_searchText->clear();
+    m_result->clear();
+    fillLocomotives();
+    updateEnabled();
+}
+
+void ProgrammingPanel::fillLocomotives() {
+    const QString chosen = m_locomotive->currentText();
+    m_locomotive->clear();
+    m_locomotive->addItem(tr("(address below)"), QVariant());
+    if (m_railway)
+        for (const model::Locomotive& loco : m_railway->state().locomotives().items())
+            m_locomotive->addItem(loco.displayName(), loco.id().value());
+    const int again = m_locomotive->findText(chosen);
+    m_locomotive->setCurrentIndex(again < 0 ? 0 : again);
+    m_sid->setValue(suggestedSid());
+}
+
+bool ProgrammingPanel::chooseLocomotive(const QString& name) {
+    const int index = m_locomotive->findText(name);
+    if (index < 0)
+        return false;
+    m_locomotive->setCurrentIndex(index);
+    locomotiveChosen();
+    return true;
+}
+
+// A locomotive from the list fills in its protocol and address.
+void ProgrammingPanel::locomotiveChosen() {
+    const QVariant id = m_locomotive->currentData();
+    if (!id.isValid())
+        return;
+    const cs2::LocId loco(id.toUInt());
+    const int protocol = m_protocol->findData(int(loco.protocol()));
+    if (protocol >= 0)
+        m_protocol->setCurrentIndex(protocol);
+    m_address->setValue(int(loco.address()));
+}
+
+void ProgrammingPanel::protocolChosen() {
+    const auto protocol = cs2::Protocol(m_protocol->currentData().toInt());
+    m_index->setEnabled(protocol == cs2::Protocol::Mfx);
+    if (protocol != cs2::Protocol::Mfx)
+        m_index->setValue(0);
+    const bool dcc = protocol == cs2::Protocol::Dcc;
+    m_mode->setEnabled(dcc);
+    if (!dcc)
+        m_mode->setCurrentIndex(0);
+    const bool bitMode = dcc && m_mode->currentIndex() == int(cs2::DccProgrammingMode::Bit);
+    m_bit->setEnabled(bitMode);
+    m_bitOn->setEnabled(bitMode);
+    m_value->setEnabled(!bitMode);
+    switch (protocol) {
+    case cs2::Protocol::Mm2:
+        m_protocolNote->setText(tr("MM2 decoders can be written (CV 1–256) but not read back."));
+        break;
+    case cs2::Protocol::Mfx:
+        m_protocolNote->setText(tr("mfx: CV 1–1023 with an index (read 0–63, write 1–63), on either track."));
+        break;
+    case cs2::Protocol::Sx1:
+        m_protocolNote->setText(tr("SX1: values 1–5 (address, top speed, acceleration, pulse width, stop "
+                                   "sections), programming track only."));
+        break;
+    default:
+        m_protocolNote->setText(tr("DCC: CV 1–1023; read on the programming track, write on either track."));
+        break;
+    }
+}
+
+std::optional<model::CvTarget> ProgrammingPanel::target() const {
+    const auto loco = cs2::LocId::fromAddress(cs2::Protocol(m_protocol->currentData().toInt()),
+                                              std::uint32_t(m_address->value()));
+    if (!loco)
+        return std::nullopt;
+    return model::CvTarget{*loco, std::uint16_t(m_cv->value()), std::uint8_t(m_index->value())};
+}
+
+void ProgrammingPanel::search() {
+    if (!m_railway)
+        return;
+    m_searchFailed = false;
+    m_progress->setValue(0);
+    m_searchText->setText(tr("Searching the track for new mfx decoders…"));
+    m_railway->programmer().discover();
+    updateEnabled();
+}
+
+void ProgrammingPanel::progressed(int range, quint32 uidSoFar) {
+    m_progress->setValue(range);
+    m_searchText->setText(tr("Searching: %1 of %2 bits of the decoder's UID known (%3)")
+                              .arg(range)
+                              .arg(model::Programmer::DiscoverySteps)
+                              .arg(uidText(uidSoFar)));
+}
+
+void ProgrammingPanel::registerDecoder() {
+    const QList<QTableWidgetItem*> selected = m_decoders->selectedItems();
+    if (!m_railway || selected.isEmpty())
+        return;
+    const auto uid = std::uint32_t(m_decoders->item(selected.first()->row(), 0)->data(Qt::UserRole).toUInt());
+    m_railway->programmer().bind(uid, std::uint16_t(m_sid->value()));
+    updateEnabled();
+}
+
+void ProgrammingPanel::readCv() {
+    const std::optional<model::CvTarget> cv = target();
+    if (!m_railway)
+        return;
+    if (!cv) {
+        showResult(tr("This address does not exist for the chosen protocol."), true);
+        return;
+    }
+    showResult(tr("Reading CV %1…").arg(cv->cv), false);
+    m_railway->programmer().readCv(*cv);
+    updateEnabled();
+}
+
+void ProgrammingPanel::writeCv() {
+    const std::optional<model::CvTarget> cv = target();
+    if (!m_railway)
+        return;
+    if (!cv) {
+        showResult(tr("This address does not exist for the chosen protocol."), true);
+        return;
+    }
+    model::CvWrite write;
+    write.target = *cv;
+    write.mode = cs2::DccProgrammingMode(m_mode->currentIndex());
+    write.value = write.mode == cs2::DccProgrammingMode::Bit
+                      ? model::CvWrite::bitValue(m_bit->value(), m_bitOn->isChecked())
+                      : std::uint8_t(m_value->value());
+    write.track =
+        m_track->currentIndex() == 1 ? model::ProgrammingTrack::Main : model::ProgrammingTrack::Programming;
+    showResult(tr("Writing CV %1…").arg(cv->cv), false);
+    m_railway->programmer().writeCv(write);
+    updateEnabled();
+}
+
+void ProgrammingPanel::finished(const model::ProgrammingResult& result) {
+    switch (result.task) {
+    case Task::Discovery:
+        discoveryFinished(result);
+        break;
+    case Task::Bind:
+        bindFinished(result);
+        break;
+    case Task::Verify:
+        verifyFinished(result);
+        break;
+    case Task::ReadCv:
+        if (result.succeeded() && result.value)
+            m_value->setValue(*result.value); // ready to be changed and written back
+        showResult(result.succeeded() ? cvText(result) : failureText(result), !result.succeeded());
+        break;
+    case Task::WriteCv:
+        showResult(result.succeeded() ? cvText(result) : failureText(result), !result.succeeded());
+        break;
+    }
+    updateEnabled();
+}
+
+void ProgrammingPanel::discoveryFinished(const model::ProgrammingResult& result) {
+    m_searchFailed = !result.succeeded() && result.outcome != Outcome::NotFound;
+    if (result.outcome == Outcome::NotFound) {
+        m_progress->setValue(m_progress->maximum());
+        m_searchText->setText(
+            tr("No new mfx decoder answered. Decoders that are registered already take no part."));
+        return;
+    }
+    if (!result.succeeded()) {
+        m_searchText->setText(failureText(result));
+        return;
+    }
+    showDecoder(result.mfxUid, tr("found"));
+    m_searchText->setText(tr("Found mfx decoder %1. Choose a SID and press Register; search again for more.")
+                              .arg(uidText(result.mfxUid)));
+    m_sid->setValue(suggestedSid());
+}
+
+void ProgrammingPanel::bindFinished(const model::ProgrammingResult& result) {
+    if (!result.succeeded()) {
+        showDecoder(result.mfxUid, failureText(result));
+        return;
+    }
+    showDecoder(result.mfxUid, tr("bound to SID %1, verifying…").arg(result.sid));
+    if (m_railway)
+        m_railway->programmer().verify(result.mfxUid, result.sid);
+}
+
+void ProgrammingPanel::verifyFinished(const model::ProgrammingResult& result) {
+    if (!result.succeeded()) {
+        showDecoder(result.mfxUid, result.outcome == Outcome::Refused
+                                       ? tr("does not answer under SID %1").arg(result.sid)
+                                       : failureText(result));
+        return;
+    }
+    showDecoder(result.mfxUid, tr("registered on SID %1").arg(result.sid));
+    m_lastBoundSid = std::max(m_lastBoundSid, result.sid);
+    m_sid->setValue(suggestedSid());
+    emit decoderBound(result.mfxUid, result.sid);
+}
+
+void ProgrammingPanel::showDecoder(std::uint32_t mfxUid, const QString& state) {
+    int row = 0;
+    while (row < m_decoders->rowCount() && m_decoders->item(row, 0)->data(Qt::UserRole).toUInt() != mfxUid)
+        ++row;
+    if (row == m_decoders->rowCount()) {
+        m_decoders->insertRow(row);
+        auto* uid = new QTableWidgetItem(uidText(mfxUid));
+        uid->setData(Qt::UserRole, mfxUid);
+        m_decoders->setItem(row, 0, uid);
+        m_decoders->setItem(row, 1, new QTableWidgetItem);
+        m_decoders->selectRow(row);
+    }
+    m_decoders->item(row, 1)->setText(state);
+    m_decoders->resizeColumnToContents(0);
+}
+
+QString ProgrammingPanel::searchText() const {
+    return m_searchText->text();
+}
+
+QString ProgrammingPanel::resultText() const {
+    return m_result->text();
+}
+
+void ProgrammingPanel::showResult(const QString& text, bool problem) {
+    m_result->setText(text);
+    m_result->setStyleSheet(problem ? QStringLiteral("QLabel { color: #c82c2c; font-weight: bold; }")
+                                    : QStringLiteral("QLabel { font-weight: bold; }"));
+}
+
+QString ProgrammingPanel::cvText(const model::ProgrammingResult& result) const {
+    const QString cv = result.target.decoder.protocol() == cs2::Protocol::Mfx
+                           ? tr("CV %1.%2").arg(result.target.cv).arg(result.target.index)
+                           : tr("CV %1").arg(result.target.cv);
+    const int value = result.value.value_or(0);
+    if (result.task == Task::ReadCv)
+        return tr("%1 = %2 (0x%3)").arg(cv).arg(value).arg(value, 2, 16, QLatin1Char('0'));
+    return result.verified
+               ? tr("%1 written: %2, read back and verified.").arg(cv).arg(value)
+               : tr("%1 written: %2. Not verified: the decoder cannot be read back.").arg(cv).arg(value);
+}
+
+QString ProgrammingPanel::failureText(const model::ProgrammingResult& result) const {
+    switch (result.outcome) {
+    case Outcome::Refused:
+        if (result.task == Task::ReadCv)
+            return tr("No value: the decoder did not answer the read (is it on the programming track?).");
+        if (result.task == Task::WriteCv)
+            return tr("Refused: the station could not write the CV.");
+        return tr("Refused by the station.");
+    case Outcome::NoAnswer:
+        return tr("No answer from the station.");
+    case Outcome::NotSent:
+        return tr("Not sent: the station is not connected.");
+    case Outcome::Busy:
+        return tr("Wait: the station is still busy with the last programming command.");
+    case Outcome::Invalid:
+        return problemText(result);
+    case Outcome::NotFound:
+    case Outcome::Done:
+        break;
+    }
+    return QString();
+}
+
+QString ProgrammingPanel::problemText(const model::ProgrammingResult& result) const {
+    switch (result.problem) {
+    case Problem::NotProgrammable:
+        return tr("Only MM2, DCC, mfx and SX1 decoders can be programmed.");
+    case Problem::Mm2CannotBeRead:
+        return tr("MM2 decoders cannot be read: the station can only write their CVs.");
+    case Problem::CvOutOfRange:
+        return tr("The CV must be between %1 and %2 for this protocol.")
+            .arg(result.minimum)
+            .arg(result.maximum);
+    case Problem::IndexOutOfRange:
+        return tr("The mfx index must be between %1 and %2.").arg(result.minimum).arg(result.maximum);
+    case Problem::IndexNotMfx:
+        return tr("Only mfx CVs have an index.");
+    case Problem::ProgrammingTrackOnly:
+        return tr("SX1 decoders are programmed on the programming track only.");
+    case Problem::ModeNotDcc:
+        return tr("Programming modes are for DCC decoders only.");
+    case Problem::ReservedMode:
+        return tr("This DCC programming mode is reserved.");
+    case Problem::BitValueForm:
+        return tr("Bit programming needs a bit position and value.");
+    case Problem::NoSid:
+        return tr("Choose a SID from 1.");
+    case Problem::None:
+        break;
+    }
+    return QString();
+}
+
+std::uint16_t ProgrammingPanel::suggestedSid() const {
+    std::uint32_t highest = m_lastBoundSid;
+    if (m_railway)
+        for (const model::Locomotive& loco : m_railway->state().locomotives().items())
+            if (loco.id().protocol() == cs2::Protocol::Mfx)
+                highest = std::max(highest, loco.id().address());
+    return std::uint16_t(std::min<std::uint32_t>(highest + 1, MaxSid));
+}
+
+void ProgrammingPanel::updateEnabled() {
+    const bool ready = m_railway && !m_railway->programmer().busy();
+    m_search->setEnabled(ready);
+    m_register->setEnabled(ready && !m_decoders->selectedItems().isEmpty());
+    m_read->setEnabled(ready);
+    m_write->setEnabled(ready);
+    if (!m_railway)
+        m_searchText->setText(tr("No station connected."));
+}
+
+void ProgrammingPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void ProgrammingPanel::retranslate() {
+    m_registration->setTitle(tr("New mfx decoders"));
+    m_programming->setTitle(tr("CV programming"));
+    m_search->setText(tr("Search"));
+    m_search->setToolTip(tr("The station searches the track for one mfx decoder that is not registered yet"));
+    m_decoders->setHorizontalHeaderLabels({tr("mfx UID"), tr("State")});
+    m_sidLabel->setText(tr("SID:"));
+    m_register->setText(tr("Register"));
+    m_register->setToolTip(tr("Binds the selected decoder to the SID, then checks that it answers"));
+    const QStringList labels{tr("Locomotive:"), tr("Decoder:"), tr("CV:"),       tr("Index:"),
+                             tr("Value:"),      tr("Track:"),   tr("DCC mode:"), tr("Bit:")};
+    for (int i = 0; i < LabelCount; ++i)
+        m_labels[i]->setText(labels[i]);
+    m_protocol->setItemText(0, tr("mfx SID"));
+    m_protocol->setItemText(1, tr("DCC"));
+    m_protocol->setItemText(2, tr("MM2"));
+    m_protocol->setItemText(3, tr("SX1"));
+    m_track->setItemText(0, tr("programming track"));
+    m_track->setItemText(1, tr("main track (write only)"));
+    m_mode->setItemText(0, tr("direct"));
+    m_mode->setItemText(1, tr("register"));
+    m_mode->setItemText(2, tr("bit"));
+    m_bitOn->setText(tr("set"));
+    m_read->setText(tr("Read"));
+    m_write->setText(tr("Write"));
+    if (m_locomotive->count() > 0)
+        m_locomotive->setItemText(0, tr("(address below)"));
+    protocolChosen();
+    updateEnabled();
+}
+
+} // namespace stellwerk::ui

@@ -1,0 +1,2 @@
+# The Programming page: mfx search and registration, and a decoder's CVs read and written.
+target_sources(stellwerk-ui PRIVATE programming/ProgrammingPanel.cpp programming/ProgrammingPanel.h)

@@ -1,0 +1,318 @@
+#include "shell/MainWindow.h"
+
+#include "common/PowerStatus.h"
+#include "connect/ConnectDialog.h"
+#include "connect/ConnectionStatus.h"
+#include "connect/StartupProgress.h"
+#include "connect/TrafficStatus.h"
+#include "connection/StationConnection.h"
+#include "keyboard/TurnoutPanel.h"
+#include "layout/LayoutOverview.h"
+#include "locomotives/LocomotivePanel.h"
+#include "monitor/BusMonitorPanel.h"
+#include "monitor/FrameDecoderPanel.h"
+#include "programming/ProgrammingPanel.h"
+#include "shell/AboutBox.h"
+#include "shell/ApplicationInfo.h"
+#include "shell/LanguageMenu.h"
+#include "shell/LanguageSettings.h"
+#include "shell/Translations.h"
+#include "shell/WindowLayoutSettings.h"
+#include "shell/Workspace.h"
+#include "status/StatusPanel.h"
+#include "stopkeys/EmergencyStopKeys.h"
+#include "stopkeys/StopGoButton.h"
+#include "stopkeys/StopKeyMenu.h"
+#include "stopkeys/StopKeySettings.h"
+#include "throttle/ThrottlePanel.h"
+#include "trackplan/TrackPlanPanel.h"
+
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QEvent>
+#include <QGuiApplication>
+#include <QMenuBar>
+#include <QScreen>
+#include <QStatusBar>
+#include <QToolBar>
+
+namespace stellwerk::ui {
+
+MainWindow::MainWindow(Translations& translations, QWidget* parent)
+    : QMainWindow(parent), m_translations(translations) {
+    setObjectName(QStringLiteral("mainWindow"));
+    setWindowTitle(QStringLiteral("Stellwerk"));
+    setWindowIcon(applicationIcon());
+    resize(firstSize());
+    createPanels();
+    createToolBar();
+    createFileMenu();
+    createStationMenu();
+    createViewMenu();
+    createHelpMenu();
+    createStatusBar();
+    retranslate();
+    m_workspace->restore();
+}
+
+// Without a remembered size: most of the screen, as a control desk wants the room, but not beyond it.
+QSize MainWindow::firstSize() {
+    const QScreen* screen = QGuiApplication::primaryScreen();
+    const QSize available = screen ? screen->availableGeometry().size() : QSize(1280, 800);
+    return QSize(1280, 800).expandedTo(available * 9 / 10).boundedTo(available);
+}
+
+void MainWindow::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+    }
+    QMainWindow::changeEvent(event);
+}
+
+// Without a remembered arrangement, a large screen gives the side panels room for a third column of
+// keyboard keys and a second throttle, instead of the laptop widths of the first arrangement.
+void MainWindow::showEvent(QShowEvent* event) {
+    QMainWindow::showEvent(event);
+    if (m_shownBefore)
+        return;
+    m_shownBefore = true;
+    if (!WindowLayoutSettings::load().state.isEmpty() || width() < 1600)
+        return;
+    resizeDocks({m_workspace->dockOf(m_turnoutPanel), m_workspace->dockOf(m_throttlePanel)},
+                {width() * 24 / 100, width() * 27 / 100}, Qt::Horizontal);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!m_locomotivePanel->settleUnsavedEdits(tr("quitting"))) {
+        event->ignore();
+        return;
+    }
+    m_workspace->save();
+    QMainWindow::closeEvent(event);
+}
+
+// The track plan in the middle; the keyboard and the locomotive tools on the left, the throttles on the
+// right, the overview and the bus tools below.
+void MainWindow::createPanels() {
+    m_workspace = new Workspace(*this);
+    m_trackPlan = new TrackPlanPanel(this);
+    setCentralWidget(m_trackPlan);
+    m_turnoutPanel = new TurnoutPanel(this);
+    m_workspace->addPanel(m_turnoutPanel, Qt::LeftDockWidgetArea);
+    m_locomotivePanel = new LocomotivePanel(this);
+    m_trackPlan->setOpenGuard(
+        [this] { return m_locomotivePanel->settleUnsavedEdits(tr("opening another layout")); });
+    m_workspace->addPanel(m_locomotivePanel, Qt::LeftDockWidgetArea, m_turnoutPanel);
+    m_programmingPanel = new ProgrammingPanel(this);
+    m_workspace->addPanel(m_programmingPanel, Qt::LeftDockWidgetArea, m_turnoutPanel);
+    // A decoder registered on the programming page becomes a locomotive of the list at once.
+    connect(m_programmingPanel, &ProgrammingPanel::decoderBound, m_locomotivePanel,
+            &LocomotivePanel::addBoundDecoder);
+    m_throttlePanel = new ThrottlePanel(this);
+    m_workspace->addPanel(m_throttlePanel, Qt::RightDockWidgetArea);
+    m_statusPanel = new StatusPanel(this);
+    m_workspace->addPanel(m_statusPanel, Qt::RightDockWidgetArea, m_throttlePanel);
+    m_layoutOverview = new LayoutOverview(this);
+    m_workspace->addPanel(m_layoutOverview, Qt::BottomDockWidgetArea);
+    m_busMonitor = new BusMonitorPanel(this);
+    m_workspace->addPanel(m_busMonitor, Qt::BottomDockWidgetArea, m_layoutOverview);
+    m_frameDecoder = new FrameDecoderPanel(this);
+    m_workspace->addPanel(m_frameDecoder, Qt::BottomDockWidgetArea, m_layoutOverview);
+    for (QWidget* front : {static_cast<QWidget*>(m_turnoutPanel), static_cast<QWidget*>(m_throttlePanel),
+                           static_cast<QWidget*>(m_layoutOverview)})
+        m_workspace->showPanel(front);
+    // A first arrangement in which the plan keeps most of a laptop's screen.
+    resizeDocks({m_workspace->dockOf(m_turnoutPanel), m_workspace->dockOf(m_throttlePanel)}, {330, 360},
+                Qt::Horizontal);
+    resizeDocks({m_workspace->dockOf(m_layoutOverview)}, {170}, Qt::Vertical);
+}
+
+void MainWindow::createToolBar() {
+    m_toolBar = addToolBar(QString());
+    m_toolBar->setObjectName(QStringLiteral("mainToolBar"));
+    m_toolBar->setMovable(false);
+    m_toolBar->toggleViewAction()->setEnabled(false);
+    m_stopGo = new StopGoButton(m_toolBar);
+    m_toolBar->addWidget(m_stopGo);
+    m_stopKeys = new EmergencyStopKeys(this, this);
+    m_stopKeys->setExtraKey(StopKeySettings::load());
+    connect(m_stopKeys, &EmergencyStopKeys::stopRequested, m_stopGo, &StopGoButton::stopEverything);
+}
+
+void MainWindow::createFileMenu() {
+    m_fileMenu = menuBar()->addMenu(QString());
+    m_fileMenu->setObjectName(QStringLiteral("fileMenu"));
+    m_quitAction = m_fileMenu->addAction(QString(), this, &MainWindow::close);
+    m_quitAction->setObjectName(QStringLiteral("quitAction"));
+    m_quitAction->setShortcut(QKeySequence::Quit);
+    m_quitAction->setMenuRole(QAction::QuitRole);
+}
+
+void MainWindow::createStationMenu() {
+    m_stationMenu = menuBar()->addMenu(QString());
+    m_stationMenu->setObjectName(QStringLiteral("stationMenu"));
+    m_connectAction = m_stationMenu->addAction(QString(), this, &MainWindow::showConnectDialog);
+    m_connectAction->setObjectName(QStringLiteral("connectAction"));
+    m_toolBar->addSeparator();
+    m_toolBar->addAction(m_connectAction);
+    m_stationMenu->addSeparator();
+    m_stopAction = m_stationMenu->addAction(QString(), m_stopGo, &StopGoButton::stopEverything);
+    m_stopAction->setObjectName(QStringLiteral("stopAction"));
+    m_stopKeyMenu = new StopKeyMenu(m_stopKeys->extraKey(), m_stationMenu);
+    m_stationMenu->addMenu(m_stopKeyMenu);
+    connect(m_stopKeyMenu, &StopKeyMenu::keyChosen, this, [this](Qt::Key key) {
+        m_stopKeys->setExtraKey(key);
+        StopKeySettings::save(key);
+        retranslate();
+    });
+}
+
+void MainWindow::setConnection(connection::StationConnection* station) {
+    if (m_connection)
+        disconnect(m_connection, nullptr, this, nullptr);
+    m_connection = station;
+    m_stationStatus->setConnection(station);
+    m_startupProgress->setConnection(station);
+    m_traffic->setConnection(station);
+    m_busMonitor->setConnection(station);
+    m_trackPlan->setConnection(station);
+    if (m_connection) {
+        connect(m_connection, &connection::StationConnection::problem, this,
+                [this](const QString& message) { showStationProblem(message); });
+        connect(m_connection, &connection::StationConnection::stateChanged, this,
+                &MainWindow::connectionStateChanged);
+        connect(m_connection, &QObject::destroyed, this, [this] { m_connection = nullptr; });
+    }
+}
+
+void MainWindow::setRailway(model::Railway* railway) {
+    m_layoutOverview->setRailway(railway);
+    m_statusPanel->setRailway(railway);
+    m_turnoutPanel->setRailway(railway);
+    m_throttlePanel->setRailway(railway);
+    m_trackPlan->setRailway(railway);
+    m_locomotivePanel->setRailway(railway);
+    m_programmingPanel->setRailway(railway);
+    m_stopGo->setRailway(railway);
+    m_power->setRailway(railway);
+}
+
+// A failure is already on the station's status line; other problems pass by on the left for a while,
+// with what to try while the station was never reached.
+void MainWindow::showStationProblem(const QString& message) {
+    using State = connection::StationConnection::State;
+    if (!m_connection || m_connection->state() == State::Failed)
+        return;
+    if (m_connection->state() == State::Connecting)
+        statusBar()->showMessage(
+            message + QStringLiteral(" — ") + ConnectionStatus::advice(m_connection->endpoint()), 15000);
+    else
+        statusBar()->showMessage(message, 8000);
+}
+
+// A failed connection says what to try, and keeps saying it until something changes.
+void MainWindow::connectionStateChanged() {
+    if (m_connection && m_connection->state() == connection::StationConnection::State::Failed)
+        statusBar()->showMessage(ConnectionStatus::advice(m_connection->endpoint()));
+    else if (m_connection && m_connection->state() == connection::StationConnection::State::Ready)
+        statusBar()->clearMessage();
+}
+
+void MainWindow::showConnectDialog() {
+    ConnectDialog dialog(m_connection ? m_connection->address() : QString(), this);
+    if (dialog.exec() == QDialog::Accepted && m_connection &&
+        m_locomotivePanel->settleUnsavedEdits(tr("connecting again")))
+        m_connection->connectTo(dialog.url());
+}
+
+void MainWindow::createViewMenu() {
+    m_viewMenu = menuBar()->addMenu(QString());
+    m_viewMenu->setObjectName(QStringLiteral("viewMenu"));
+    m_panelsMenu = m_viewMenu->addMenu(QString());
+    m_panelsMenu->setObjectName(QStringLiteral("panelsMenu"));
+    for (QDockWidget* dock : m_workspace->docks())
+        m_panelsMenu->addAction(dock->toggleViewAction());
+    m_resetLayoutAction = m_viewMenu->addAction(QString(), m_workspace, &Workspace::reset);
+    m_resetLayoutAction->setObjectName(QStringLiteral("resetLayoutAction"));
+    m_viewMenu->addSeparator();
+    m_languageMenu = new LanguageMenu(m_translations.current(), m_viewMenu);
+    m_viewMenu->addMenu(m_languageMenu);
+    connect(m_languageMenu, &LanguageMenu::languageChosen, this, &MainWindow::chooseLanguage);
+}
+
+void MainWindow::createHelpMenu() {
+    m_helpMenu = menuBar()->addMenu(QString());
+    m_helpMenu->setObjectName(QStringLiteral("helpMenu"));
+    m_aboutAction = m_helpMenu->addAction(QString(), this, [this] { AboutBox::show(this); });
+    m_aboutAction->setObjectName(QStringLiteral("aboutAction"));
+    m_aboutAction->setMenuRole(QAction::AboutRole);
+}
+
+// Station state is permanent information; the left side stays free for temporary messages.
+void MainWindow::createStatusBar() {
+    m_stationStatus = new ConnectionStatus(this);
+    m_startupProgress = new StartupProgress(this);
+    m_traffic = new TrafficStatus(this);
+    m_power = new PowerStatus(this);
+    for (QWidget* part : {static_cast<QWidget*>(m_stationStatus), static_cast<QWidget*>(m_startupProgress),
+                          static_cast<QWidget*>(m_traffic), static_cast<QWidget*>(m_power)}) {
+        part->setContentsMargins(8, 0, 8, 0); // room between the parts, as between a panel's lamps
+        statusBar()->addPermanentWidget(part);
+    }
+}
+
+void MainWindow::retranslate() {
+    m_fileMenu->setTitle(tr("&File"));
+    m_quitAction->setText(tr("&Quit"));
+    m_quitAction->setStatusTip(tr("Close the window and end Stellwerk"));
+    m_stationMenu->setTitle(tr("&Station"));
+    m_connectAction->setText(tr("&Connect…"));
+    m_connectAction->setStatusTip(tr("Choose the station to connect to, or the simulated one"));
+    m_viewMenu->setTitle(tr("&View"));
+    m_helpMenu->setTitle(tr("&Help"));
+    m_aboutAction->setText(tr("&About Stellwerk"));
+    m_aboutAction->setStatusTip(tr("Show the version of Stellwerk and of Qt"));
+    // The keys are EmergencyStopKeys' job (from any widget); the menu only names them.
+    m_stopAction->setText(tr("&Stop everything") + QStringLiteral("\t") + stopKeysText());
+    m_stopAction->setStatusTip(tr("Switch the track power off: every train stops"));
+    m_toolBar->setWindowTitle(tr("Stop and go"));
+    m_panelsMenu->setTitle(tr("&Panels"));
+    m_resetLayoutAction->setText(tr("&Reset panel layout"));
+    m_resetLayoutAction->setStatusTip(tr("Put every panel back where it was at the first start"));
+    retranslateDocks();
+}
+
+// The keys that stop, as the menu names them: "Space, F12" (Escape too, but only where nothing is open).
+QString MainWindow::stopKeysText() const {
+    const Qt::Key extra = m_stopKeys->extraKey();
+    return extra == Qt::Key_unknown
+               ? tr("Space")
+               : tr("Space, %1").arg(QKeySequence(extra).toString(QKeySequence::NativeText));
+}
+
+void MainWindow::retranslateDocks() {
+    const auto title = [this](QWidget* panel, const QString& text) {
+        if (QDockWidget* dock = m_workspace->dockOf(panel))
+            dock->setWindowTitle(text);
+    };
+    title(m_turnoutPanel, tr("Keyboard"));
+    title(m_throttlePanel, tr("Throttles"));
+    title(m_locomotivePanel, tr("Locomotives"));
+    title(m_programmingPanel, tr("Programming"));
+    title(m_statusPanel, tr("Status"));
+    title(m_layoutOverview, tr("Overview"));
+    title(m_busMonitor, tr("Bus monitor"));
+    title(m_frameDecoder, tr("Frame decoder"));
+}
+
+void MainWindow::chooseLanguage(Language language) {
+    if (!m_translations.select(language)) {
+        statusBar()->showMessage(
+            tr("The translation \"%1\" could not be loaded.").arg(languageCode(language)));
+        m_languageMenu->setCurrent(m_translations.current());
+        return;
+    }
+    LanguageSettings::save(language);
+}
+
+} // namespace stellwerk::ui

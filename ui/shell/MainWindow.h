@@ -1,0 +1,128 @@
+#pragma once
+
+#include "shell/Language.h"
+
+#include <QMainWindow>
+
+class QToolBar;
+
+namespace stellwerk::connection {
+class StationConnection;
+}
+namespace stellwerk::model {
+class Railway;
+}
+
+namespace stellwerk::ui {
+
+class BusMonitorPanel;
+class ConnectionStatus;
+class EmergencyStopKeys;
+class FrameDecoderPanel;
+class LanguageMenu;
+class LayoutOverview;
+class LocomotivePanel;
+class PowerStatus;
+class ProgrammingPanel;
+class StartupProgress;
+class StatusPanel;
+class StopGoButton;
+class StopKeyMenu;
+class ThrottlePanel;
+class TrackPlanPanel;
+class TrafficStatus;
+class Translations;
+class TurnoutPanel;
+class Workspace;
+
+// The station's main window: menus, the toolbar with the big STOP / GO, the track plan in the middle and
+// the other panels of a running session as docks a person arranges (kept between runs), and the status bar
+// with the station, its traffic, the configuration download and the track power. Space and the extra STOP
+// key stop the layout from anywhere, Escape only where no popup or dialog is open (EmergencyStopKeys).
+// Quitting, connecting again and opening another layout ask first when locomotive edits are unsaved.
+class MainWindow final : public QMainWindow {
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(MainWindow)
+
+public:
+    explicit MainWindow(Translations& translations, QWidget* parent = nullptr);
+
+    Workspace* workspace() const { return m_workspace; }
+    FrameDecoderPanel* frameDecoder() const { return m_frameDecoder; }
+    LayoutOverview* layoutOverview() const { return m_layoutOverview; }
+    StatusPanel* statusPanel() const { return m_statusPanel; }
+    BusMonitorPanel* busMonitor() const { return m_busMonitor; }
+    TurnoutPanel* turnoutPanel() const { return m_turnoutPanel; }
+    ThrottlePanel* throttlePanel() const { return m_throttlePanel; }
+    TrackPlanPanel* trackPlan() const { return m_trackPlan; }
+    LocomotivePanel* locomotivePanel() const { return m_locomotivePanel; }
+    ProgrammingPanel* programmingPanel() const { return m_programmingPanel; }
+    StopGoButton* stopGoButton() const { return m_stopGo; }
+    EmergencyStopKeys* stopKeys() const { return m_stopKeys; }
+
+    // The railway the panels show and STOP / GO acts on (null: none); see RailwayBinding.
+    void setRailway(model::Railway* railway);
+    // The station connection the status bar shows and Station → Connect… reconnects (null: none). It
+    // must outlive the window or be replaced before it goes.
+    void setConnection(connection::StationConnection* station);
+    connection::StationConnection* stationConnection() const { return m_connection; }
+
+    // Opens Station → Connect…; on Connect the choice is stored and the connection reconnects.
+    void showConnectDialog();
+
+protected:
+    void changeEvent(QEvent* event) override;
+    void closeEvent(QCloseEvent* event) override;
+    void showEvent(QShowEvent* event) override;
+
+private:
+    static QSize firstSize();
+    void createPanels();
+    void createToolBar();
+    void createFileMenu();
+    void createStationMenu();
+    void createViewMenu();
+    void createHelpMenu();
+    void createStatusBar();
+    void retranslate();
+    void retranslateDocks();
+    QString stopKeysText() const;
+    void chooseLanguage(Language language);
+    void showStationProblem(const QString& message);
+    void connectionStateChanged();
+
+    Translations& m_translations;
+    Workspace* m_workspace = nullptr;
+    LayoutOverview* m_layoutOverview = nullptr;
+    FrameDecoderPanel* m_frameDecoder = nullptr;
+    StatusPanel* m_statusPanel = nullptr;
+    BusMonitorPanel* m_busMonitor = nullptr;
+    TurnoutPanel* m_turnoutPanel = nullptr;
+    ThrottlePanel* m_throttlePanel = nullptr;
+    TrackPlanPanel* m_trackPlan = nullptr;
+    LocomotivePanel* m_locomotivePanel = nullptr;
+    ProgrammingPanel* m_programmingPanel = nullptr;
+    QToolBar* m_toolBar = nullptr;
+    StopGoButton* m_stopGo = nullptr;
+    EmergencyStopKeys* m_stopKeys = nullptr;
+    QMenu* m_fileMenu = nullptr;
+    QAction* m_quitAction = nullptr;
+    QMenu* m_stationMenu = nullptr;
+    QAction* m_connectAction = nullptr;
+    QAction* m_stopAction = nullptr;
+    StopKeyMenu* m_stopKeyMenu = nullptr;
+    QMenu* m_viewMenu = nullptr;
+    QMenu* m_panelsMenu = nullptr;
+    QAction* m_resetLayoutAction = nullptr;
+    LanguageMenu* m_languageMenu = nullptr;
+    QMenu* m_helpMenu = nullptr;
+    QAction* m_aboutAction = nullptr;
+    ConnectionStatus* m_stationStatus = nullptr;
+    StartupProgress* m_startupProgress = nullptr;
+    TrafficStatus* m_traffic = nullptr;
+    PowerStatus* m_power = nullptr;
+    connection::StationConnection* m_connection = nullptr;
+    bool m_shownBefore = false;
+};
+
+} // namespace stellwerk::ui

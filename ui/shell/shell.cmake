@@ -1,0 +1,14 @@
+# The application around the panels: the main window with its menus, docks and remembered arrangement, the
+# railway handed to every panel, the interface language and its translations, and the about box.
+target_sources(stellwerk-ui PRIVATE
+    shell/AboutBox.cpp shell/AboutBox.h
+    shell/ApplicationInfo.cpp shell/ApplicationInfo.h
+    shell/Language.cpp shell/Language.h
+    shell/LanguageMenu.cpp shell/LanguageMenu.h
+    shell/LanguageSettings.cpp shell/LanguageSettings.h
+    shell/MainWindow.cpp shell/MainWindow.h
+    shell/RailwayBinding.cpp shell/RailwayBinding.h
+    shell/Translations.cpp shell/Translations.h
+    shell/WindowLayoutSettings.cpp shell/WindowLayoutSettings.h
+    shell/Workspace.cpp shell/Workspace.h
+)

@@ -1,0 +1,158 @@
+#include "throttle/ThrottlePanel.h"
+
+#include "common/LayoutStateBanner.h"
+#include "model/Railway.h"
+#include "throttle/ThrottleSettings.h"
+#include "throttle/ThrottleWidget.h"
+
+#include <QComboBox>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QShortcut>
+#include <QVBoxLayout>
+
+namespace stellwerk::ui {
+
+ThrottlePanel::ThrottlePanel(QWidget* parent) : QWidget(parent) {
+    setObjectName(QStringLiteral("throttlePanel"));
+    auto* layout = new QVBoxLayout(this);
+    auto* bar = new QHBoxLayout;
+    m_add = new QPushButton(this);
+    m_add->setObjectName(QStringLiteral("addThrottle"));
+    m_add->setFocusPolicy(Qt::NoFocus);
+    connect(m_add, &QPushButton::clicked, this, [this] {
+        if (ThrottleWidget* throttle = addThrottle())
+            throttle->locomotiveChoice()->setFocus();
+    });
+    m_keysHint = new QLabel(this);
+    m_keysHint->setEnabled(false);
+    m_keysHint->setWordWrap(true);
+    bar->addWidget(m_add);
+    bar->addWidget(m_keysHint, 1);
+    layout->addLayout(bar);
+    m_banner = new LayoutStateBanner(this);
+    m_banner->setObjectName(QStringLiteral("throttleLayoutState"));
+    layout->addWidget(m_banner);
+
+    m_emptyText = new QLabel(this);
+    m_emptyText->setObjectName(QStringLiteral("throttlesEmpty"));
+    m_emptyText->setAlignment(Qt::AlignCenter);
+    m_emptyText->setEnabled(false);
+    m_emptyText->setWordWrap(true); // a narrow dock must not cut the sentence off
+    layout->addWidget(m_emptyText, 1);
+
+    m_scroll = new QScrollArea(this);
+    m_scroll->setWidgetResizable(true);
+    m_scroll->setFrameShape(QFrame::NoFrame);
+    auto* row = new QWidget(m_scroll);
+    m_row = new QHBoxLayout(row);
+    m_row->setContentsMargins(0, 0, 0, 0);
+    m_row->addStretch(1);
+    m_scroll->setWidget(row);
+    layout->addWidget(m_scroll, 1);
+
+    createShortcuts();
+    m_restoring = true;
+    for (const std::uint32_t loco : ThrottleSettings::load())
+        addThrottle(loco);
+    m_restoring = false;
+    retranslate();
+    updateEmptyState();
+}
+
+void ThrottlePanel::createShortcuts() {
+    for (int number = 1; number <= ThrottleSettings::MaximumThrottles; ++number) {
+        auto* shortcut = new QShortcut(QKeySequence(Qt::ALT | Qt::Key(Qt::Key_0 + number)), this);
+        connect(shortcut, &QShortcut::activated, this, [this, number] { focusThrottle(number); });
+    }
+}
+
+void ThrottlePanel::setRailway(model::Railway* railway) {
+    m_railway = railway;
+    m_banner->setRailway(railway);
+    for (ThrottleWidget* throttle : m_throttles)
+        throttle->setRailway(railway);
+    updateEmptyState();
+}
+
+ThrottleWidget* ThrottlePanel::addThrottle(std::uint32_t loco) {
+    if (m_throttles.size() >= ThrottleSettings::MaximumThrottles)
+        return nullptr;
+    auto* throttle = new ThrottleWidget(m_row->parentWidget());
+    throttle->setRailway(m_railway);
+    throttle->setLocomotive(loco);
+    connect(throttle, &ThrottleWidget::locomotiveChosen, this, &ThrottlePanel::save);
+    connect(throttle, &ThrottleWidget::closeRequested, this, [this, throttle] { removeThrottle(throttle); });
+    m_row->insertWidget(m_row->count() - 1, throttle); // before the stretch
+    m_throttles.push_back(throttle);
+    renumber();
+    save();
+    updateEmptyState();
+    return throttle;
+}
+
+void ThrottlePanel::removeThrottle(ThrottleWidget* throttle) {
+    if (!m_throttles.removeOne(throttle))
+        return;
+    throttle->deleteLater();
+    throttle->hide();
+    renumber();
+    save();
+    updateEmptyState();
+}
+
+bool ThrottlePanel::focusThrottle(int number) {
+    if (number < 1 || number > m_throttles.size())
+        return false;
+    ThrottleWidget* throttle = m_throttles[number - 1];
+    m_scroll->ensureWidgetVisible(throttle);
+    throttle->setFocus(Qt::ShortcutFocusReason);
+    return true;
+}
+
+QString ThrottlePanel::emptyText() const {
+    return m_emptyText->isHidden() ? QString() : m_emptyText->text();
+}
+
+void ThrottlePanel::renumber() {
+    for (qsizetype i = 0; i < m_throttles.size(); ++i)
+        m_throttles[i]->setNumber(int(i) + 1);
+}
+
+void ThrottlePanel::save() {
+    if (m_restoring)
+        return;
+    QList<std::uint32_t> locomotives;
+    for (const ThrottleWidget* throttle : m_throttles)
+        locomotives.push_back(throttle->locomotive());
+    ThrottleSettings::save(locomotives);
+}
+
+void ThrottlePanel::updateEmptyState() {
+    m_add->setEnabled(m_throttles.size() < ThrottleSettings::MaximumThrottles);
+    m_emptyText->setVisible(!m_railway || m_throttles.isEmpty());
+    m_scroll->setVisible(!m_throttles.isEmpty());
+    // Alone, the text sits in the middle of the page; above throttles, it is one line.
+    static_cast<QBoxLayout*>(layout())->setStretchFactor(m_emptyText, m_throttles.isEmpty() ? 1 : 0);
+    retranslate();
+}
+
+void ThrottlePanel::retranslate() {
+    m_add->setText(tr("Add throttle"));
+    m_add->setToolTip(tr("Open one more throttle (up to %1)").arg(ThrottleSettings::MaximumThrottles));
+    m_keysHint->setText(tr("Alt+1…9: keyboard on a throttle · Up/Down or +/−: speed · R: direction · "
+                           "0–9: F0–F9 · E: stop this loco · Space stays STOP for the layout"));
+    m_emptyText->setText(!m_railway ? tr("No station connected: throttles drive once a station is ready.")
+                                    : tr("No throttle open. “Add throttle” opens one for a locomotive."));
+}
+
+void ThrottlePanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+} // namespace stellwerk::ui

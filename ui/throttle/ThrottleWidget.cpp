@@ -1,0 +1,458 @@
+#include "throttle/ThrottleWidget.h"
+
+#include "common/LocomotiveTableModel.h"
+#include "common/NotReported.h"
+#include "throttle/FunctionPad.h"
+#include "throttle/SpeedScale.h"
+#include "throttle/StyleSheetSupport.h"
+
+#include <QComboBox>
+#include <QEvent>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QPushButton>
+#include <QSlider>
+#include <QTimer>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <algorithm>
+
+namespace stellwerk::ui {
+namespace {
+
+constexpr int SpeedUnitsPerPercent = model::Locomotive::MaxSpeed / 100;
+// A dragged slider sends at most one speed command per this many milliseconds.
+constexpr int SendIntervalMs = 40;
+
+const char* const UnacknowledgedProperty = "unacknowledged";
+
+QString throttleStyle() {
+    return QStringLiteral(
+               "QFrame#speedFrame { border: 2px solid transparent; border-radius: 4px; }"
+               "QFrame#speedFrame[unacknowledged=\"true\"] { border-color: %1; }"
+               "QPushButton[unacknowledged=\"true\"] { border: 2px solid %1; border-radius: 4px; padding: "
+               "5px; }"
+               "QPushButton#emergencyStop { background: #c82c2c; color: white; font-weight: bold;"
+               " border-radius: 4px; padding: 6px; }"
+               "QPushButton#emergencyStop:pressed { background: #9e1f1f; }"
+               "QPushButton#emergencyStop:disabled { background: palette(mid); color: palette(window); }"
+               "QPushButton#emergencyStop[unacknowledged=\"true\"] { border: 3px solid %1; }")
+        .arg(QLatin1String(WarningOutline));
+}
+
+int digitOf(const QKeyEvent* event) {
+    const int key = event->key();
+    return key >= Qt::Key_0 && key <= Qt::Key_9 ? key - Qt::Key_0 : -1;
+}
+
+} // namespace
+
+ThrottleWidget::ThrottleWidget(QWidget* parent) : QFrame(parent), m_sendTimer(new QTimer(this)) {
+    setObjectName(QStringLiteral("throttle"));
+    setFrameShape(QFrame::StyledPanel);
+    setFocusPolicy(Qt::StrongFocus);
+    setStyleSheet(throttleStyle());
+    m_sendTimer->setSingleShot(true);
+    m_sendTimer->setInterval(SendIntervalMs);
+    connect(m_sendTimer, &QTimer::timeout, this, &ThrottleWidget::sendSpeed);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(createHeader());
+    layout->addWidget(createSpeedArea(), 1);
+    m_direction = new QPushButton(this);
+    m_direction->setObjectName(QStringLiteral("direction"));
+    m_direction->setFocusPolicy(Qt::NoFocus);
+    connect(m_direction, &QPushButton::clicked, this, [this] {
+        if (m_railway && m_loco != 0)
+            m_railway->reverse(m_loco);
+    });
+    m_stop = new QPushButton(this);
+    m_stop->setObjectName(QStringLiteral("emergencyStop"));
+    m_stop->setFocusPolicy(Qt::NoFocus);
+    connect(m_stop, &QPushButton::clicked, this, &ThrottleWidget::emergencyStop);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_direction, 1);
+    buttons->addWidget(m_stop, 1);
+    layout->addLayout(buttons);
+    m_functions = new FunctionPad(this);
+    layout->addWidget(m_functions);
+    setFocusProxy(m_slider);
+    retranslate();
+    showLocomotive();
+}
+
+QWidget* ThrottleWidget::createHeader() {
+    auto* header = new QWidget(this);
+    auto* layout = new QGridLayout(header);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_numberLabel = new QLabel(header);
+    m_numberLabel->setObjectName(QStringLiteral("throttleNumber"));
+    m_choice = new QComboBox(header);
+    m_choice->setObjectName(QStringLiteral("locomotiveChoice"));
+    m_choice->setFocusPolicy(Qt::ClickFocus);
+    m_choice->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_choice->setMinimumContentsLength(20);
+    connect(m_choice, &QComboBox::activated, this, &ThrottleWidget::choose);
+    m_close = new QToolButton(header);
+    m_close->setObjectName(QStringLiteral("closeThrottle"));
+    m_close->setFocusPolicy(Qt::NoFocus);
+    m_close->setAutoRaise(true);
+    m_close->setText(QStringLiteral("✕"));
+    connect(m_close, &QToolButton::clicked, this, &ThrottleWidget::closeRequested);
+    m_details = new QLabel(header);
+    m_details->setObjectName(QStringLiteral("locomotiveDetails"));
+    m_details->setEnabled(false);
+    layout->addWidget(m_numberLabel, 0, 0);
+    layout->addWidget(m_choice, 0, 1);
+    layout->addWidget(m_close, 0, 2);
+    layout->addWidget(m_details, 1, 1, 1, 2);
+    layout->setColumnStretch(1, 1);
+    return header;
+}
+
+QWidget* ThrottleWidget::createSpeedArea() {
+    m_speedFrame = new QFrame(this);
+    m_speedFrame->setObjectName(QStringLiteral("speedFrame"));
+    auto* layout = new QGridLayout(m_speedFrame);
+    m_slider = new QSlider(Qt::Vertical, m_speedFrame);
+    m_slider->setObjectName(QStringLiteral("speed"));
+    m_slider->setRange(0, 100);
+    m_slider->setSingleStep(SpeedStepPercent);
+    m_slider->setPageStep(SpeedPageStepPercent);
+    m_slider->setMinimumHeight(160);
+    connect(m_slider, &QSlider::valueChanged, this, &ThrottleWidget::sliderMoved);
+    connect(m_slider, &QSlider::sliderReleased, this, &ThrottleWidget::showState);
+    m_scale = new SpeedScale(m_speedFrame);
+    m_speedText = new QLabel(m_speedFrame);
+    m_speedText->setObjectName(QStringLiteral("speedText"));
+    m_speedText->setAlignment(Qt::AlignCenter);
+    QFont big = m_speedText->font();
+    big.setPointSizeF(big.pointSizeF() * 1.4);
+    big.setBold(true);
+    m_speedText->setFont(big);
+    layout->addWidget(m_speedText, 0, 0, 1, 3);
+    layout->addWidget(m_slider, 1, 1, Qt::AlignHCenter);
+    layout->addWidget(m_scale, 1, 2);
+    layout->setColumnStretch(0, 1);
+    layout->setColumnStretch(3, 1);
+    return m_speedFrame;
+}
+
+void ThrottleWidget::setRailway(model::Railway* railway) {
+    if (m_railway)
+        disconnect(m_railway, nullptr, this, nullptr);
+    m_railway = railway;
+    m_speedInFlight = 0;
+    m_marks.clear();
+    if (m_railway) {
+        using model::Railway;
+        connect(m_railway, &Railway::loaded, this, &ThrottleWidget::showLocomotive);
+        connect(m_railway, &Railway::stateReportedChanged, this, &ThrottleWidget::showLocomotive);
+        connect(m_railway, &Railway::locomotivesChanged, this, &ThrottleWidget::locomotivesChanged);
+        connect(m_railway, &Railway::locomotiveCommandSent, this, &ThrottleWidget::commandSent);
+        connect(m_railway, &Railway::locomotiveCommandAcknowledged, this,
+                &ThrottleWidget::commandAcknowledged);
+        connect(m_railway, &Railway::locomotiveCommandFailed, this, &ThrottleWidget::commandFailed);
+        connect(m_railway, &QObject::destroyed, this, [this] { setRailway(nullptr); });
+    }
+    showLocomotive();
+}
+
+void ThrottleWidget::setLocomotive(std::uint32_t loco) {
+    if (loco == m_loco)
+        return;
+    m_loco = loco;
+    m_speedInFlight = 0;
+    m_wantedSpeed = -1;
+    m_sendTimer->stop();
+    m_marks.clear();
+    showLocomotive();
+    emit locomotiveChosen(loco);
+}
+
+void ThrottleWidget::setNumber(int number) {
+    m_number = number;
+    retranslate();
+}
+
+void ThrottleWidget::fillChoice() {
+    const QSignalBlocker blocker(m_choice);
+    m_choice->clear();
+    m_choice->addItem(tr("Choose a locomotive…"), 0U);
+    if (m_railway)
+        for (const model::Locomotive& loco : m_railway->state().locomotives().items())
+            m_choice->addItem(
+                QStringLiteral("%1 (%2)").arg(loco.displayName(), LocomotiveTableModel::addressText(loco)),
+                loco.id().value());
+    const int index = m_choice->findData(m_loco);
+    if (index < 0 && m_loco != 0) { // remembered, but not (yet) on this station
+        const bool loaded = m_railway && !m_railway->state().locomotives().items().empty();
+        m_choice->addItem(loaded ? tr("Locomotive 0x%1 (not on this station)").arg(m_loco, 0, 16)
+                                 : tr("Locomotive 0x%1 (waiting for the station)").arg(m_loco, 0, 16),
+                          m_loco);
+    }
+    m_choice->setCurrentIndex(std::max(m_choice->findData(m_loco), 0));
+}
+
+void ThrottleWidget::choose(int index) {
+    setLocomotive(m_choice->itemData(index).toUInt());
+    setFocus(); // back to the slider: keys drive, and Space stays the window's STOP
+}
+
+void ThrottleWidget::showLocomotive() {
+    fillChoice();
+    m_functions->setLocomotive(m_railway, m_loco);
+    const model::Locomotive* loco = m_railway && m_loco ? m_railway->locomotive(m_loco) : nullptr;
+    m_scale->setTachoMax(loco ? loco->tachoMax() : 0);
+    // While not reported, nothing shown here is vouched for: speed, direction and functions are greyed;
+    // the emergency stop stays usable.
+    const bool reported = loco && m_railway->isStateReported();
+    m_slider->setEnabled(reported);
+    m_direction->setEnabled(reported);
+    m_functions->setEnabled(reported);
+    m_speedText->setEnabled(reported);
+    m_stop->setEnabled(loco != nullptr);
+    for (const Control control : {Control::Speed, Control::Direction, Control::EmergencyStop})
+        clearMark(control);
+    retranslate();
+    showState();
+}
+
+void ThrottleWidget::locomotivesChanged(const QList<quint32>& ids) {
+    bool unknown = false;
+    for (const quint32 id : ids)
+        unknown = unknown || m_choice->findData(id) < 0;
+    if (unknown)
+        fillChoice(); // a locomotive another controller drives appeared on the bus
+    if (ids.contains(m_loco)) {
+        if (m_functions->isEmpty() && m_railway->locomotive(m_loco))
+            showLocomotive();
+        showState();
+    }
+}
+
+// Shows the confirmed speed, direction and functions; the slider only while nobody moves it.
+void ThrottleWidget::showState() {
+    const model::Locomotive* loco = m_railway && m_loco ? m_railway->locomotive(m_loco) : nullptr;
+    const bool userMoving = m_slider->isSliderDown() || m_sendTimer->isActive() || m_speedInFlight > 0;
+    if (!userMoving) {
+        const QSignalBlocker blocker(m_slider);
+        m_slider->setValue(loco ? (loco->speed() + SpeedUnitsPerPercent / 2) / SpeedUnitsPerPercent : 0);
+    }
+    m_functions->refresh();
+    retranslate();
+}
+
+void ThrottleWidget::sliderMoved(int percent) {
+    m_wantedSpeed = percent * SpeedUnitsPerPercent;
+    if (!m_sendTimer->isActive())
+        m_sendTimer->start();
+    retranslate(); // the speed text follows the slider
+}
+
+void ThrottleWidget::emergencyStop() {
+    m_sendTimer->stop(); // a speed still waiting to be sent must not start the locomotive again
+    m_wantedSpeed = -1;
+    if (m_railway && m_loco != 0)
+        m_railway->emergencyStop(m_loco);
+}
+
+void ThrottleWidget::sendSpeed() {
+    if (m_railway && m_loco != 0 && m_wantedSpeed >= 0)
+        m_railway->setSpeed(m_loco, m_wantedSpeed);
+    m_wantedSpeed = -1;
+}
+
+void ThrottleWidget::commandSent(quint32 loco, Control control, int) {
+    if (loco == m_loco && control == Control::Speed)
+        ++m_speedInFlight;
+}
+
+void ThrottleWidget::commandAcknowledged(quint32 loco, Control control, int function) {
+    if (loco != m_loco)
+        return;
+    if (control == Control::Function) {
+        m_functions->clearMark(function);
+        return;
+    }
+    if (control == Control::Speed)
+        m_speedInFlight = std::max(m_speedInFlight - 1, 0);
+    // The station carried out a command again: whatever failed before is history.
+    for (const Control marked : {Control::Speed, Control::Direction, Control::EmergencyStop})
+        if (marked == control || control == Control::EmergencyStop)
+            clearMark(marked);
+    showState();
+}
+
+void ThrottleWidget::commandFailed(quint32 loco, Control control, int function, const QString& reason) {
+    if (loco != m_loco)
+        return;
+    if (control == Control::Function) {
+        m_functions->markUnacknowledged(function, reason);
+        m_functions->refresh();
+        return;
+    }
+    if (control == Control::Speed)
+        m_speedInFlight = std::max(m_speedInFlight - 1, 0);
+    setMark(control, reason);
+    showState(); // back to what the station last confirmed
+}
+
+QWidget* ThrottleWidget::markedWidget(Control control) const {
+    switch (control) {
+    case Control::Speed:
+        return m_speedFrame;
+    case Control::Direction:
+        return m_direction;
+    case Control::EmergencyStop:
+        return m_stop;
+    case Control::Function:
+        break;
+    }
+    return nullptr;
+}
+
+void ThrottleWidget::setMark(Control control, const QString& reason) {
+    QWidget* widget = markedWidget(control);
+    if (!widget)
+        return;
+    m_marks[control] = reason;
+    widget->setProperty(UnacknowledgedProperty, true);
+    repolish(widget);
+    retranslate();
+}
+
+void ThrottleWidget::clearMark(Control control) {
+    QWidget* widget = markedWidget(control);
+    if (!widget || m_marks.erase(control) == 0)
+        return;
+    widget->setProperty(UnacknowledgedProperty, false);
+    repolish(widget);
+    retranslate();
+}
+
+bool ThrottleWidget::isUnacknowledged(Control control, int function) const {
+    return control == Control::Function ? m_functions->isMarked(function) : m_marks.contains(control);
+}
+
+QString ThrottleWidget::speedText() const {
+    return m_speedText->text();
+}
+
+bool ThrottleWidget::handlesKey(const QKeyEvent* event) const {
+    if (event->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
+        return false;
+    switch (event->key()) {
+    case Qt::Key_Up:
+    case Qt::Key_Down:
+    case Qt::Key_PageUp:
+    case Qt::Key_PageDown:
+    case Qt::Key_Plus:
+    case Qt::Key_Minus:
+    case Qt::Key_R:
+    case Qt::Key_E:
+        return true;
+    default:
+        return digitOf(event) >= 0; // never Space or Escape: the window's STOP keys
+    }
+}
+
+bool ThrottleWidget::event(QEvent* event) {
+    // Keep our keys from window shortcuts while a throttle has focus.
+    if (event->type() == QEvent::ShortcutOverride && handlesKey(static_cast<QKeyEvent*>(event))) {
+        event->accept();
+        return true;
+    }
+    return QFrame::event(event);
+}
+
+void ThrottleWidget::keyPressEvent(QKeyEvent* event) {
+    if (!handlesKey(event) || !m_railway || m_loco == 0) {
+        QFrame::keyPressEvent(event);
+        return;
+    }
+    switch (event->key()) {
+    case Qt::Key_Up:
+    case Qt::Key_Plus:
+        m_slider->triggerAction(QSlider::SliderSingleStepAdd);
+        break;
+    case Qt::Key_Down:
+    case Qt::Key_Minus:
+        m_slider->triggerAction(QSlider::SliderSingleStepSub);
+        break;
+    case Qt::Key_PageUp:
+        m_slider->triggerAction(QSlider::SliderPageStepAdd);
+        break;
+    case Qt::Key_PageDown:
+        m_slider->triggerAction(QSlider::SliderPageStepSub);
+        break;
+    case Qt::Key_R:
+        if (!event->isAutoRepeat())
+            m_railway->reverse(m_loco);
+        break;
+    case Qt::Key_E:
+        emergencyStop();
+        break;
+    default:
+        if (!event->isAutoRepeat())
+            m_functions->press(digitOf(event));
+        break;
+    }
+    event->accept();
+}
+
+void ThrottleWidget::keyReleaseEvent(QKeyEvent* event) {
+    if (const int digit = digitOf(event); digit >= 0 && !event->isAutoRepeat() && handlesKey(event)) {
+        m_functions->release(digit);
+        event->accept();
+        return;
+    }
+    QFrame::keyReleaseEvent(event);
+}
+
+void ThrottleWidget::retranslate() {
+    m_numberLabel->setText(m_number > 0 ? QString::number(m_number) : QString());
+    m_numberLabel->setToolTip(m_number > 0 ? tr("Alt+%1 puts the keyboard on this throttle").arg(m_number)
+                                           : QString());
+    m_close->setToolTip(tr("Close this throttle"));
+    if (m_choice->count() > 0 && m_choice->itemData(0).toUInt() == 0)
+        m_choice->setItemText(0, tr("Choose a locomotive…"));
+    const model::Locomotive* loco = m_railway && m_loco ? m_railway->locomotive(m_loco) : nullptr;
+    m_details->setText(
+        !loco ? QString()
+        : loco->iconName().isEmpty()
+            ? LocomotiveTableModel::addressText(*loco)
+            : tr("%1 · picture “%2”").arg(LocomotiveTableModel::addressText(*loco), loco->iconName()));
+    const int percent = m_slider->value();
+    m_speedText->setText(!loco                  ? tr("—")
+                         : loco->tachoMax() > 0 ? tr("%1 km/h").arg(percent * loco->tachoMax() / 100)
+                                                : tr("%1 %").arg(percent));
+    const bool backward = loco && loco->direction() == cs2::Direction::Backward;
+    m_direction->setText(backward ? tr("◀ Backward") : tr("Forward ▶"));
+    m_direction->setToolTip(tr("Change direction (R); the station stops the locomotive first"));
+    m_stop->setText(tr("Stop loco"));
+    m_stop->setToolTip(tr("Emergency stop for this locomotive only (E)"));
+    m_slider->setToolTip(tr("Speed: %1 % (Up/Down, +/-, PageUp/PageDown)").arg(percent));
+    m_speedText->setToolTip(NotReported::applies(m_railway) ? NotReported::reason() : QString());
+    if (NotReported::applies(m_railway))
+        for (QWidget* greyed : {static_cast<QWidget*>(m_slider), static_cast<QWidget*>(m_direction)})
+            greyed->setToolTip(NotReported::reason());
+    for (const auto& [control, reason] : m_marks) {
+        const QString tip = tr("The station did not acknowledge the last command: %1").arg(reason);
+        markedWidget(control)->setToolTip(tip);
+        if (control == Control::Speed)
+            m_slider->setToolTip(tip);
+    }
+}
+
+void ThrottleWidget::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    else if (event->type() == QEvent::PaletteChange)
+        restyle(this, throttleStyle()); // palette(...) in a style sheet is resolved when it is set
+    QFrame::changeEvent(event);
+}
+
+} // namespace stellwerk::ui

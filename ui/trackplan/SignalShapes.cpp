@@ -1,0 +1,109 @@
+// Signals: the track runs west to east and the signal stands beside it on the south side, facing the
+// trains that come from the west. Positions follow the CS2: 0 stop (Hp0), 1 proceed (Hp1), 2 slow
+// (Hp2), 3 shunting (Sh1) on signals that have it.
+#include "trackplan/TrackShapes.h"
+
+#include <vector>
+
+namespace stellwerk::ui::shapes {
+namespace {
+
+enum class Lamp { Red, Green, Yellow, White };
+
+std::vector<Lamp> lampsOf(const QString& type) {
+    const bool shunting = type.endsWith(QLatin1Char('s'));
+    std::vector<Lamp> lamps{Lamp::Red};
+    if (!type.contains(QLatin1String("hp02")))
+        lamps.push_back(Lamp::Green);
+    if (type.contains(QLatin1String("hp02")) || type.contains(QLatin1String("hp012")))
+        lamps.push_back(Lamp::Yellow);
+    if (shunting)
+        lamps.push_back(Lamp::White);
+    return lamps;
+}
+
+QColor lampColor(const TrackColors& colors, Lamp lamp) {
+    switch (lamp) {
+    case Lamp::Red:
+        return colors.red;
+    case Lamp::Green:
+        return colors.green;
+    case Lamp::Yellow:
+        return colors.yellow;
+    case Lamp::White:
+        break;
+    }
+    return colors.white;
+}
+
+// The colour a signal shows in its position: red at stop, green otherwise, the track's when unknown.
+QColor aspectColor(const TileCanvas& c) {
+    if (c.look.position < 0)
+        return c.colors.track;
+    return c.look.position == 0 ? c.colors.red : c.colors.green;
+}
+
+void mast(TileCanvas& c, double x, double top) {
+    c.line({x, top}, {x, 0.95}, c.colors.track, 0.05);
+    c.line({x - 0.07, 0.95}, {x + 0.07, 0.95}, c.colors.track, 0.05);
+}
+
+} // namespace
+
+void lightSignal(TileCanvas& c) {
+    c.unit();
+    c.line(West, East, c.trackColor());
+    const std::vector<Lamp> lamps = lampsOf(c.look.type);
+    mast(c, 0.16, 0.66);
+    QPainterPath head;
+    head.addRoundedRect(QRectF(0.22, 0.7, 0.08 + 0.16 * double(lamps.size()), 0.2), 0.06, 0.06);
+    c.fill(head, c.colors.background, c.colors.track, 0.035);
+    for (std::size_t i = 0; i < lamps.size(); ++i) {
+        QColor color = lampColor(c.colors, lamps[i]);
+        if (c.look.position < 0)
+            color.setAlphaF(0.45f);
+        else if (c.look.position != int(i))
+            color = c.colors.dim;
+        QPainterPath bulb;
+        bulb.addEllipse(QPointF(0.34 + 0.16 * double(i), 0.8), 0.06, 0.06);
+        c.fill(bulb, color, QColor());
+    }
+}
+
+void formSignal(TileCanvas& c) {
+    c.unit();
+    c.line(West, East, c.trackColor());
+    const bool twoArms =
+        c.look.type.contains(QLatin1String("hp02")) || c.look.type.contains(QLatin1String("hp012"));
+    mast(c, 0.3, 0.62);
+    const auto arm = [&c](double y, bool raised) {
+        const QPointF root(0.3, y);
+        c.line(root, raised ? root + QPointF(0.32, -0.22) : root + QPointF(0.45, 0), aspectColor(c), 0.08);
+        QPainterPath hub;
+        hub.addEllipse(root, 0.04, 0.04);
+        c.fill(hub, c.colors.track, QColor());
+    };
+    arm(0.7, c.look.position >= 1);
+    if (twoArms)
+        arm(0.86, c.look.position == 2);
+    if (c.look.type.endsWith(QLatin1Char('s'))) {
+        QPainterPath lamp;
+        lamp.addEllipse(QPointF(0.18, 0.78), 0.05, 0.05);
+        c.fill(lamp, c.look.position == 3 ? c.colors.white : c.colors.dim, c.colors.track, 0.02);
+    }
+}
+
+void shuntingSignal(TileCanvas& c) {
+    c.unit();
+    c.line(West, East, c.trackColor());
+    QPainterPath disc;
+    disc.moveTo(0.25, 0.95);
+    disc.arcTo(QRectF(0.25, 0.62, 0.4, 0.66), 180, -180);
+    disc.closeSubpath();
+    c.fill(disc, c.colors.white, c.colors.track, 0.035);
+    const QPointF centre(0.45, 0.84);
+    const QPointF reach = c.look.position == 1 ? QPointF(0.1, -0.1) : QPointF(0.14, 0);
+    c.line(centre - reach, centre + reach, c.look.position < 0 ? c.colors.dim : QColor(Qt::black), 0.05);
+}
+
+} // namespace stellwerk::ui::shapes

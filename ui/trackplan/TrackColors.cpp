@@ -1,0 +1,36 @@
+#include "trackplan/TrackColors.h"
+
+#include <QPalette>
+
+namespace stellwerk::ui {
+namespace {
+
+QColor mixed(const QColor& a, const QColor& b, double t) {
+    return QColor::fromRgbF(float(a.redF() * (1 - t) + b.redF() * t),
+                            float(a.greenF() * (1 - t) + b.greenF() * t),
+                            float(a.blueF() * (1 - t) + b.blueF() * t));
+}
+
+} // namespace
+
+TrackColors TrackColors::from(const QPalette& palette) {
+    const QColor base = palette.color(QPalette::Base);
+    const QColor text = palette.color(QPalette::Text);
+    const bool dark = base.lightnessF() < 0.5;
+    TrackColors colors;
+    colors.background = base;
+    colors.grid = mixed(base, text, 0.07);
+    colors.track = mixed(text, base, 0.1);
+    colors.dim = mixed(text, base, 0.72);
+    colors.occupied = dark ? QColor(255, 112, 67) : QColor(214, 48, 39);
+    colors.red = dark ? QColor(255, 82, 82) : QColor(211, 47, 47);
+    colors.green = dark ? QColor(105, 240, 130) : QColor(46, 160, 67);
+    colors.yellow = dark ? QColor(255, 213, 79) : QColor(230, 160, 0);
+    colors.white = dark ? QColor(240, 240, 240) : QColor(250, 250, 250);
+    colors.button = palette.color(QPalette::Button);
+    colors.highlight = palette.color(QPalette::Highlight);
+    colors.text = text;
+    return colors;
+}
+
+} // namespace stellwerk::ui

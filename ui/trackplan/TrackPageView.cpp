@@ -1,0 +1,150 @@
+#include "trackplan/TrackPageView.h"
+
+#include "model/TrackLayout.h"
+
+#include <QContextMenuEvent>
+#include <QHelpEvent>
+#include <QPaintEvent>
+#include <QPainter>
+#include <QToolTip>
+
+namespace stellwerk::ui {
+namespace {
+
+constexpr int Margin = 8;
+constexpr int MinimumColumns = 20; // the CS2's page is at least 20 x 15 tiles
+constexpr int MinimumRows = 15;
+
+} // namespace
+
+TrackPageView::TrackPageView(std::shared_ptr<const model::LayoutPage> page, LookOf look, TextOf toolTip,
+                             QWidget* parent)
+    : QWidget(parent), m_pageOwner(std::move(page)), m_page(*m_pageOwner), m_look(std::move(look)),
+      m_toolTip(std::move(toolTip)), m_colors(TrackColors::from(palette())) {
+    setObjectName(QStringLiteral("trackPageView"));
+    setMouseTracking(false);
+    setAttribute(Qt::WA_OpaquePaintEvent);
+}
+
+void TrackPageView::setTileSize(int pixels) {
+    if (pixels == m_tileSize)
+        return;
+    m_tileSize = pixels;
+    updateGeometry();
+    resize(sizeHint());
+    update();
+}
+
+void TrackPageView::setDimmed(bool dimmed) {
+    if (dimmed == m_dimmed)
+        return;
+    m_dimmed = dimmed;
+    update();
+}
+
+QSize TrackPageView::gridSize() const {
+    return {std::max(m_page.columns, MinimumColumns), std::max(m_page.rows, MinimumRows)};
+}
+
+QSize TrackPageView::sizeHint() const {
+    return gridSize() * m_tileSize + QSize(2 * Margin, 2 * Margin);
+}
+
+QRect TrackPageView::tileRect(int tile) const {
+    const model::LayoutTile& t = m_page.tiles[std::size_t(tile)];
+    return {Margin + t.position.column * m_tileSize, Margin + t.position.row * m_tileSize, m_tileSize,
+            m_tileSize};
+}
+
+std::optional<int> TrackPageView::tileAt(QPoint point) const {
+    for (int i = int(m_page.tiles.size()) - 1; i >= 0; --i)
+        if (tileRect(i).contains(point) && m_page.tiles[std::size_t(i)].type != QLatin1String("leer"))
+            return i;
+    return std::nullopt;
+}
+
+void TrackPageView::updateTile(int tile) {
+    const QRect cell = tileRect(tile);
+    if (m_page.tiles[std::size_t(tile)].category == cs2config::TrackCategory::Text)
+        update(QRect(0, cell.top(), width(), cell.height()).united(cell.adjusted(0, -width(), 0, width())));
+    else
+        update(cell);
+}
+
+void TrackPageView::paintGrid(QPainter& painter, const QRect& area) const {
+    painter.fillRect(area, m_colors.background);
+    painter.setPen(QPen(m_colors.grid, 1));
+    const QSize grid = gridSize();
+    for (int x = 0; x <= grid.width(); ++x)
+        painter.drawLine(Margin + x * m_tileSize, Margin, Margin + x * m_tileSize,
+                         Margin + grid.height() * m_tileSize);
+    for (int y = 0; y <= grid.height(); ++y)
+        painter.drawLine(Margin, Margin + y * m_tileSize, Margin + grid.width() * m_tileSize,
+                         Margin + y * m_tileSize);
+}
+
+void TrackPageView::paintEvent(QPaintEvent* event) {
+    QPainter painter(this);
+    const QRect area = event->rect();
+    painter.setClipRect(area);
+    paintGrid(painter, area);
+    m_pictures.prepare(m_tileSize, devicePixelRatioF(), m_colors, font());
+    for (int i = 0; i < int(m_page.tiles.size()); ++i) {
+        const bool label = m_page.tiles[std::size_t(i)].category == cs2config::TrackCategory::Text;
+        const QRect cell = tileRect(i);
+        constexpr int reach = TrackTileCache::Overhang;
+        if (!label && !cell.adjusted(-reach, -reach, reach, reach).intersects(area))
+            continue;
+        const TrackTileLook look = m_look(i);
+        if (label && !m_pictures.area(look, cell.topLeft()).intersects(area))
+            continue; // labels may reach into the area from elsewhere
+        m_pictures.paint(painter, cell.topLeft(), look);
+    }
+    if (m_dimmed) { // a wash of the background over every state: "not reported", at a glance
+        QColor wash = m_colors.background;
+        wash.setAlpha(150);
+        painter.fillRect(area, wash);
+    }
+}
+
+void TrackPageView::mouseReleaseEvent(QMouseEvent* event) {
+    if (event->button() == Qt::LeftButton)
+        if (const std::optional<int> tile = tileAt(event->position().toPoint()))
+            emit tileClicked(*tile);
+    QWidget::mouseReleaseEvent(event);
+}
+
+void TrackPageView::contextMenuEvent(QContextMenuEvent* event) {
+    if (const std::optional<int> tile = tileAt(event->pos()))
+        emit tileMenuRequested(*tile, event->globalPos());
+}
+
+void TrackPageView::wheelEvent(QWheelEvent* event) {
+    if (!(event->modifiers() & Qt::ControlModifier)) {
+        QWidget::wheelEvent(event);
+        return;
+    }
+    const int steps = event->angleDelta().y() / 120;
+    if (steps != 0)
+        emit zoomRequested(steps);
+    event->accept();
+}
+
+bool TrackPageView::event(QEvent* event) {
+    if (event->type() == QEvent::ToolTip) {
+        auto* help = static_cast<QHelpEvent*>(event);
+        const std::optional<int> tile = tileAt(help->pos());
+        if (tile)
+            QToolTip::showText(help->globalPos(), m_toolTip(*tile), this, tileRect(*tile));
+        else
+            QToolTip::hideText();
+        return true;
+    }
+    if (event->type() == QEvent::PaletteChange) {
+        m_colors = TrackColors::from(palette());
+        update();
+    }
+    return QWidget::event(event);
+}
+
+} // namespace stellwerk::ui

@@ -1,0 +1,72 @@
+#pragma once
+
+#include "trackplan/TrackColors.h"
+#include "trackplan/TrackTileCache.h"
+#include "trackplan/TrackTileLook.h"
+
+#include <QWidget>
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace stellwerk::model {
+struct LayoutPage;
+}
+
+namespace stellwerk::ui {
+
+// One page of the track plan on the CS2 grid. It draws the tiles it is given and says which tile was
+// clicked; what a tile looks like now and what a click does are the panel's business. It shares the
+// ownership of its page, so that it can never draw a page that a replaced railway already freed.
+class TrackPageView final : public QWidget {
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(TrackPageView)
+
+public:
+    using LookOf = std::function<TrackTileLook(int tile)>;
+    using TextOf = std::function<QString(int tile)>;
+
+    TrackPageView(std::shared_ptr<const model::LayoutPage> page, LookOf look, TextOf toolTip,
+                  QWidget* parent = nullptr);
+
+    int tileSize() const { return m_tileSize; }
+    void setTileSize(int pixels);
+    // The tile's rectangle in widget coordinates; the tile at a point (null where there is none).
+    QRect tileRect(int tile) const;
+    std::optional<int> tileAt(QPoint point) const;
+    // Repaints one tile (and the label it may carry beyond its cell).
+    void updateTile(int tile);
+    QSize sizeHint() const override;
+    // The size the page needs at one pixel per tile: columns x rows.
+    QSize gridSize() const;
+    // Greyed: the states drawn are the last the station reported, not what it reports now.
+    void setDimmed(bool dimmed);
+    bool isDimmed() const { return m_dimmed; }
+
+signals:
+    void tileClicked(int tile);
+    void tileMenuRequested(int tile, QPoint globalPosition);
+    // Ctrl + wheel: positive steps zoom in.
+    void zoomRequested(int steps);
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void contextMenuEvent(QContextMenuEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    bool event(QEvent* event) override;
+
+private:
+    void paintGrid(QPainter& painter, const QRect& area) const;
+
+    std::shared_ptr<const model::LayoutPage> m_pageOwner;
+    const model::LayoutPage& m_page;
+    LookOf m_look;
+    TextOf m_toolTip;
+    TrackColors m_colors;
+    TrackTileCache m_pictures;
+    int m_tileSize = 40;
+    bool m_dimmed = false;
+};
+
+} // namespace stellwerk::ui

@@ -1,0 +1,455 @@
+#include "trackplan/TrackPlanPanel.h"
+
+#include "common/LayoutStateBanner.h"
+#include "common/NotReported.h"
+#include "connection/StationConnection.h"
+#include "model/Railway.h"
+#include "trackplan/TrackPageView.h"
+#include "trackplan/TrackTileInfo.h"
+#include "trackplan/TrackTileLook.h"
+
+#include <QAction>
+#include <QEvent>
+#include <QFileDialog>
+#include <QLabel>
+#include <QMenu>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QTabWidget>
+#include <QToolBar>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+
+namespace stellwerk::ui {
+namespace {
+
+constexpr int MinimumTile = 12;
+constexpr int MaximumTile = 160;
+
+// The downloaded form of an opened folder's pages, which model::TrackLayout is built from.
+std::vector<station::DownloadedPage> downloadedPages(const cs2config::TrackLayout& layout) {
+    std::vector<station::DownloadedPage> pages;
+    for (const cs2config::TrackLayoutPage& page : layout.pages)
+        pages.push_back({page.id, page.name, page.page});
+    return pages;
+}
+
+} // namespace
+
+TrackPlanPanel::TrackPlanPanel(QWidget* parent) : QWidget(parent) {
+    setObjectName(QStringLiteral("trackPlanPanel"));
+    auto* layout = new QVBoxLayout(this);
+    m_toolBar = new QToolBar(this);
+    m_open = m_toolBar->addAction(QString(), this, &TrackPlanPanel::chooseFolderToOpen);
+    m_station = m_toolBar->addAction(QString(), this, &TrackPlanPanel::showStationPlan);
+    m_export = m_toolBar->addAction(QString(), this, &TrackPlanPanel::chooseFolderToExport);
+    m_toolBar->addSeparator();
+    m_zoomOut = m_toolBar->addAction(QString(), this, &TrackPlanPanel::zoomOut);
+    m_zoomIn = m_toolBar->addAction(QString(), this, &TrackPlanPanel::zoomIn);
+    m_fit = m_toolBar->addAction(QString(), this, &TrackPlanPanel::fitToWindow);
+    m_zoomIn->setShortcuts({QKeySequence::ZoomIn, QKeySequence(Qt::CTRL | Qt::Key_Equal)});
+    m_zoomOut->setShortcut(QKeySequence::ZoomOut);
+    m_fit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_0));
+    for (QAction* action : {m_zoomIn, m_zoomOut, m_fit})
+        action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_toolBar->addSeparator();
+    m_source = new QLabel(m_toolBar);
+    m_source->setObjectName(QStringLiteral("trackPlanSource"));
+    m_toolBar->addWidget(m_source);
+    layout->addWidget(m_toolBar);
+
+    m_banner = new QLabel(this);
+    m_banner->setObjectName(QStringLiteral("trackPlanProblem"));
+    m_banner->setWordWrap(true);
+    m_banner->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_banner->setStyleSheet(QStringLiteral("QLabel { background: #c82c2c; color: white; padding: 8px;"
+                                           " border-radius: 4px; }"));
+    m_banner->hide();
+    layout->addWidget(m_banner);
+    m_layoutState = new LayoutStateBanner(this);
+    m_layoutState->setObjectName(QStringLiteral("trackPlanLayoutState"));
+    layout->addWidget(m_layoutState);
+
+    m_emptyText = new QLabel(this);
+    m_emptyText->setAlignment(Qt::AlignCenter);
+    m_emptyText->setEnabled(false);
+    layout->addWidget(m_emptyText, 1);
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName(QStringLiteral("trackPlanPages"));
+    m_tabs->setDocumentMode(true);
+    layout->addWidget(m_tabs, 1);
+    retranslate();
+    rebuild();
+}
+
+TrackPlanPanel::~TrackPlanPanel() = default;
+
+void TrackPlanPanel::setRailway(model::Railway* railway) {
+    if (m_railway)
+        disconnect(m_railway, nullptr, this, nullptr);
+    m_railway = railway;
+    if (m_railway) {
+        connect(m_railway, &model::Railway::loaded, this, &TrackPlanPanel::rebuild);
+        connect(m_railway, &model::Railway::tilesChanged, this, &TrackPlanPanel::tilesChanged);
+        connect(m_railway, &model::Railway::routeStarted, this, &TrackPlanPanel::routeChanged);
+        connect(m_railway, &model::Railway::routeFinished, this, &TrackPlanPanel::routeChanged);
+        connect(m_railway, &model::Railway::routeFailed, this, [this](qint64 route) { routeChanged(route); });
+        connect(m_railway, &model::Railway::stateReportedChanged, this,
+                &TrackPlanPanel::stateReportedChanged);
+        connect(m_railway, &QObject::destroyed, this, [this] { setRailway(nullptr); });
+    }
+    m_layoutState->setRailway(railway);
+    if (!m_folder)
+        rebuild();
+    updateActions();
+}
+
+void TrackPlanPanel::setConnection(connection::StationConnection* connection) {
+    m_connection = connection;
+}
+
+bool TrackPlanPanel::openFolder(const QString& folder) {
+    cs2config::LayoutFolder::Content content = cs2config::LayoutFolder::open(folder.toStdString());
+    if (!content.problem.empty()) {
+        showProblem(tr("Cannot open the layout: %1").arg(QString::fromStdString(content.problem)));
+        return false;
+    }
+    m_folderNames.clear();
+    if (content.accessories)
+        for (const cs2config::Accessory& accessory : content.accessories->accessories)
+            m_folderNames[accessory.id] = QString::fromStdString(accessory.name);
+    m_folderLayout = model::TrackLayout(downloadedPages(content.layout));
+    const QString findings = findingsText(content.findings);
+    m_folder = std::move(content);
+    showProblem(findings);
+    rebuild();
+    return true;
+}
+
+// What the layout check found, the first few in full (`stellwerk-cli cs2 check DIR` lists them all).
+QString TrackPlanPanel::findingsText(const std::vector<cs2config::LayoutFinding>& findings) const {
+    if (findings.empty())
+        return {};
+    constexpr int Shown = 5;
+    QStringList lines{tr("The layout's files disagree in %n place(s):", "", int(findings.size()))};
+    for (std::size_t i = 0; i < findings.size() && i < std::size_t(Shown); ++i) {
+        const cs2config::LayoutFinding& finding = findings[i];
+        const QString where =
+            finding.line > 0
+                ? QStringLiteral("%1:%2").arg(QString::fromStdString(finding.file)).arg(finding.line)
+                : QString::fromStdString(finding.file);
+        lines << QStringLiteral("%1: %2").arg(where, QString::fromStdString(finding.message));
+    }
+    if (findings.size() > std::size_t(Shown))
+        lines << tr("... and %n more.", "", int(findings.size()) - Shown);
+    return lines.join(QLatin1Char('\n'));
+}
+
+void TrackPlanPanel::showStationPlan() {
+    m_folder.reset();
+    m_folderLayout = {};
+    m_folderNames.clear();
+    showProblem(QString());
+    rebuild();
+}
+
+bool TrackPlanPanel::exportTo(const QString& folder) {
+    cs2config::ConfigFolderFiles files;
+    if (m_folder) {
+        files = cs2config::LayoutFolder::filesOf(m_folder->layout.plan, m_folder->layout.pages);
+        files.merge(cs2config::LayoutFolder::companionFiles(m_folder->configDirectory));
+    } else if (m_connection && m_connection->startupResult().trackPlan) {
+        const station::StartupResult& result = m_connection->startupResult();
+        std::vector<cs2config::TrackLayoutPage> pages;
+        for (const station::DownloadedPage& downloaded : result.pages) {
+            cs2config::TrackLayoutPage& page = pages.emplace_back();
+            page.id = downloaded.id;
+            page.name = downloaded.name;
+            page.loaded = true;
+            page.page = downloaded.page;
+        }
+        files = cs2config::LayoutFolder::filesOf(*result.trackPlan, pages);
+        files.merge(cs2config::LayoutFolder::stationFiles(result.files));
+    } else {
+        showProblem(tr("There is no track plan to export: connect to a station or open a layout first."));
+        return false;
+    }
+    const std::string problem = cs2config::LayoutFolder::write(folder.toStdString(), files);
+    showProblem(problem.empty() ? QString()
+                                : tr("Cannot export the layout: %1").arg(QString::fromStdString(problem)));
+    return problem.empty();
+}
+
+TrackPageView* TrackPlanPanel::pageView(int page) const {
+    return page >= 0 && page < int(m_views.size()) ? m_views[std::size_t(page)] : nullptr;
+}
+
+void TrackPlanPanel::rebuild() {
+    const int current = m_tabs->currentIndex();
+    m_views.clear();
+    while (m_tabs->count() > 0) {
+        QWidget* page = m_tabs->widget(0);
+        m_tabs->removeTab(0);
+        delete page;
+    }
+    m_live = !m_folder && m_railway;
+    m_layout = m_folder ? std::make_shared<const model::TrackLayout>(m_folderLayout)
+               : m_live ? std::make_shared<const model::TrackLayout>(m_railway->layout())
+                        : nullptr;
+    indexRoutes();
+    if (m_layout)
+        for (int i = 0; i < int(m_layout->pages().size()); ++i)
+            addPage(i);
+    if (current >= 0 && current < m_tabs->count())
+        m_tabs->setCurrentIndex(current);
+    m_tabs->setVisible(m_tabs->count() > 0);
+    m_emptyText->setVisible(m_tabs->count() == 0);
+    updateActions();
+    retranslate();
+    emit layoutChanged();
+}
+
+void TrackPlanPanel::addPage(int index) {
+    const model::LayoutPage& page = m_layout->pages()[std::size_t(index)];
+    auto* scroll = new QScrollArea(m_tabs);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto* view = new TrackPageView(
+        std::shared_ptr<const model::LayoutPage>(m_layout, &page),
+        [this, index, shown = m_layout](int tile) {
+            return lookOn(*shown, {index, tile});
+        },
+        [this, index, shown = m_layout](int tile) {
+            return toolTipOn(*shown, {index, tile});
+        },
+        scroll);
+    view->setTileSize(m_tileSize);
+    view->setDimmed(m_live && !isReported());
+    scroll->setWidget(view);
+    connect(view, &TrackPageView::tileClicked, this, [this, index](int tile) { tileClicked(index, tile); });
+    connect(view, &TrackPageView::tileMenuRequested, this,
+            [this, index](int tile, QPoint where) { showTileMenu(index, tile, where); });
+    connect(view, &TrackPageView::zoomRequested, this,
+            [this](int steps) { setTileSize(int(m_tileSize * std::pow(1.2, steps))); });
+    m_views.push_back(view);
+    m_tabs->addTab(scroll, page.name.isEmpty() ? tr("Page %1").arg(page.id) : page.name);
+}
+
+void TrackPlanPanel::indexRoutes() {
+    m_routeTiles.clear();
+    if (!m_layout)
+        return;
+    for (int p = 0; p < int(m_layout->pages().size()); ++p) {
+        const auto& tiles = m_layout->pages()[std::size_t(p)].tiles;
+        for (int t = 0; t < int(tiles.size()); ++t)
+            if (tiles[std::size_t(t)].route)
+                m_routeTiles[*tiles[std::size_t(t)].route].push_back({p, t});
+    }
+}
+
+TrackTileLook TrackPlanPanel::lookOf(model::TileRef ref) const {
+    return lookOn(*m_layout, ref);
+}
+
+QString TrackPlanPanel::toolTipOf(model::TileRef ref) const {
+    return toolTipOn(*m_layout, ref);
+}
+
+// `layout` may be one the panel no longer shows (a page view kept beyond a rebuild): then only its tiles.
+TrackTileLook TrackPlanPanel::lookOn(const model::TrackLayout& layout, model::TileRef ref) const {
+    const model::LayoutTile& tile = layout.tile(ref);
+    TrackTileLook look{tile.type, tile.category, tile.rotation, -1, false, false, tile.text};
+    if (!isLive() || &layout != m_layout.get())
+        return look;
+    if (tile.accessory)
+        if (const model::Accessory* accessory = m_railway->accessory(*tile.accessory))
+            look.position = accessory->position();
+    if (tile.contact)
+        if (const model::FeedbackContact* contact = m_railway->contact(*tile.contact))
+            look.occupied = contact->occupied();
+    if (tile.route)
+        if (const model::Route* route = m_railway->route(*tile.route))
+            look.running = route->running();
+    return look;
+}
+
+QString TrackPlanPanel::toolTipOn(const model::TrackLayout& layout, model::TileRef ref) const {
+    const model::LayoutTile& tile = layout.tile(ref);
+    if (&layout != m_layout.get())
+        return TrackTileInfo::toolTip(tile, QString());
+    QString name;
+    if (tile.accessory)
+        name = accessoryName(*tile.accessory);
+    else if (tile.route && isLive())
+        if (const model::Route* route = m_railway->route(*tile.route))
+            name = route->name();
+    const QString tip = TrackTileInfo::toolTip(tile, name);
+    const bool hasState = tile.accessory || tile.contact || tile.route;
+    return hasState && isLive() && !isReported() ? tip + QStringLiteral("\n") + NotReported::reason() : tip;
+}
+
+bool TrackPlanPanel::isLive() const {
+    return m_live && m_railway;
+}
+
+bool TrackPlanPanel::isReported() const {
+    return m_railway && m_railway->isStateReported();
+}
+
+// Greyed while not reported; the states drawn come back as they were read again.
+void TrackPlanPanel::stateReportedChanged() {
+    for (TrackPageView* view : m_views)
+        view->setDimmed(isLive() && !isReported());
+}
+
+QString TrackPlanPanel::accessoryName(std::int64_t id) const {
+    if (m_folder) {
+        const auto it = m_folderNames.find(id);
+        return it == m_folderNames.end() ? QString() : it->second;
+    }
+    const model::Accessory* accessory = m_railway ? m_railway->accessory(id) : nullptr;
+    return accessory ? accessory->name() : QString();
+}
+
+void TrackPlanPanel::tilesChanged(const QList<model::TileRef>& tiles) {
+    if (!isLive())
+        return;
+    for (const model::TileRef& ref : tiles)
+        if (TrackPageView* view = pageView(ref.page))
+            view->updateTile(ref.tile);
+}
+
+void TrackPlanPanel::routeChanged(qint64 route) {
+    const auto it = m_routeTiles.find(route);
+    if (it == m_routeTiles.end() || !isLive())
+        return;
+    for (const model::TileRef& ref : it->second)
+        if (TrackPageView* view = pageView(ref.page))
+            view->updateTile(ref.tile);
+}
+
+void TrackPlanPanel::tileClicked(int page, int tile) {
+    const model::LayoutTile& t = m_layout->tile({page, tile});
+    if (t.page) {
+        goToPage(*t.page);
+        return;
+    }
+    if (!isLive() || !isReported())
+        return; // switching from a state nobody vouches for would be a guess
+    if (t.route) {
+        m_railway->runRoute(*t.route);
+    } else if (t.accessory) {
+        if (const model::Accessory* accessory = m_railway->accessory(*t.accessory))
+            m_railway->switchAccessory(accessory->id(),
+                                       (accessory->position() + 1) % std::max(1, accessory->positionCount()));
+    }
+}
+
+void TrackPlanPanel::showTileMenu(int page, int tile, QPoint where) {
+    const model::LayoutTile& t = m_layout->tile({page, tile});
+    if (!t.accessory || !isLive() || !isReported())
+        return;
+    const model::Accessory* accessory = m_railway->accessory(*t.accessory);
+    if (!accessory)
+        return;
+    QMenu menu(this);
+    menu.setObjectName(QStringLiteral("trackTileMenu"));
+    for (int position = 0; position < accessory->positionCount(); ++position) {
+        QAction* action = menu.addAction(TrackTileInfo::positionName(t.type, t.category, position));
+        action->setCheckable(true);
+        action->setChecked(position == accessory->position());
+        const std::int64_t id = accessory->id();
+        connect(action, &QAction::triggered, this, [this, id, position] {
+            if (m_railway)
+                m_railway->switchAccessory(id, position);
+        });
+    }
+    menu.exec(where);
+}
+
+void TrackPlanPanel::goToPage(std::int64_t pageId) {
+    for (int i = 0; i < int(m_layout->pages().size()); ++i)
+        if (m_layout->pages()[std::size_t(i)].id == pageId)
+            m_tabs->setCurrentIndex(i);
+}
+
+void TrackPlanPanel::setTileSize(int pixels) {
+    m_tileSize = std::clamp(pixels, MinimumTile, MaximumTile);
+    for (TrackPageView* view : m_views)
+        view->setTileSize(m_tileSize);
+}
+
+void TrackPlanPanel::zoomIn() {
+    setTileSize(std::max(m_tileSize + 1, int(m_tileSize * 1.2)));
+}
+
+void TrackPlanPanel::zoomOut() {
+    setTileSize(std::min(m_tileSize - 1, int(m_tileSize / 1.2)));
+}
+
+void TrackPlanPanel::fitToWindow() {
+    TrackPageView* view = pageView(m_tabs->currentIndex());
+    if (!view)
+        return;
+    const QSize room = m_tabs->currentWidget()->size() - QSize(20, 20);
+    const QSize grid = view->gridSize();
+    setTileSize(std::min(room.width() / grid.width(), room.height() / grid.height()));
+}
+
+QString TrackPlanPanel::problemText() const {
+    return m_banner->isHidden() ? QString() : m_banner->text();
+}
+
+void TrackPlanPanel::showProblem(const QString& text) {
+    m_banner->setText(text);
+    m_banner->setVisible(!text.isEmpty());
+}
+
+void TrackPlanPanel::chooseFolderToOpen() {
+    if (m_mayOpen && !m_mayOpen())
+        return;
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Open a CS2 layout folder"));
+    if (!folder.isEmpty())
+        openFolder(folder);
+}
+
+void TrackPlanPanel::chooseFolderToExport() {
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Export the layout into a folder"));
+    if (!folder.isEmpty())
+        exportTo(folder);
+}
+
+void TrackPlanPanel::updateActions() {
+    m_station->setVisible(m_folder.has_value() && m_railway);
+    m_export->setEnabled(m_folder.has_value() || (m_connection && m_connection->startupResult().trackPlan));
+    for (QAction* action : {m_zoomIn, m_zoomOut, m_fit})
+        action->setEnabled(!m_views.empty());
+}
+
+void TrackPlanPanel::retranslate() {
+    m_open->setText(tr("Open layout..."));
+    m_open->setToolTip(tr("Show the track plan of a CS2 configuration folder"));
+    m_station->setText(tr("Station's plan"));
+    m_export->setText(tr("Export..."));
+    m_export->setToolTip(tr("Write the layout as a CS2 configuration folder"));
+    m_zoomIn->setText(tr("Zoom in"));
+    m_zoomOut->setText(tr("Zoom out"));
+    m_fit->setText(tr("Fit"));
+    m_emptyText->setText(tr("No track plan: connect to a station or open a CS2 layout folder."));
+    if (m_folder)
+        m_source->setText(tr("Files: %1").arg(QString::fromStdString(m_folder->configDirectory.string())));
+    else
+        m_source->setText(m_railway ? tr("Live from the station") : QString());
+    if (m_layout)
+        for (int i = 0; i < m_tabs->count(); ++i)
+            if (m_layout->pages()[std::size_t(i)].name.isEmpty())
+                m_tabs->setTabText(i, tr("Page %1").arg(m_layout->pages()[std::size_t(i)].id));
+}
+
+void TrackPlanPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+} // namespace stellwerk::ui

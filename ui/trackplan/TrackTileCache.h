@@ -1,0 +1,66 @@
+#pragma once
+
+#include "trackplan/TrackColors.h"
+#include "trackplan/TrackTileLook.h"
+
+#include <QFont>
+#include <QHash>
+#include <QPixmap>
+#include <QPoint>
+
+class QImage;
+class QPainter;
+
+namespace stellwerk::ui {
+
+// The drawn picture of every tile look at the current tile size, so that a repaint blits pixmaps instead
+// of stroking paths and laying out text for each of thousands of tiles. The pictures are drawn by
+// TrackTilePainter at the screen's device pixel ratio and thrown away when the size, the colours, the
+// font or the ratio change, so the plan stays anti-aliased vector art at every zoom.
+class TrackTileCache final {
+public:
+    // How far, in pixels, a tile's strokes may reach over its cell's edges.
+    static constexpr int Overhang = 2;
+
+    // Starts a repaint; forgets every picture when anything they were drawn with changed.
+    void prepare(int tileSize, qreal devicePixelRatio, const TrackColors& colors, const QFont& font);
+    // The area the tile's picture covers when its cell's top left corner is at `cell` (labels run
+    // beyond their cell).
+    QRect area(const TrackTileLook& look, QPoint cell);
+    void paint(QPainter& painter, QPoint cell, const TrackTileLook& look);
+    int size() const { return int(m_pictures.size()); }
+
+private:
+    struct Key {
+        QString type;
+        QString text;
+        int category = 0;
+        int rotation = 0;
+        int position = -1;
+        bool occupied = false;
+        bool running = false;
+        bool operator==(const Key&) const = default;
+        friend size_t qHash(const Key& key, size_t seed = 0) {
+            return qHashMulti(seed, key.type, key.text, key.category, key.rotation, key.position,
+                              key.occupied, key.running);
+        }
+    };
+    struct Picture {
+        QPixmap pixmap;
+        QPoint offset; // of the pixmap's top left corner from the cell's
+    };
+
+    const Picture& pictureOf(const TrackTileLook& look);
+    Picture draw(const TrackTileLook& look) const;
+    Picture cropped(const QImage& image, QPoint offset) const;
+
+    static constexpr int MaximumPictures = 8192; // labels each have their own; start afresh beyond this
+
+    QHash<Key, Picture> m_pictures;
+    int m_tileSize = 0;
+    qreal m_devicePixelRatio = 1.0;
+    TrackColors m_colors;
+    QFont m_font;
+};
+
+} // namespace stellwerk::ui

@@ -1,0 +1,14 @@
+# The track plan tab: pages of the CS2 gleisbild drawn as vector tiles, live states, switching by click.
+target_sources(stellwerk-ui PRIVATE
+    trackplan/FeatureShapes.cpp
+    trackplan/SignalShapes.cpp
+    trackplan/TrackColors.cpp trackplan/TrackColors.h
+    trackplan/TrackPageView.cpp trackplan/TrackPageView.h
+    trackplan/TrackPlanPanel.cpp trackplan/TrackPlanPanel.h
+    trackplan/TrackShapes.cpp trackplan/TrackShapes.h
+    trackplan/TrackTileCache.cpp trackplan/TrackTileCache.h
+    trackplan/TrackTileInfo.cpp trackplan/TrackTileInfo.h
+    trackplan/TrackTileLook.h
+    trackplan/TrackTilePainter.cpp trackplan/TrackTilePainter.h
+    trackplan/TurnoutShapes.cpp
+)
