@@ -2,6 +2,8 @@
 # user terms. The simulated CS2 reaches it only as a local peer from a factory (transport/LocalPeer.h).
 stellwerk_core_library(connection)
 target_sources(stellwerk-connection PRIVATE
+    connection/StationAddress.cpp
+    connection/StationAddress.h
     connection/StationConnection.cpp
     connection/StationConnection.h
     connection/StationEndpoint.cpp

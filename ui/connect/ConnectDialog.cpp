@@ -2,8 +2,7 @@
 
 #include "connect/ConnectionStatus.h"
 #include "connect/StationUrlSettings.h"
-#include "transport/CanBusTransport.h"
-#include "transport/TransportAddress.h"
+#include "connection/StationAddress.h"
 
 #include <QButtonGroup>
 #include <QComboBox>
@@ -23,25 +22,7 @@ namespace {
 
 // How a person names an address in the recent list.
 QString describeUrl(const QString& url) {
-    if (url.isEmpty())
-        return ConnectionStatus::describe(connection::StationEndpoint::simulated());
-    const auto parsed = transport::parseTransportUrl(url);
-    const auto endpoint =
-        parsed ? connection::StationEndpoint::of(*parsed) : connection::StationEndpoint::unusable(url);
-    return ConnectionStatus::describe(endpoint);
-}
-
-// The address for `host`, keeping the ports of `current` when it is of the same kind; just the scheme while
-// there is no host yet.
-// (`typename`, not `class`: lupdate would read the rest of the file as that class's texts.)
-template <typename Kind>
-QString withHost(const Expected<transport::TransportSettings, QString>& current, const QString& host,
-                 const QString& scheme) {
-    if (host.isEmpty())
-        return scheme;
-    Kind settings = current && std::holds_alternative<Kind>(*current) ? std::get<Kind>(*current) : Kind{};
-    settings.host = host;
-    return transport::transportUrl(settings);
+    return ConnectionStatus::describe(connection::StationAddress::endpointOf(url));
 }
 
 QRadioButton* radio(QWidget* parent, const char* name) {
@@ -170,8 +151,8 @@ void ConnectDialog::refreshInterfaces() {
     const QString typed = m_interface->currentText();
     const bool wasSyncing = std::exchange(m_syncing, true);
     m_interface->clear();
-    for (const transport::CanBusInterface& found : transport::CanBusTransport::availableInterfaces()) {
-        const QString name = found.plugin + QLatin1Char('/') + found.name;
+    for (const connection::CanInterfaceChoice& found : connection::availableCanInterfaces()) {
+        const QString& name = found.name;
         m_interface->addItem(name, name);
         if (!found.description.isEmpty())
             m_interface->setItemData(m_interface->count() - 1, found.description, Qt::ToolTipRole);
@@ -245,19 +226,20 @@ void ConnectDialog::composeUrl() {
         check();
         return;
     }
-    const auto current = transport::parseTransportUrl(m_url->text().trimmed());
+    using Address = connection::StationAddress;
+    using Endpoint = connection::StationEndpoint;
     QString url;
     switch (kind()) {
     case Kind::Simulated:
         break;
     case Kind::Udp:
-        url = withHost<transport::UdpSettings>(current, m_host->text().trimmed(), QStringLiteral("udp://"));
+        url = Address::atHost(Endpoint::Kind::Udp, m_host->text(), m_url->text());
         break;
     case Kind::Tcp:
-        url = withHost<transport::TcpSettings>(current, m_host->text().trimmed(), QStringLiteral("tcp://"));
+        url = Address::atHost(Endpoint::Kind::Tcp, m_host->text(), m_url->text());
         break;
     case Kind::CanBus:
-        url = QStringLiteral("can://") + m_interface->currentText().trimmed();
+        url = Address::ofCanInterface(m_interface->currentText());
         break;
     }
     const bool wasSyncing = std::exchange(m_syncing, true);
@@ -270,19 +252,17 @@ void ConnectDialog::composeUrl() {
 void ConnectDialog::readUrl() {
     if (m_syncing)
         return;
-    const auto parsed = transport::parseTransportUrl(m_url->text().trimmed());
-    if (!parsed)
+    const auto address = connection::StationAddress::read(m_url->text());
+    if (!address)
         return;
     const bool wasSyncing = std::exchange(m_syncing, true);
-    if (const auto* udp = std::get_if<transport::UdpSettings>(&*parsed)) {
-        m_udp->setChecked(true);
-        m_host->setText(udp->host);
-    } else if (const auto* tcp = std::get_if<transport::TcpSettings>(&*parsed)) {
-        m_tcp->setChecked(true);
-        m_host->setText(tcp->host);
-    } else if (const auto* bus = std::get_if<transport::CanBusSettings>(&*parsed)) {
+    using Endpoint = connection::StationEndpoint;
+    if (address->kind == Endpoint::Kind::Udp || address->kind == Endpoint::Kind::Tcp) {
+        (address->kind == Endpoint::Kind::Udp ? m_udp : m_tcp)->setChecked(true);
+        m_host->setText(address->host);
+    } else if (address->kind == Endpoint::Kind::CanBus) {
         m_can->setChecked(true);
-        m_interface->setCurrentText(bus->plugin + QLatin1Char('/') + bus->interfaceName);
+        m_interface->setCurrentText(address->canInterface);
     }
     m_syncing = wasSyncing;
     check();
@@ -301,8 +281,8 @@ void ConnectDialog::check() {
         const QString text = m_url->text().trimmed();
         if (text.isEmpty())
             error = tr("Enter the station's address, or use the simulated station.");
-        else if (const auto parsed = transport::parseTransportUrl(text); !parsed)
-            error = tr("This address cannot be used: %1").arg(parsed.error());
+        else if (const auto address = connection::StationAddress::read(text); !address)
+            error = tr("This address cannot be used: %1").arg(address.error());
     }
     m_error->setText(error);
     m_error->setVisible(!error.isEmpty());

@@ -1,6 +1,6 @@
 #include "monitor/BusMonitorFilter.h"
 
-#include "cs2/LocId.h"
+#include "bus/FrameDescription.h"
 #include "monitor/BusMonitorModel.h"
 
 #include <QElapsedTimer>
@@ -83,22 +83,7 @@ int BusMonitorFilter::scanPercent() const {
 }
 
 std::optional<std::uint32_t> BusMonitorFilter::parseLocId(const QString& text) {
-    const QStringList words = text.simplified().split(QLatin1Char(' '), Qt::SkipEmptyParts);
-    bool ok = false;
-    if (words.size() == 1) {
-        const QString& word = words.front();
-        const bool hex = word.startsWith(QLatin1String("0x"), Qt::CaseInsensitive);
-        const uint value = hex ? word.mid(2).toUInt(&ok, 16) : word.toUInt(&ok, 10);
-        return ok ? std::optional<std::uint32_t>(value) : std::nullopt;
-    }
-    if (words.size() != 2)
-        return std::nullopt;
-    const auto protocol = cs2::protocolFromName(words[0].toLower().toStdString());
-    const uint address = words[1].toUInt(&ok, 10);
-    if (!protocol || !ok)
-        return std::nullopt;
-    const auto locId = cs2::LocId::fromAddress(*protocol, address);
-    return locId ? std::optional<std::uint32_t>(locId->value()) : std::nullopt;
+    return bus::parseLocoReference(text.toStdString());
 }
 
 // Cheap tests first: the command needs no decoding, the Loc-ID one decode, the text all the text.

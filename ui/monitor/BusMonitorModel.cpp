@@ -1,8 +1,5 @@
 #include "monitor/BusMonitorModel.h"
 
-#include "cs2/Fields.h"
-#include "cs2/FrameReport.h"
-
 #include <QColor>
 #include <QGuiApplication>
 #include <QPalette>
@@ -58,12 +55,18 @@ QColor directionColour(BusMonitorModel::Direction direction) {
     return sent ? QColor::fromHsv(24, 255, 180) : QColor::fromHsv(210, 255, 160);
 }
 
-can::CanFrame frameOf(std::uint32_t id, std::uint8_t dlc, const std::array<std::uint8_t, 8>& data) {
+template <class Record>
+can::CanFrame frameOf(const Record& r) {
     can::CanFrame frame;
-    frame.id = id;
-    frame.dlc = dlc;
-    frame.data = data;
+    frame.id = r.id;
+    frame.dlc = r.dlc;
+    frame.data = r.data;
+    frame.extended = r.extended;
     return frame;
+}
+
+QString latin1(std::string_view text) {
+    return QString::fromLatin1(text.data(), qsizetype(text.size()));
 }
 
 } // namespace
@@ -77,7 +80,7 @@ BusMonitorModel::BusMonitorModel(QObject* parent)
 
 BusMonitorModel::Record BusMonitorModel::record(const can::CanFrame& frame, Direction direction,
                                                 qint64 timeMs) {
-    return Record{timeMs, frame.id, frame.dlc, direction, frame.data};
+    return Record{timeMs, frame.id, frame.dlc, direction, frame.extended, frame.data};
 }
 
 void BusMonitorModel::addFrames(std::span<const can::CanFrame> frames, Direction direction) {
@@ -157,6 +160,7 @@ void BusMonitorModel::clear() {
     m_rows.shrink_to_fit();
     m_queued.clear();
     m_dropped = 0;
+    m_descriptions.clear();
     endResetModel();
     m_total = 0;
     m_heldBack = 0;
@@ -164,8 +168,11 @@ void BusMonitorModel::clear() {
 }
 
 can::CanFrame BusMonitorModel::frameAt(int row) const {
-    const Record& r = m_rows.at(std::size_t(row));
-    return frameOf(r.id, r.dlc, r.data);
+    return frameOf(m_rows.at(std::size_t(row)));
+}
+
+const bus::FrameDescription& BusMonitorModel::describe(int row) const {
+    return m_descriptions.of(m_dropped + std::uint64_t(row), frameOf(m_rows.at(std::size_t(row))));
 }
 
 QDateTime BusMonitorModel::timeAt(int row) const {
@@ -176,31 +183,24 @@ BusMonitorModel::Direction BusMonitorModel::directionAt(int row) const {
     return m_rows.at(std::size_t(row)).direction;
 }
 
-std::string_view BusMonitorModel::commandAt(int row) const {
-    const Record& r = m_rows.at(std::size_t(row));
-    return cs2::intendedName(frameOf(r.id, r.dlc, r.data));
+std::string BusMonitorModel::commandAt(int row) const {
+    return std::string(describe(row).name());
 }
 
 bool BusMonitorModel::containsText(int row, std::string_view lowerNeedle) const {
-    const Record& r = m_rows.at(std::size_t(row));
-    const cs2::FrameReport report(frameOf(r.id, r.dlc, r.data));
+    const bus::FrameDescription& description = describe(row);
     const auto contains = [lowerNeedle](std::string_view text) {
         const auto equal = [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; };
         return std::search(text.begin(), text.end(), lowerNeedle.begin(), lowerNeedle.end(), equal) !=
                text.end();
     };
-    return contains(report.name()) || contains(report.detailText()) || contains(report.frameText());
+    return contains(description.name()) || contains(description.detailText()) ||
+           contains(description.frameText());
 }
 
 std::optional<std::uint32_t> BusMonitorModel::locIdAt(int row) const {
-    const Record& r = m_rows.at(std::size_t(row));
-    const cs2::DecodeResult decoded = cs2::decode(frameOf(r.id, r.dlc, r.data));
-    if (!decoded)
-        return std::nullopt;
-    for (const cs2::Field& field : cs2::describe(decoded.value()))
-        if (field.key == "locId")
-            return std::uint32_t(field.number);
-    return std::nullopt;
+    const auto locId = describe(row).number("locId");
+    return locId ? std::optional<std::uint32_t>(std::uint32_t(*locId)) : std::nullopt;
 }
 
 int BusMonitorModel::rowCount(const QModelIndex& parent) const {
@@ -217,47 +217,45 @@ QVariant BusMonitorModel::data(const QModelIndex& index, int role) const {
     const Record& r = m_rows[std::size_t(index.row())];
     switch (role) {
     case Qt::DisplayRole:
-        return display(r, index.column());
+        return display(describe(index.row()), r, index.column());
     case Qt::ToolTipRole:
-        return index.column() == DetailsColumn ? display(r, index.column()) : QVariant();
+        return index.column() == DetailsColumn ? display(describe(index.row()), r, index.column())
+                                               : QVariant();
     case Qt::ForegroundRole:
         return index.column() == DirectionColumn ? directionColour(r.direction) : QVariant();
     case Qt::BackgroundRole:
-        return tint(groupOf(cs2::intendedName(frameOf(r.id, r.dlc, r.data))));
+        return tint(groupOf(describe(index.row()).name()));
     case GroupRole:
-        return int(groupOf(cs2::intendedName(frameOf(r.id, r.dlc, r.data))));
-    case CommandRole: {
-        const std::string_view name = cs2::intendedName(frameOf(r.id, r.dlc, r.data));
-        return QString::fromLatin1(name.data(), qsizetype(name.size()));
-    }
+        return int(groupOf(describe(index.row()).name()));
+    case CommandRole:
+        return latin1(describe(index.row()).name());
     case LocIdRole: {
         const auto locId = locIdAt(index.row());
         return locId ? QVariant::fromValue(uint(*locId)) : QVariant();
     }
     case SearchTextRole: {
-        const cs2::FrameReport report(frameOf(r.id, r.dlc, r.data));
-        return QString::fromStdString(std::string(report.name()) + ' ' + report.detailText() + ' ' +
-                                      report.frameText());
+        const bus::FrameDescription& description = describe(index.row());
+        return QString::fromStdString(std::string(description.name()) + ' ' + description.detailText() + ' ' +
+                                      description.frameText());
     }
     default:
         return {};
     }
 }
 
-QVariant BusMonitorModel::display(const Record& r, int column) const {
+QVariant BusMonitorModel::display(const bus::FrameDescription& description, const Record& r,
+                                  int column) const {
     switch (column) {
     case TimeColumn:
         return QDateTime::fromMSecsSinceEpoch(r.timeMs).toString(QStringLiteral("HH:mm:ss.zzz"));
     case DirectionColumn:
         return r.direction == Direction::Received ? tr("← received") : tr("→ sent");
-    case MessageColumn: {
-        const cs2::FrameReport report(frameOf(r.id, r.dlc, r.data));
-        return QString::fromUtf8(report.name().data(), qsizetype(report.name().size()));
-    }
+    case MessageColumn:
+        return QString::fromUtf8(description.name().data(), qsizetype(description.name().size()));
     case DetailsColumn:
-        return QString::fromStdString(cs2::FrameReport(frameOf(r.id, r.dlc, r.data)).detailText());
+        return QString::fromStdString(description.detailText());
     case FrameColumn:
-        return QString::fromStdString(cs2::FrameReport(frameOf(r.id, r.dlc, r.data)).frameText());
+        return QString::fromStdString(description.frameText());
     default:
         return {};
     }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "can/CanFrame.h"
+#include "monitor/FrameDescriptions.h"
 
 #include <QAbstractTableModel>
 #include <QDateTime>
@@ -17,8 +18,8 @@ class QTimer;
 namespace stellwerk::ui {
 
 // The bus monitor's rows: a bounded history of compact frame records (no text per frame; the core's
-// FrameReport writes the text when a row is shown), filled in batches so that a flood of frames costs
-// one insert per flush instead of one per frame.
+// core's FrameDescription, cached for the rows looked at, writes the text when a row is shown), filled in
+// batches so that a flood of frames costs one insert per flush instead of one per frame.
 class BusMonitorModel final : public QAbstractTableModel {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(BusMonitorModel)
@@ -69,7 +70,9 @@ public:
     // The Loc-ID field of the frame in `row`, read by the core's decoder; nullopt when it has none.
     std::optional<std::uint32_t> locIdAt(int row) const;
     // The command's vocabulary name ("loco.speed"), also for a frame that did not decode.
-    std::string_view commandAt(int row) const;
+    std::string commandAt(int row) const;
+    // How many frames were decoded so far: each shown or filtered row once while it is in the cache.
+    std::uint64_t decodeCount() const { return m_descriptions.decodeCount(); }
     // Whether the message name, details or frame text of `row` contain `lowerNeedle` (ASCII, lower case),
     // ignoring case; cheaper than SearchTextRole for scanning many rows.
     bool containsText(int row, std::string_view lowerNeedle) const;
@@ -93,12 +96,14 @@ private:
         std::uint32_t id;
         std::uint8_t dlc;
         Direction direction;
+        bool extended;
         std::array<std::uint8_t, 8> data;
     };
 
     static Record record(const can::CanFrame& frame, Direction direction, qint64 timeMs);
     void dropOldest(std::size_t count);
-    QVariant display(const Record& record, int column) const;
+    QVariant display(const bus::FrameDescription& description, const Record& record, int column) const;
+    const bus::FrameDescription& describe(int row) const;
 
     std::deque<Record> m_rows;
     std::deque<Record> m_queued;
@@ -108,6 +113,7 @@ private:
     std::uint64_t m_heldBack = 0;
     std::uint64_t m_total = 0;
     std::uint64_t m_dropped = 0;
+    FrameDescriptions m_descriptions{bus::BusProfile::centralStation()};
 };
 
 } // namespace stellwerk::ui

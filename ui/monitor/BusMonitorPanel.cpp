@@ -1,7 +1,7 @@
 #include "monitor/BusMonitorPanel.h"
 
+#include "bus/FrameDescription.h"
 #include "connection/StationConnection.h"
-#include "cs2/Fields.h"
 #include "monitor/BusMonitorFilter.h"
 #include "monitor/BusMonitorLog.h"
 #include "monitor/BusMonitorModel.h"
@@ -87,7 +87,7 @@ QLayout* BusMonitorPanel::createFilterBar() {
     m_commandBox = new QComboBox(this);
     m_commandBox->setObjectName(QStringLiteral("busMonitorCommand"));
     m_commandBox->addItem(QString());
-    for (const std::string_view name : cs2::messageNames())
+    for (const std::string_view name : bus::messageNames(bus::BusProfile::centralStation()))
         m_commandBox->addItem(QString::fromLatin1(name.data(), qsizetype(name.size())));
     m_commandBox->setMaxVisibleItems(20);
     m_commandBox->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);

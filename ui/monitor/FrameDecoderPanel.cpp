@@ -1,7 +1,7 @@
 #include "monitor/FrameDecoderPanel.h"
 
+#include "bus/FrameDescription.h"
 #include "can/FrameText.h"
-#include "cs2/FrameReport.h"
 
 #include <QEvent>
 #include <QFile>
@@ -119,13 +119,13 @@ void FrameDecoderPanel::refresh() {
                                    QString::fromStdString(parsed.error())));
             continue;
         }
-        const cs2::FrameReport report(parsed->frame);
-        const QString frame = QString::fromStdString(report.frameText());
-        QString message = QString::fromStdString(std::string(report.name()));
-        if (cs2::isResponse(parsed->frame))
+        const bus::FrameDescription description(parsed->frame, bus::BusProfile::centralStation());
+        const QString frame = QString::fromStdString(description.frameText());
+        QString message = QString::fromStdString(std::string(description.name()));
+        if (description.isResponse())
             message = tr("%1 (response)").arg(message);
-        const QString details = QString::fromStdString(report.detailText());
-        if (!report.ok()) {
+        const QString details = QString::fromStdString(description.detailText());
+        if (!description.decoded()) {
             ++errors;
             items.append(errorItem(i + 1, frame, message, details));
             continue;

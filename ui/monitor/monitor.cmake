@@ -8,4 +8,5 @@ target_sources(stellwerk-ui PRIVATE
     monitor/BusMonitorReplay.cpp monitor/BusMonitorReplay.h
     monitor/BusMonitorSettings.cpp monitor/BusMonitorSettings.h
     monitor/FrameDecoderPanel.cpp monitor/FrameDecoderPanel.h
+    monitor/FrameDescriptions.cpp monitor/FrameDescriptions.h
 )

@@ -67,6 +67,38 @@ TEST(BusMonitorModel, TenThousandFramesInOneBatchAreOneInsertion) {
     EXPECT_TRUE(cell(model, 0, BusMonitorModel::DetailsColumn).contains(QStringLiteral("locId=0xC003")));
 }
 
+// Issue 12: a row's columns and roles come from one description; the frame is decoded once.
+TEST(BusMonitorModel, ARowIsDecodedOnceForAllItsColumnsAndRoles) {
+    BusMonitorModel model;
+    const std::vector<can::CanFrame> frames{locoSpeed()};
+    model.addFrames(frames, Direction::Received);
+    model.flush();
+    ASSERT_EQ(model.rowCount(), 1);
+    for (int column = 0; column < BusMonitorModel::ColumnCount; ++column)
+        for (int role : {int(Qt::DisplayRole), int(Qt::ToolTipRole), int(Qt::BackgroundRole),
+                         int(BusMonitorModel::GroupRole), int(BusMonitorModel::CommandRole),
+                         int(BusMonitorModel::LocIdRole), int(BusMonitorModel::SearchTextRole)})
+            model.index(0, column).data(role);
+    EXPECT_EQ(model.commandAt(0), "loco.speed");
+    EXPECT_EQ(model.locIdAt(0), 0xC003u);
+    EXPECT_TRUE(model.containsText(0, "speed=288"));
+    EXPECT_EQ(model.decodeCount(), 1u);
+}
+
+// A frame of another protocol is shown as foreign with its 11-bit identifier, never dropped.
+TEST(BusMonitorModel, AStandardFrameIsShownAsForeign) {
+    BusMonitorModel model;
+    const std::vector<can::CanFrame> frames{frame("123#0102")};
+    model.addFrames(frames, Direction::Received);
+    model.flush();
+    ASSERT_EQ(model.rowCount(), 1);
+    EXPECT_FALSE(model.frameAt(0).extended);
+    EXPECT_EQ(cell(model, 0, BusMonitorModel::MessageColumn), QStringLiteral("foreign"));
+    EXPECT_EQ(cell(model, 0, BusMonitorModel::FrameColumn), QStringLiteral("123 2 01 02"));
+    EXPECT_EQ(cell(model, 0, BusMonitorModel::DetailsColumn),
+              QStringLiteral("11-bit frame (no protocol of a CS2 bus)"));
+}
+
 TEST(BusMonitorModel, HistoryLimitDropsTheOldestInOneRemoval) {
     BusMonitorModel model;
     model.setHistoryLimit(100);
