@@ -74,6 +74,9 @@ std::optional<std::uint32_t> locIdOf(LocomotiveDecoder decoder, std::uint32_t ad
 class LocomotiveEditor {
 public:
     static constexpr int MaxIcon = 511;
+    // The highest address any decoder type allows (the mfx SID, see addressRange()): the editor's address
+    // field goes this far and the editor explains what the chosen decoder allows.
+    static constexpr std::uint32_t MaxAddress = 0x3FFF;
     static constexpr int MaxDuration = 255;
     static constexpr int MaxFunctions = 32;
 

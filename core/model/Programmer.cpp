@@ -14,10 +14,10 @@ using Task = ProgrammingResult::Task;
 using Outcome = ProgrammingResult::Outcome;
 using Problem = ProgrammingResult::Problem;
 
-constexpr int MaxCv = 1023; // the 10-bit CV field; the document's "1024" cannot be expressed
-constexpr int MaxMm2Cv = 256;
+constexpr int MaxCv = Programmer::MaxCv;
+constexpr int MaxMm2Cv = Programmer::MaxMm2Cv;
 constexpr int Sx1Cvs = 5;
-constexpr int MaxIndex = 63;
+constexpr int MaxIndex = Programmer::MaxIndex;
 constexpr int MainTrackRange = 64;
 
 ProgrammingResult invalid(Task task, const CvTarget& target, Problem problem, int minimum = 0,

@@ -93,6 +93,17 @@ class Programmer final : public QObject {
 public:
     // The steps of a full mfx search (ranges 1..32, document 3.1).
     static constexpr int DiscoverySteps = 32;
+    // The limits a person may enter, checked again before anything is sent (document 3.7, 3.8): the
+    // Programming page takes its ranges from here.
+    static constexpr cs2::Protocol Protocols[] = {cs2::Protocol::Mfx, cs2::Protocol::Dcc, cs2::Protocol::Mm2,
+                                                  cs2::Protocol::Sx1}; // the programmable ones
+    static constexpr int MaxAddress = 0x3FFF; // the widest loco address range (mfx and DCC: 14 bits)
+    static constexpr int MaxSid = 0x3FFF;     // an mfx SID is a 14-bit address
+    static constexpr int MaxCv = 1023; // the 10-bit CV field; the document's "1024" cannot be expressed
+    static constexpr int MaxMm2Cv = 256;
+    static constexpr int MaxIndex = 63; // mfx CV index (reading from 0, writing from 1)
+    static constexpr int MaxValue = 255;
+    static constexpr int MaxBit = 7;
 
     struct Settings {
         std::chrono::milliseconds answerTimeout{5000};     // reading a CV on the programming track takes time

@@ -26,7 +26,6 @@ constexpr LocomotiveDecoder Decoders[] = {LocomotiveDecoder::Mfx,     Locomotive
 constexpr FunctionTrigger Triggers[] = {FunctionTrigger::Latching, FunctionTrigger::Momentary,
                                         FunctionTrigger::Timed, FunctionTrigger::Unknown};
 enum FunctionColumn { IconColumn, TriggerColumn, DurationColumn, FunctionColumns };
-constexpr int MaxAddress = 0x3FFF;
 
 } // namespace
 
@@ -42,7 +41,8 @@ LocomotiveForm::LocomotiveForm(QWidget* parent)
     m_functions->setObjectName(QStringLiteral("locomotiveFunctions"));
     for (const LocomotiveDecoder decoder : Decoders)
         m_decoder->addItem(QString(), int(decoder));
-    m_address->setRange(0, MaxAddress); // wider than any decoder: the editor explains what is allowed
+    m_address->setRange(0, int(cs2config::LocomotiveEditor::MaxAddress)); // wider than any decoder: the
+                                                                          // editor explains what is allowed
     m_addressRange->setEnabled(false);
     auto* address = new QHBoxLayout;
     address->addWidget(m_address);

@@ -1,6 +1,7 @@
 #include "programming/ProgrammingPanel.h"
 
 #include "model/Railway.h"
+#include "programming/ProgrammingResultText.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -24,10 +25,7 @@ using Outcome = model::ProgrammingResult::Outcome;
 using Problem = model::ProgrammingResult::Problem;
 using Task = model::ProgrammingResult::Task;
 
-constexpr cs2::Protocol Protocols[] = {cs2::Protocol::Mfx, cs2::Protocol::Dcc, cs2::Protocol::Mm2,
-                                       cs2::Protocol::Sx1};
-constexpr int MaxAddress = 0x3FFF;
-constexpr int MaxSid = 0x3FFF;
+using Limits = model::Programmer;
 enum Label {
     LocomotiveLabel,
     DecoderLabel,
@@ -78,7 +76,7 @@ QGroupBox* ProgrammingPanel::buildRegistration() {
     m_decoders->horizontalHeader()->setStretchLastSection(true);
     m_sidLabel = new QLabel(m_registration);
     m_sid = named(new QSpinBox(m_registration), "bindSid");
-    m_sid->setRange(1, MaxSid);
+    m_sid->setRange(1, Limits::MaxSid);
     m_register = named(new QPushButton(m_registration), "registerDecoder");
     auto* searchLine = new QHBoxLayout;
     searchLine->addWidget(m_search);
@@ -104,22 +102,22 @@ void ProgrammingPanel::createCvFields() {
     QWidget* box = m_programming;
     m_locomotive = named(new QComboBox(box), "cvLocomotive");
     m_protocol = named(new QComboBox(box), "cvProtocol");
-    for (const cs2::Protocol protocol : Protocols)
+    for (const cs2::Protocol protocol : Limits::Protocols)
         m_protocol->addItem(QString(), int(protocol));
     m_address = named(new QSpinBox(box), "cvAddress");
-    m_address->setRange(0, MaxAddress);
+    m_address->setRange(0, Limits::MaxAddress);
     m_cv = named(new QSpinBox(box), "cvNumber");
-    m_cv->setRange(1, 1023);
+    m_cv->setRange(1, Limits::MaxCv);
     m_index = named(new QSpinBox(box), "cvIndex");
-    m_index->setRange(0, 63);
+    m_index->setRange(0, Limits::MaxIndex);
     m_value = named(new QSpinBox(box), "cvValue");
-    m_value->setRange(0, 255);
+    m_value->setRange(0, Limits::MaxValue);
     m_track = named(new QComboBox(box), "cvTrack");
     m_track->addItems({QString(), QString()});
     m_mode = named(new QComboBox(box), "cvMode");
     m_mode->addItems({QString(), QString(), QString()});
     m_bit = named(new QSpinBox(box), "cvBit");
-    m_bit->setRange(0, 7);
+    m_bit->setRange(0, Limits::MaxBit);
     m_bitOn = named(new QCheckBox(box), "cvBitOn");
     m_protocolNote = named(new QLabel(box), "cvNote");
     m_protocolNote->setWordWrap(true);
@@ -350,10 +348,14 @@ void ProgrammingPanel::finished(const model::ProgrammingResult& result) {
     case Task::ReadCv:
         if (result.succeeded() && result.value)
             m_value->setValue(*result.value); // ready to be changed and written back
-        showResult(result.succeeded() ? cvText(result) : failureText(result), !result.succeeded());
+        showResult(result.succeeded() ? ProgrammingResultText::cv(result)
+                                      : ProgrammingResultText::failure(result),
+                   !result.succeeded());
         break;
     case Task::WriteCv:
-        showResult(result.succeeded() ? cvText(result) : failureText(result), !result.succeeded());
+        showResult(result.succeeded() ? ProgrammingResultText::cv(result)
+                                      : ProgrammingResultText::failure(result),
+                   !result.succeeded());
         break;
     }
     updateEnabled();
@@ -368,7 +370,7 @@ void ProgrammingPanel::discoveryFinished(const model::ProgrammingResult& result)
         return;
     }
     if (!result.succeeded()) {
-        m_searchText->setText(failureText(result));
+        m_searchText->setText(ProgrammingResultText::failure(result));
         return;
     }
     showDecoder(result.mfxUid, tr("found"));
@@ -379,7 +381,7 @@ void ProgrammingPanel::discoveryFinished(const model::ProgrammingResult& result)
 
 void ProgrammingPanel::bindFinished(const model::ProgrammingResult& result) {
     if (!result.succeeded()) {
-        showDecoder(result.mfxUid, failureText(result));
+        showDecoder(result.mfxUid, ProgrammingResultText::failure(result));
         return;
     }
     showDecoder(result.mfxUid, tr("bound to SID %1, verifying…").arg(result.sid));
@@ -391,7 +393,7 @@ void ProgrammingPanel::verifyFinished(const model::ProgrammingResult& result) {
     if (!result.succeeded()) {
         showDecoder(result.mfxUid, result.outcome == Outcome::Refused
                                        ? tr("does not answer under SID %1").arg(result.sid)
-                                       : failureText(result));
+                                       : ProgrammingResultText::failure(result));
         return;
     }
     showDecoder(result.mfxUid, tr("registered on SID %1").arg(result.sid));
@@ -430,78 +432,13 @@ void ProgrammingPanel::showResult(const QString& text, bool problem) {
                                     : QStringLiteral("QLabel { font-weight: bold; }"));
 }
 
-QString ProgrammingPanel::cvText(const model::ProgrammingResult& result) const {
-    const QString cv = result.target.decoder.protocol() == cs2::Protocol::Mfx
-                           ? tr("CV %1.%2").arg(result.target.cv).arg(result.target.index)
-                           : tr("CV %1").arg(result.target.cv);
-    const int value = result.value.value_or(0);
-    if (result.task == Task::ReadCv)
-        return tr("%1 = %2 (0x%3)").arg(cv).arg(value).arg(value, 2, 16, QLatin1Char('0'));
-    return result.verified
-               ? tr("%1 written: %2, read back and verified.").arg(cv).arg(value)
-               : tr("%1 written: %2. Not verified: the decoder cannot be read back.").arg(cv).arg(value);
-}
-
-QString ProgrammingPanel::failureText(const model::ProgrammingResult& result) const {
-    switch (result.outcome) {
-    case Outcome::Refused:
-        if (result.task == Task::ReadCv)
-            return tr("No value: the decoder did not answer the read (is it on the programming track?).");
-        if (result.task == Task::WriteCv)
-            return tr("Refused: the station could not write the CV.");
-        return tr("Refused by the station.");
-    case Outcome::NoAnswer:
-        return tr("No answer from the station.");
-    case Outcome::NotSent:
-        return tr("Not sent: the station is not connected.");
-    case Outcome::Busy:
-        return tr("Wait: the station is still busy with the last programming command.");
-    case Outcome::Invalid:
-        return problemText(result);
-    case Outcome::NotFound:
-    case Outcome::Done:
-        break;
-    }
-    return QString();
-}
-
-QString ProgrammingPanel::problemText(const model::ProgrammingResult& result) const {
-    switch (result.problem) {
-    case Problem::NotProgrammable:
-        return tr("Only MM2, DCC, mfx and SX1 decoders can be programmed.");
-    case Problem::Mm2CannotBeRead:
-        return tr("MM2 decoders cannot be read: the station can only write their CVs.");
-    case Problem::CvOutOfRange:
-        return tr("The CV must be between %1 and %2 for this protocol.")
-            .arg(result.minimum)
-            .arg(result.maximum);
-    case Problem::IndexOutOfRange:
-        return tr("The mfx index must be between %1 and %2.").arg(result.minimum).arg(result.maximum);
-    case Problem::IndexNotMfx:
-        return tr("Only mfx CVs have an index.");
-    case Problem::ProgrammingTrackOnly:
-        return tr("SX1 decoders are programmed on the programming track only.");
-    case Problem::ModeNotDcc:
-        return tr("Programming modes are for DCC decoders only.");
-    case Problem::ReservedMode:
-        return tr("This DCC programming mode is reserved.");
-    case Problem::BitValueForm:
-        return tr("Bit programming needs a bit position and value.");
-    case Problem::NoSid:
-        return tr("Choose a SID from 1.");
-    case Problem::None:
-        break;
-    }
-    return QString();
-}
-
 std::uint16_t ProgrammingPanel::suggestedSid() const {
     std::uint32_t highest = m_lastBoundSid;
     if (m_railway)
         for (const model::Locomotive& loco : m_railway->state().locomotives().items())
             if (loco.id().protocol() == cs2::Protocol::Mfx)
                 highest = std::max(highest, loco.id().address());
-    return std::uint16_t(std::min<std::uint32_t>(highest + 1, MaxSid));
+    return std::uint16_t(std::min<std::uint32_t>(highest + 1, Limits::MaxSid));
 }
 
 void ProgrammingPanel::updateEnabled() {

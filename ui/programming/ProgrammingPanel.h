@@ -83,9 +83,6 @@ private:
     void verifyFinished(const model::ProgrammingResult& result);
     void showDecoder(std::uint32_t mfxUid, const QString& state);
     void showResult(const QString& text, bool problem);
-    QString cvText(const model::ProgrammingResult& result) const;
-    QString failureText(const model::ProgrammingResult& result) const;
-    QString problemText(const model::ProgrammingResult& result) const;
     std::optional<model::CvTarget> target() const;
     std::uint16_t suggestedSid() const;
     void updateEnabled();

@@ -211,4 +211,14 @@ TEST(LocomotiveEditor, SavingIntoAFileInsteadOfAFolderFailsWithAReason) {
 }
 
 } // namespace
+// The editor's widest address is the highest any decoder type allows (issue 12: the form takes it from here).
+TEST(LocomotiveEditor, MaxAddressIsTheWidestDecoderRange) {
+    std::uint32_t widest = 0;
+    for (const LocomotiveDecoder decoder :
+         {LocomotiveDecoder::Mm2Prg, LocomotiveDecoder::Mm2Dil8, LocomotiveDecoder::MmPrg,
+          LocomotiveDecoder::Mmm2Lok, LocomotiveDecoder::Dcc, LocomotiveDecoder::Mfx, LocomotiveDecoder::Sx1})
+        widest = std::max(widest, addressRange(decoder)->maximum);
+    EXPECT_EQ(LocomotiveEditor::MaxAddress, widest);
+}
+
 } // namespace stellwerk::cs2config::test

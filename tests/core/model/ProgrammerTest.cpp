@@ -164,4 +164,14 @@ TEST(ProgrammerRules, TheDocumentsRangesPerProtocol) {
 }
 
 } // namespace
+// The limits the Programming page takes from the programmer fit the Loc-ID ranges (issue 12).
+TEST(ProgrammerLimits, FitTheLocIdRanges) {
+    EXPECT_TRUE(cs2::LocId::fromAddress(cs2::Protocol::Dcc, Programmer::MaxAddress));
+    EXPECT_TRUE(cs2::LocId::fromAddress(cs2::Protocol::Mfx, Programmer::MaxAddress));
+    EXPECT_FALSE(cs2::LocId::fromAddress(cs2::Protocol::Dcc, Programmer::MaxAddress + 1));
+    EXPECT_FALSE(cs2::LocId::fromAddress(cs2::Protocol::Mfx, Programmer::MaxSid + 1));
+    EXPECT_EQ(Programmer::MaxCv, 1023);  // 10 bits
+    EXPECT_EQ(Programmer::MaxIndex, 63); // 6 bits
+}
+
 } // namespace stellwerk::model::test
