@@ -6,15 +6,15 @@
 // A plain harness printing figures: each measurement runs the Qt event loop, which Google Benchmark's
 // loop does not fit. Run: build/bench/stellwerk-station-bench [round-trip count] [frame count]
 
-#include "transport/NetworkFraming.h"
-#include "transport/TcpTransport.h"
-#include "transport/UdpTransport.h"
 #include "cs2/Codec.h"
 #include "cs2config/ConfigStreamRequest.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
 #include "station/StationSession.h"
+#include "transport/NetworkFraming.h"
+#include "transport/TcpTransport.h"
+#include "transport/UdpTransport.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -95,12 +95,14 @@ struct Loopback {
         else
             transport = std::make_unique<transport::UdpTransport>(
                 transport::UdpSettings{"127.0.0.1", server->udpPort(), appUdpPort,
-                                 QHostAddress(QHostAddress::LocalHost), transport::ReconnectTiming{}});
-        session = std::make_unique<station::StationSession>(*transport, sessionSettings());
+                                       QHostAddress(QHostAddress::LocalHost), transport::ReconnectTiming{}});
+        bus = std::make_unique<buses::Bus>(*transport, bus::BusProfile::centralStation());
+        session = std::make_unique<station::StationSession>(*bus, sessionSettings());
         transport->open();
     }
     ~Loopback() {
         session.reset();
+        bus.reset();
         transport.reset();
     }
 
@@ -112,6 +114,7 @@ struct Loopback {
     sim::SimulatedStation station;
     std::unique_ptr<sim::StationServer> server;
     std::unique_ptr<transport::Transport> transport;
+    std::unique_ptr<buses::Bus> bus;
     std::unique_ptr<station::StationSession> session;
     bool listening = false;
 };
@@ -221,8 +224,10 @@ private:
 
 void benchThroughput(std::size_t count) {
     Blaster blaster(busTraffic(count));
-    transport::TcpTransport transport(transport::TcpSettings{"127.0.0.1", blaster.port(), transport::ReconnectTiming{}});
-    station::StationSession session(transport, sessionSettings());
+    transport::TcpTransport transport(
+        transport::TcpSettings{"127.0.0.1", blaster.port(), transport::ReconnectTiming{}});
+    buses::Bus bus(transport, bus::BusProfile::centralStation());
+    station::StationSession session(bus, sessionSettings());
     std::size_t changes = 0;
     std::size_t batches = 0;
     QObject::connect(&session, &station::StationSession::updated, [&](const station::StationUpdates& u) {

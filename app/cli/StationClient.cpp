@@ -42,7 +42,8 @@ int StationClient::connectTo(const QString& url) {
     transport_ = std::move(created.value());
     station::StationSettings settings;
     settings.commands = settings_.commands;
-    session_ = std::make_unique<station::StationSession>(*transport_, settings);
+    bus_ = std::make_unique<buses::Bus>(*transport_, bus::BusProfile::centralStation());
+    session_ = std::make_unique<station::StationSession>(*bus_, settings);
     // A lost connection is reported twice: the reason, then the same with the transport's retry plan,
     // which the command line does not follow. Only the reason is shown.
     connect(transport_.get(), &transport::Transport::connectionFailed, this, [this](const QString& reason) {
@@ -73,12 +74,13 @@ int StationClient::waitForConnection() {
                            .arg(settings_.connectTimeout.count());
         finish(CannotOpen);
     });
-    const auto watch = connect(transport_.get(), &transport::Transport::stateChanged, this, [this](auto state) {
-        if (state == transport::Transport::State::Connected)
-            finish(Acknowledged);
-        else if (state == transport::Transport::State::Reconnecting || !problem_.isEmpty())
-            finish(CannotOpen);
-    });
+    const auto watch =
+        connect(transport_.get(), &transport::Transport::stateChanged, this, [this](auto state) {
+            if (state == transport::Transport::State::Connected)
+                finish(Acknowledged);
+            else if (state == transport::Transport::State::Reconnecting || !problem_.isEmpty())
+                finish(CannotOpen);
+        });
     transport_->open();
     if (transport_->state() == transport::Transport::State::Connected)
         status_ = Acknowledged;

@@ -65,6 +65,7 @@ private:
     std::ostream& err_;
     ClientSettings settings_;
     std::unique_ptr<transport::Transport> transport_;
+    std::unique_ptr<buses::Bus> bus_;
     std::unique_ptr<station::StationSession> session_;
     QEventLoop loop_;
     std::optional<int> status_;

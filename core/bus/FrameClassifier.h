@@ -2,6 +2,7 @@
 
 #include "can/CanFrame.h"
 
+#include <cstddef>
 #include <initializer_list>
 #include <string_view>
 #include <vector>
@@ -10,7 +11,9 @@ namespace stellwerk::bus {
 
 // The protocols Stellwerk knows on a CAN bus. Foreign: a frame no enabled protocol claims (another
 // program's, a device Stellwerk does not speak to, or garbage); it is counted and shown, never dropped.
+// Foreign stays the last one.
 enum class Protocol { Cs2, Foreign };
+inline constexpr std::size_t ProtocolCount = std::size_t(Protocol::Foreign) + 1;
 
 // The short name used in JSON and filters: "cs2", "foreign".
 std::string_view protocolName(Protocol protocol);

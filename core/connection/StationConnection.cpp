@@ -1,36 +1,11 @@
 #include "connection/StationConnection.h"
 
+#include "connection/StationLink.h"
 #include "cs2config/ConfigStreamKeys.h"
 #include "transport/TransportAddress.h"
 #include "transport/TransportFactory.h"
 
 namespace stellwerk::connection {
-
-// Everything one connection owns, torn down together: the start-up and the session before the
-// transport they use, the transport before the local station it talks to.
-class StationLink final : public QObject {
-public:
-    ~StationLink() override {
-        startup.reset();
-        session.reset();
-        transport.reset();
-        local.reset();
-    }
-
-    // Stops every signal from the link's parts to `receiver`.
-    void detach(const QObject* receiver) {
-        for (const QObject* part :
-             {static_cast<const QObject*>(transport.get()), static_cast<const QObject*>(startup.get()),
-              session ? static_cast<const QObject*>(&session->liveness()) : nullptr})
-            if (part)
-                QObject::disconnect(part, nullptr, receiver, nullptr);
-    }
-
-    std::unique_ptr<transport::LocalPeer> local;
-    std::unique_ptr<transport::Transport> transport;
-    std::unique_ptr<station::StationSession> session;
-    std::unique_ptr<station::StartupSequence> startup;
-};
 
 namespace {
 
@@ -83,49 +58,80 @@ StationConnection::~StationConnection() {
     link_.reset();
 }
 
-void StationConnection::connectTo(const QString& url) {
+void StationConnection::connectTo(const QString& url, const QStringList& furtherBuses) {
     disconnectFromStation();
-    const QString address = url.trimmed();
-    address_ = address;
-    if (address.isEmpty()) {
+    address_ = url.trimmed();
+    furtherBuses_ = furtherBuses;
+    link_ = std::make_unique<StationLink>();
+    auto station = stationTransport();
+    if (!station) {
+        link_.reset();
+        return fail(station.error());
+    }
+    std::vector<std::unique_ptr<transport::Transport>> further;
+    for (const QString& address : furtherBuses) {
+        auto transport = furtherTransport(address);
+        if (!transport) {
+            link_.reset();
+            return fail(transport.error());
+        }
+        further.push_back(std::move(transport.value()));
+    }
+    open(std::move(station.value()), std::move(further));
+}
+
+// The transport to the station at address_, or to the local station (started here) when there is none.
+Expected<std::unique_ptr<transport::Transport>, QString> StationConnection::stationTransport() {
+    if (address_.isEmpty()) {
         endpoint_ = StationEndpoint::simulated();
         if (!settings_.localStation)
-            return fail(QStringLiteral("this program has no simulated station"));
+            return QStringLiteral("this program has no simulated station");
         std::unique_ptr<transport::LocalPeer> local = settings_.localStation();
         if (!local->start())
-            return fail(QStringLiteral("the simulated station cannot start: %1").arg(local->errorString()));
+            return QStringLiteral("the simulated station cannot start: %1").arg(local->errorString());
         const transport::TransportSettings address = local->address();
-        link_ = std::make_unique<StationLink>();
         link_->local = std::move(local);
-        return open(transport::createTransport(address));
+        return transport::createTransport(address);
     }
-    const auto settings = transport::parseTransportUrl(address);
+    const auto settings = transport::parseTransportUrl(address_);
     if (!settings) {
-        endpoint_ = StationEndpoint::unusable(address);
-        return fail(settings.error());
+        endpoint_ = StationEndpoint::unusable(address_);
+        return QString(settings.error());
     }
     endpoint_ = StationEndpoint::of(settings.value());
-    link_ = std::make_unique<StationLink>();
-    open(transport::createTransport(settings.value()));
+    return transport::createTransport(settings.value());
+}
+
+Expected<std::unique_ptr<transport::Transport>, QString>
+StationConnection::furtherTransport(const QString& address) {
+    const auto settings = transport::parseTransportUrl(address.trimmed());
+    if (!settings)
+        return QStringLiteral("further bus \"%1\": %2").arg(address.trimmed(), settings.error());
+    return transport::createTransport(settings.value());
 }
 
 // Ends the connection; its parts go at the next turn of the event loop, since this may be called from
 // inside one of their signals.
 void StationConnection::disconnectFromStation() {
+    const bool hadBuses = link_ && !link_->buses.empty();
     if (link_) {
         link_->detach(this);
         if (link_->session)
             link_->session->liveness().stop();
-        link_->transport->close();
+        for (const auto& transport : link_->transports)
+            transport->close();
         link_.release()->deleteLater();
     }
     address_.clear();
+    furtherBuses_.clear();
     progress_ = {};
     result_ = {};
     failure_.clear();
     lastProblem_.clear();
     everConnected_ = lost_ = silent_ = loading_ = loaded_ = reload_ = false;
     updateState();
+    if (hadBuses)
+        emit busesChanged();
 }
 
 std::uint16_t StationConnection::embeddedPort() const {
@@ -137,20 +143,49 @@ std::uint16_t StationConnection::embeddedPort() const {
 }
 
 transport::TransportCounters StationConnection::transportCounters() const {
-    return link_ && link_->transport ? link_->transport->counters() : transport::TransportCounters{};
+    return link_ && !link_->transports.empty() ? link_->stationTransport().counters()
+                                               : transport::TransportCounters{};
+}
+
+std::vector<BusInfo> StationConnection::buses() const {
+    std::vector<BusInfo> buses;
+    if (link_)
+        for (const auto& bus : link_->buses)
+            buses.push_back({bus->name(), bus->profile(), bus.get() == link_->buses.front().get()});
+    return buses;
+}
+
+bool StationConnection::isBusConnected(int index) const {
+    return link_ && index >= 0 && std::size_t(index) < link_->transports.size() &&
+           link_->transports[std::size_t(index)]->state() == transport::Transport::State::Connected;
+}
+
+std::uint64_t StationConnection::busFrames(int index, bus::Protocol protocol) const {
+    if (!link_ || index < 0 || std::size_t(index) >= link_->buses.size())
+        return 0;
+    return link_->buses[std::size_t(index)]->received(protocol);
 }
 
 station::StationSession* StationConnection::session() const {
     return link_ ? link_->session.get() : nullptr;
 }
 
-void StationConnection::open(std::unique_ptr<transport::Transport> transport) {
-    link_->transport = std::move(transport);
-    link_->session = std::make_unique<station::StationSession>(*link_->transport, settings_.session);
+void StationConnection::open(std::unique_ptr<transport::Transport> station,
+                             std::vector<std::unique_ptr<transport::Transport>> further) {
+    link_->addBus(std::move(station), bus::BusProfile::centralStation(), endpoint_.place);
+    for (std::size_t index = 0; index < further.size(); ++index) {
+        const auto settings = transport::parseTransportUrl(furtherBuses_[qsizetype(index)].trimmed());
+        link_->addBus(std::move(further[index]), settings_.furtherBusProfile,
+                      StationEndpoint::of(*settings).place);
+    }
+    link_->session = std::make_unique<station::StationSession>(link_->stationBus(), settings_.session);
     watchTransport();
+    watchBuses();
     updateState();
+    emit busesChanged();
     emit sessionStarted(link_->session.get());
-    link_->transport->open();
+    for (const auto& transport : link_->transports)
+        transport->open();
 }
 
 void StationConnection::fail(const QString& reason) {
@@ -160,16 +195,25 @@ void StationConnection::fail(const QString& reason) {
 }
 
 void StationConnection::watchTransport() {
-    connect(link_->transport.get(), &transport::Transport::stateChanged, this,
-            &StationConnection::transportStateChanged);
-    connect(link_->transport.get(), &transport::Transport::problem, this, &StationConnection::report);
-    connect(link_->transport.get(), &transport::Transport::framesReceived, this,
-            [this](const std::vector<can::CanFrame>& frames) { emit framesSeen(frames, false); });
-    connect(link_->transport.get(), &transport::Transport::framesSent, this,
-            [this](const std::vector<can::CanFrame>& frames) { emit framesSeen(frames, true); });
+    transport::Transport* station = &link_->stationTransport();
+    connect(station, &transport::Transport::stateChanged, this, &StationConnection::transportStateChanged);
+    connect(&link_->stationBus(), &buses::Bus::framesSeen, this, &StationConnection::framesSeen);
     station::Liveness& liveness = link_->session->liveness();
     connect(&liveness, &station::Liveness::stationSilent, this, &StationConnection::stationSilent);
     connect(&liveness, &station::Liveness::stationRecovered, this, &StationConnection::stationRecovered);
+}
+
+// Every bus's frames for the monitor; the problems of every bus for the person (a further bus that goes
+// away does not change the station's state: its transport tries again by itself).
+void StationConnection::watchBuses() {
+    for (std::size_t index = 0; index < link_->buses.size(); ++index) {
+        connect(link_->transports[index].get(), &transport::Transport::problem, this,
+                &StationConnection::report);
+        connect(link_->buses[index].get(), &buses::Bus::framesSeen, this,
+                [this, index](const std::vector<can::CanFrame>& frames, bool outgoing) {
+                    emit busFramesSeen(int(index), frames, outgoing);
+                });
+    }
 }
 
 void StationConnection::transportStateChanged(transport::Transport::State state) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "base/Expected.h"
+#include "bus/FrameClassifier.h"
 #include "connection/StationEndpoint.h"
 #include "station/StartupSequence.h"
 #include "station/StationSession.h"
@@ -7,8 +9,10 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace stellwerk::connection {
 
@@ -47,16 +51,28 @@ struct StationCounts {
 // How patient the connection is; the defaults suit a CS2 on a LAN and the embedded simulator.
 // localStation is the station this program runs itself (the GUI program and tests hand over the embedded
 // simulated CS2); without one, connecting to "the simulated station" fails with a clear reason.
+// furtherBusProfile: the protocols expected on the further buses (none yet: until the module protocols
+// arrive, every frame there is foreign: counted and shown, never read as a CS2 command).
 struct ConnectionSettings {
     station::StationSettings session{};
     station::StartupOptions startup{};
     transport::LocalPeerFactory localStation{};
+    bus::BusProfile furtherBusProfile{};
+};
+
+// One bus of the connection, as the monitor shows it.
+struct BusInfo {
+    QString place;           // "socketcan/can1", "127.0.0.1:15731"; the station's place on the station's bus
+    bus::BusProfile profile; // what is expected on it
+    bool station = false;    // the bus the command station is reached by (always bus 0)
 };
 
 // The one object the app holds to be connected to a station. Given an address (udp://, tcp://, can://,
-// see can/TransportAddress.h) it opens the transport, runs the station session's start-up and watches
-// liveness; given none it starts the program's local station (the embedded simulated CS2, from the
-// settings' factory) and reaches it over a real transport.
+// see transport/TransportAddress.h) it opens the transport, runs the station session's start-up and
+// watches liveness; given none it starts the program's local station (the embedded simulated CS2, from
+// the settings' factory) and reaches it over a real transport. Further buses (a USB-CAN adapter wired to
+// relay modules) are held open beside the station's; a bus that goes away is reported and reconnected by
+// its transport without touching the station's state.
 // Its state is in user terms; the model takes the session and the start-up result from here.
 // After the station was silent or the connection was lost, the start-up runs again (the station may
 // have restarted, and others may have changed what we missed); a start-up cut short by a loss, or during
@@ -73,14 +89,23 @@ public:
     ~StationConnection() override;
 
     // Connects to the station at `url`; an empty url starts the local (simulated) station. Any
-    // previous connection ends first.
-    void connectTo(const QString& url);
+    // previous connection ends first. `furtherBuses` are more addresses to hold open beside it (bus 1, 2,
+    // ...); when one of them cannot be read, nothing is opened and the connection fails with the reason.
+    void connectTo(const QString& url, const QStringList& furtherBuses = {});
     void connectToSimulator() { connectTo(QString()); }
     void disconnectFromStation();
 
     State state() const { return state_; }
     // The address given to connectTo() (empty for the embedded station).
     const QString& address() const { return address_; }
+    // The further buses' addresses given to connectTo().
+    const QStringList& furtherBuses() const { return furtherBuses_; }
+    // The buses held open, the station's first; empty while disconnected.
+    std::vector<BusInfo> buses() const;
+    // Whether bus `index` is connected now.
+    bool isBusConnected(int index) const;
+    // Frames received on bus `index` that belong to `protocol` (Foreign: to none expected there).
+    std::uint64_t busFrames(int index, bus::Protocol protocol) const;
     const StationEndpoint& endpoint() const { return endpoint_; }
     QString description() const { return endpoint_.description(); }
     const LoadingProgress& progress() const { return progress_; }
@@ -110,12 +135,21 @@ signals:
     void configurationLoaded(const stellwerk::station::StartupResult& result);
     // Frames on the wire, for a bus monitor: one signal per batch the transport read (`outgoing` false)
     // and per block it wrote after pacing (`outgoing` true), in the order they passed.
+    // Only the station's bus.
     void framesSeen(const std::vector<stellwerk::can::CanFrame>& frames, bool outgoing);
+    // The same for every bus, with its index in buses().
+    void busFramesSeen(int bus, const std::vector<stellwerk::can::CanFrame>& frames, bool outgoing);
+    // The buses were opened (after connectTo) or closed.
+    void busesChanged();
 
 private:
-    void open(std::unique_ptr<transport::Transport> transport);
+    Expected<std::unique_ptr<transport::Transport>, QString> stationTransport();
+    Expected<std::unique_ptr<transport::Transport>, QString> furtherTransport(const QString& address);
+    void open(std::unique_ptr<transport::Transport> station,
+              std::vector<std::unique_ptr<transport::Transport>> further);
     void fail(const QString& reason);
     void watchTransport();
+    void watchBuses();
     void transportStateChanged(transport::Transport::State state);
     void stationSilent();
     void stationRecovered();
@@ -131,6 +165,7 @@ private:
     ConnectionSettings settings_;
     std::unique_ptr<StationLink> link_;
     QString address_;
+    QStringList furtherBuses_;
     StationEndpoint endpoint_;
     State state_ = State::Disconnected;
     LoadingProgress progress_;

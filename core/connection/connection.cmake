@@ -8,5 +8,6 @@ target_sources(stellwerk-connection PRIVATE
     connection/StationConnection.h
     connection/StationEndpoint.cpp
     connection/StationEndpoint.h
+    connection/StationLink.h
 )
-target_link_libraries(stellwerk-connection PUBLIC stellwerk-station stellwerk-transport Qt6::Core)
+target_link_libraries(stellwerk-connection PUBLIC stellwerk-buses stellwerk-station stellwerk-transport Qt6::Core)

@@ -1,13 +1,12 @@
 #include "station/StationSession.h"
 
-#include "bus/FrameClassifier.h"
 #include "cs2/Codec.h"
 #include "cs2/Request.h"
 
 namespace stellwerk::station {
 
-StationSession::StationSession(transport::Transport& transport, StationSettings settings, QObject* parent)
-    : QObject(parent), transport_(transport), settings_(settings), identity_(settings.uid),
+StationSession::StationSession(buses::Bus& bus, StationSettings settings, QObject* parent)
+    : QObject(parent), bus_(bus), transport_(bus.transport()), settings_(settings), identity_(settings.uid),
       tracker_(new CommandTracker(
           [this](std::span<const can::CanFrame> f, CommandId id) { return sendFrames(f, id); },
           [this](CommandId id) { transport_.withdraw(id); }, this)),
@@ -17,7 +16,7 @@ StationSession::StationSession(transport::Transport& transport, StationSettings 
     download_->setRequestPolicy(settings_.commands);
     download_->setIdleTimeout(settings_.streamIdle);
     liveness_->setSettings(settings_.liveness);
-    connect(&transport_, &transport::Transport::framesReceived, this, &StationSession::receive);
+    bus_.subscribe(bus::Protocol::Cs2, this, [this](const std::vector<can::CanFrame>& f) { receive(f); });
     connect(&transport_, &transport::Transport::stateChanged, this, &StationSession::transportStateChanged);
     connect(liveness_, &Liveness::stationSilent, this, &StationSession::stationSilent);
     connected_ = transport_.state() == transport::Transport::State::Connected;
@@ -25,6 +24,7 @@ StationSession::StationSession(transport::Transport& transport, StationSettings 
 }
 
 StationSession::~StationSession() {
+    bus_.unsubscribe(this);
     disconnect(&transport_, nullptr, this, nullptr);
 }
 
@@ -89,12 +89,6 @@ void StationSession::receive(const std::vector<can::CanFrame>& frames) {
 
 void StationSession::receiveFrame(const can::CanFrame& frame) {
     ++counters_.frames;
-    // Another protocol's frame (a module on a shared CAN bus) must neither be read as a CS2 command (an
-    // 11-bit frame looks like a system command) nor look like a hash collision.
-    if (bus::classify(frame, bus::BusProfile::centralStation()) != bus::Protocol::Cs2) {
-        ++counters_.foreign;
-        return;
-    }
     if (const auto newHash = identity_.observe(frame)) {
         ++counters_.hashCollisions;
         emit hashChanged(cs2::hash(frame), *newHash);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "buses/Bus.h"
 #include "station/CommandTracker.h"
 #include "station/ConfigDownload.h"
 #include "station/DeviceDirectory.h"
@@ -28,14 +29,14 @@ struct StationSettings {
 
 // What a session has seen since it started, for the status bar and tests.
 struct SessionCounters {
-    std::uint64_t frames = 0;
+    std::uint64_t frames = 0; // CS2 frames; the bus counts those of other protocols
     std::uint64_t undecodable = 0;
-    std::uint64_t foreign = 0; // frames of another protocol on the bus (standard 11-bit ones), ignored
     std::uint64_t answersMatched = 0;
     std::uint64_t hashCollisions = 0;
 };
 
-// One connected command station: the only place that knows the conversation rules. Sends with our
+// One connected command station: the only place that knows the conversation rules. It subscribes to the
+// CS2 frames of its bus (frames of other protocols on a shared bus never reach it) and sends with our
 // hash, tracks acknowledgements, watches liveness, downloads files, and turns every frame on the bus
 // (ours and other controllers') into batched StationUpdates. When the connection is lost, every command
 // still waiting ends at once (Cancelled) and nothing of it is sent when the station is back; when the
@@ -44,8 +45,7 @@ class StationSession final : public QObject {
     Q_OBJECT
 
 public:
-    explicit StationSession(transport::Transport& transport, StationSettings settings = {},
-                            QObject* parent = nullptr);
+    explicit StationSession(buses::Bus& bus, StationSettings settings = {}, QObject* parent = nullptr);
     ~StationSession() override;
 
     const StationIdentity& identity() const { return identity_; }
@@ -57,6 +57,7 @@ public:
     const DeviceDirectory& devices() const { return directory_; }
     const SessionCounters& counters() const { return counters_; }
     transport::Transport& transport() { return transport_; }
+    buses::Bus& bus() { return bus_; }
 
     // Sends without waiting for an answer (ping, bootloader "go", commands nobody acknowledges).
     bool send(const cs2::Message& message);
@@ -84,6 +85,7 @@ private:
     void receiveFrame(const can::CanFrame& frame);
     void route(const cs2::Message& message, const can::CanFrame& frame);
 
+    buses::Bus& bus_;
     transport::Transport& transport_;
     StationSettings settings_;
     StationIdentity identity_;

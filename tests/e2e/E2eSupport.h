@@ -132,6 +132,7 @@ public:
     }
     ~Rig() {
         session.reset();
+        bus.reset();
         transport.reset();
         server.reset();
     }
@@ -142,7 +143,9 @@ public:
     // Makes the app's transport and session, opens the transport and waits for the station's answer.
     bool connectApp() {
         transport = transport::createTransport(transportSettings());
-        session = std::make_unique<station::StationSession>(*transport, settings_);
+        session.reset();
+        bus = std::make_unique<buses::Bus>(*transport, bus::BusProfile::centralStation());
+        session = std::make_unique<station::StationSession>(*bus, settings_);
         transport->open();
         return waitFor([&] { return transport->state() == transport::Transport::State::Connected; }) &&
                hearStation();
@@ -198,6 +201,7 @@ public:
     sim::SimulatedStation station{sim::StationLayout::demo()};
     std::unique_ptr<sim::StationServer> server;
     std::unique_ptr<transport::Transport> transport;
+    std::unique_ptr<buses::Bus> bus;
     std::unique_ptr<station::StationSession> session;
 
 private:

@@ -67,7 +67,8 @@ TEST(TcpPeerThatNeverReads, CommandsFailAndNothingPilesUp) {
     deaf.pauseAccepting(); // the kernel completes connections; nobody takes or reads them
     auto transport = transport::createTransport(
         transport::TcpSettings{QStringLiteral("127.0.0.1"), deaf.serverPort(), fastReconnect()});
-    station::StationSession session(*transport, impatient());
+    buses::Bus bus(*transport, bus::BusProfile::centralStation());
+    station::StationSession session(bus, impatient());
     transport->open();
     ASSERT_TRUE(waitFor([&] { return transport->state() == State::Connected; }));
     int acknowledged = 0;

@@ -175,7 +175,7 @@ class ModelBench {
 public:
     explicit ModelBench(sim::StationLayout layout = inlineLayout(),
                         sim::SimulatedStation::Options options = stationOptions())
-        : station(std::move(layout), options), session(appEnd, fastSettings()), railway(session) {
+        : station(std::move(layout), options), session(appBus, fastSettings()), railway(session) {
         transport::LoopbackTransport::join(stationEnd, appEnd);
         QObject::connect(&station, &sim::SimulatedStation::framesEmitted, &stationEnd,
                          [this](const std::vector<can::CanFrame>& frames) { stationEnd.sendBatch(frames); });
@@ -205,6 +205,7 @@ public:
     bool deaf = false;
     transport::LoopbackTransport stationEnd{QStringLiteral("station")};
     transport::LoopbackTransport appEnd{QStringLiteral("app")};
+    buses::Bus appBus{appEnd, bus::BusProfile::centralStation()};
     sim::SimulatedStation station;
     station::StationSession session;
     Railway railway;

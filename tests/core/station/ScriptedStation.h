@@ -174,7 +174,7 @@ private:
 
 // The application end with a session, joined to a scripted station; both ends open.
 struct Bench {
-    explicit Bench(StationSettings settings = fastSettings()) : session(app, settings) {
+    explicit Bench(StationSettings settings = fastSettings()) : session(bus, settings) {
         transport::LoopbackTransport::join(app, station.end);
         app.open();
         station.end.open();
@@ -190,6 +190,7 @@ struct Bench {
     }
 
     transport::LoopbackTransport app{QStringLiteral("app")};
+    buses::Bus bus{app, bus::BusProfile::centralStation()};
     ScriptedStation station;
     StationSession session;
 };

@@ -52,8 +52,9 @@ TEST(StationIdentity, StandardFramesOfAnotherProtocolAreIgnored) {
     const std::uint16_t own = bench.session.identity().hash();
     const std::uint8_t stopLike[5] = {};
     bench.station.sendToApp({can::CanFrame::standard(own & 0x7FF, stopLike)});
-    ASSERT_TRUE(waitFor([&] { return bench.session.counters().frames == 1; }));
-    EXPECT_EQ(bench.session.counters().foreign, 1u);
+    ASSERT_TRUE(waitFor([&] { return bench.bus.received(bus::Protocol::Foreign) == 1; }));
+    EXPECT_EQ(bench.bus.received(bus::Protocol::Cs2), 0u);
+    EXPECT_EQ(bench.session.counters().frames, 0u) << "the session never saw it";
     EXPECT_EQ(bench.session.counters().undecodable, 0u);
     EXPECT_EQ(changed.count(), 0);
     EXPECT_EQ(updates.count(), 0) << "nothing reached the model";

@@ -1,0 +1,57 @@
+#pragma once
+
+#include "buses/Bus.h"
+#include "station/StartupSequence.h"
+#include "station/StationSession.h"
+#include "transport/LocalPeer.h"
+#include "transport/Transport.h"
+
+#include <QObject>
+#include <memory>
+#include <vector>
+
+namespace stellwerk::connection {
+
+// Everything one connection owns, torn down together: the start-up and the session before the buses they
+// read, the buses before their transports, the transports before the local station they talk to. Bus 0
+// is the station's; further ones (a USB-CAN adapter with modules) follow in the order given.
+class StationLink final : public QObject {
+public:
+    ~StationLink() override {
+        startup.reset();
+        session.reset();
+        buses.clear();
+        transports.clear();
+        local.reset();
+    }
+
+    buses::Bus& addBus(std::unique_ptr<transport::Transport> transport, bus::BusProfile profile,
+                       QString place) {
+        transports.push_back(std::move(transport));
+        buses.push_back(
+            std::make_unique<buses::Bus>(*transports.back(), std::move(profile), std::move(place)));
+        return *buses.back();
+    }
+    buses::Bus& stationBus() const { return *buses.front(); }
+    transport::Transport& stationTransport() const { return *transports.front(); }
+
+    // Stops every signal from the link's parts to `receiver`.
+    void detach(const QObject* receiver) {
+        for (const auto& transport : transports)
+            QObject::disconnect(transport.get(), nullptr, receiver, nullptr);
+        for (const auto& bus : buses)
+            QObject::disconnect(bus.get(), nullptr, receiver, nullptr);
+        if (startup)
+            QObject::disconnect(startup.get(), nullptr, receiver, nullptr);
+        if (session)
+            QObject::disconnect(&session->liveness(), nullptr, receiver, nullptr);
+    }
+
+    std::unique_ptr<transport::LocalPeer> local;
+    std::vector<std::unique_ptr<transport::Transport>> transports;
+    std::vector<std::unique_ptr<buses::Bus>> buses;
+    std::unique_ptr<station::StationSession> session;
+    std::unique_ptr<station::StartupSequence> startup;
+};
+
+} // namespace stellwerk::connection
