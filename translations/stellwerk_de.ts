@@ -382,6 +382,10 @@
         <source>→ sent</source>
         <translation>→ gesendet</translation>
     </message>
+    <message>
+        <source>Bus</source>
+        <translation>Bus</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::BusMonitorPanel</name>
@@ -577,6 +581,26 @@
         <source>Stop the replay, clear the table and show the station&apos;s frames again</source>
         <translation>Wiedergabe beenden, Tabelle leeren und wieder die Telegramme der Zentrale zeigen</translation>
     </message>
+    <message>
+        <source>station</source>
+        <translation>Zentrale</translation>
+    </message>
+    <message>
+        <source>All protocols</source>
+        <translation>Alle Protokolle</translation>
+    </message>
+    <message>
+        <source>CS2</source>
+        <translation>CS2</translation>
+    </message>
+    <message>
+        <source>Foreign</source>
+        <translation>Fremd</translation>
+    </message>
+    <message>
+        <source>Show only frames of one protocol; foreign frames belong to none that is expected on their bus</source>
+        <translation>Nur Frames eines Protokolls zeigen; fremde Frames gehören zu keinem, das auf ihrem Bus erwartet wird</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::ConnectDialog</name>
@@ -657,6 +681,22 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>&amp;Address:</source>
         <translation>&amp;Adresse:</translation>
+    </message>
+    <message>
+        <source>Further &amp;buses:</source>
+        <translation>Weitere &amp;Busse:</translation>
+    </message>
+    <message>
+        <source>Optional: more CAN buses to watch beside the station, such as a USB-CAN adapter wired to relay modules; separate several with commas. Their frames show in the bus monitor.</source>
+        <translation>Optional: weitere CAN-Busse, die neben der Zentrale beobachtet werden, etwa ein USB-CAN-Adapter an Relaismodulen; mehrere durch Kommas trennen. Ihre Frames erscheinen im Busmonitor.</translation>
+    </message>
+    <message>
+        <source>The further bus %1 cannot be used: %2</source>
+        <translation>Der weitere Bus %1 kann nicht verwendet werden: %2</translation>
+    </message>
+    <message>
+        <source>The further bus %1 is the station&apos;s own address.</source>
+        <translation>Der weitere Bus %1 ist die Adresse der Zentrale selbst.</translation>
     </message>
 </context>
 <context>

@@ -382,6 +382,10 @@
         <source>→ sent</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Bus</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::BusMonitorPanel</name>
@@ -577,6 +581,26 @@
         <source>Stop the replay, clear the table and show the station&apos;s frames again</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>station</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All protocols</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CS2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Foreign</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show only frames of one protocol; foreign frames belong to none that is expected on their bus</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::ConnectDialog</name>
@@ -653,6 +677,22 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>&amp;Address:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Further &amp;buses:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Optional: more CAN buses to watch beside the station, such as a USB-CAN adapter wired to relay modules; separate several with commas. Their frames show in the bus monitor.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The further bus %1 cannot be used: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The further bus %1 is the station&apos;s own address.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -30,11 +30,12 @@ constexpr int SettleMs = 200;
 constexpr int LivelyMs = 1500;
 
 struct Options {
-    QString screenshotFile; // empty: run normally
-    QString captureFile;    // a capture to open in the frame decoder
-    QString stationUrl;     // the station to connect to; empty: the embedded simulated station
-    QString panel;          // object name of the panel to bring to the front (for screenshots)
-    QSize size;             // the window's size (for screenshots); empty: as remembered
+    QString screenshotFile;   // empty: run normally
+    QString captureFile;      // a capture to open in the frame decoder
+    QString stationUrl;       // the station to connect to; empty: the embedded simulated station
+    QString panel;            // object name of the panel to bring to the front (for screenshots)
+    QSize size;               // the window's size (for screenshots); empty: as remembered
+    QStringList furtherBuses; // more buses to hold open beside the station's
 };
 
 // --simulated wins over --station, which wins over the settings.
@@ -103,14 +104,25 @@ Options parseOptions(const QCoreApplication& app) {
     QCommandLineOption simulated(QStringLiteral("simulated"),
                                  QStringLiteral("Connect to the embedded simulated station (demo layout)."));
     parser.addOption(simulated);
+    QCommandLineOption bus(QStringLiteral("bus"),
+                           QStringLiteral("Also watch the CAN bus at <url> (can://socketcan/can1, a USB-CAN "
+                                          "adapter wired to modules) beside the station; may be given more "
+                                          "than once; replaces the further buses in the settings."),
+                           QStringLiteral("url"));
+    parser.addOption(bus);
     QCommandLineOption panel(QStringLiteral("panel"),
                              QStringLiteral("Bring a panel to the front first (its object name: statusPanel, "
                                             "busMonitorPanel, throttlePanel, ...)."),
                              QStringLiteral("name"));
     parser.addOption(panel);
     parser.process(app);
-    return Options{parser.value(screenshot), parser.value(decode), stationUrl(parser, station, simulated),
-                   parser.value(panel), windowSize(parser.value(size))};
+    return Options{parser.value(screenshot),
+                   parser.value(decode),
+                   stationUrl(parser, station, simulated),
+                   parser.value(panel),
+                   windowSize(parser.value(size)),
+                   parser.isSet(bus) ? parser.values(bus)
+                                     : stellwerk::ui::StationUrlSettings::furtherBuses()};
 }
 
 void grabAndQuit(QWidget& window, const QString& file) {
@@ -188,7 +200,8 @@ int main(int argc, char* argv[]) {
     if (!options.screenshotFile.isEmpty()) {
         saveScreenshotAndQuit(window, connection, options.screenshotFile);
     }
-    QTimer::singleShot(0, &connection,
-                       [&connection, url = options.stationUrl] { connection.connectTo(url); });
+    QTimer::singleShot(0, &connection, [&connection, &options] {
+        connection.connectTo(options.stationUrl, options.furtherBuses);
+    });
     return QApplication::exec();
 }

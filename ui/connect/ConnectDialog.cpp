@@ -57,6 +57,15 @@ void ConnectDialog::createWidgets() {
     m_examples->setObjectName(QStringLiteral("urlExamples"));
     m_examples->setTextFormat(Qt::PlainText);
     m_examples->setForegroundRole(QPalette::PlaceholderText);
+    m_furtherLabel = new QLabel(this);
+    m_further = new QLineEdit(this);
+    m_further->setObjectName(QStringLiteral("furtherBuses"));
+    m_further->setPlaceholderText(QStringLiteral("can://socketcan/can1"));
+    m_furtherLabel->setBuddy(m_further);
+    m_furtherHint = new QLabel(this);
+    m_furtherHint->setObjectName(QStringLiteral("furtherBusesHint"));
+    m_furtherHint->setForegroundRole(QPalette::PlaceholderText);
+    m_furtherHint->setWordWrap(true);
     m_error = new QLabel(this);
     m_error->setObjectName(QStringLiteral("urlError"));
     m_error->setStyleSheet(QStringLiteral("color: #c82c2c"));
@@ -72,6 +81,8 @@ void ConnectDialog::createWidgets() {
     auto* address = new QFormLayout;
     address->addRow(m_urlLabel, m_url);
     address->addRow(QString(), m_examples);
+    address->addRow(m_furtherLabel, m_further);
+    address->addRow(QString(), m_furtherHint);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(recentLine);
     layout->addLayout(createChoices());
@@ -82,6 +93,7 @@ void ConnectDialog::createWidgets() {
 
     connect(m_url, &QLineEdit::textEdited, this, &ConnectDialog::readUrl);
     connect(m_url, &QLineEdit::textChanged, this, &ConnectDialog::check);
+    connect(m_further, &QLineEdit::textChanged, this, &ConnectDialog::check);
     connect(m_buttons, &QDialogButtonBox::accepted, this, &ConnectDialog::accept);
     connect(m_buttons, &QDialogButtonBox::rejected, this, &ConnectDialog::reject);
 }
@@ -184,6 +196,7 @@ void ConnectDialog::accept() {
     if (!m_connect->isEnabled())
         return;
     StationUrlSettings::save(url());
+    StationUrlSettings::saveFurtherBuses(furtherBuses());
     QDialog::accept();
 }
 
@@ -211,6 +224,10 @@ void ConnectDialog::retranslate() {
                            "udp://192.168.2.5 — a CS2 with its CAN-UDP gateway switched on\n"
                            "tcp://192.168.2.5 — a CS3, or a CS2 over TCP\n"
                            "can://socketcan/can0 — a Gleisbox through a CAN adapter"));
+    m_furtherLabel->setText(tr("Further &buses:"));
+    m_furtherHint->setText(tr("Optional: more CAN buses to watch beside the station, such as a USB-CAN "
+                              "adapter wired to relay modules; separate several with commas. Their frames "
+                              "show in the bus monitor."));
     m_connect->setText(tr("&Connect"));
     check();
 }
@@ -284,9 +301,34 @@ void ConnectDialog::check() {
         else if (const auto address = connection::StationAddress::read(text); !address)
             error = tr("This address cannot be used: %1").arg(address.error());
     }
+    if (error.isEmpty())
+        error = furtherBusError();
     m_error->setText(error);
     m_error->setVisible(!error.isEmpty());
     m_connect->setEnabled(error.isEmpty());
+}
+
+QStringList ConnectDialog::furtherBuses() const {
+    QStringList addresses;
+    for (const QString& address : m_further->text().split(QLatin1Char(','), Qt::SkipEmptyParts))
+        if (!address.trimmed().isEmpty())
+            addresses.append(address.trimmed());
+    return addresses;
+}
+
+void ConnectDialog::setFurtherBuses(const QStringList& addresses) {
+    m_further->setText(addresses.join(QStringLiteral(", ")));
+}
+
+// Every further bus must be readable; the station's own address must not be listed again.
+QString ConnectDialog::furtherBusError() const {
+    for (const QString& address : furtherBuses()) {
+        if (const auto read = connection::StationAddress::read(address); !read)
+            return tr("The further bus %1 cannot be used: %2").arg(address, read.error());
+        if (kind() != Kind::Simulated && address == url())
+            return tr("The further bus %1 is the station's own address.").arg(address);
+    }
+    return {};
 }
 
 } // namespace stellwerk::ui

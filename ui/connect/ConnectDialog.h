@@ -14,7 +14,8 @@ namespace stellwerk::ui {
 
 // Station → Connect…: the simulated station, a CS2/CS3 over UDP or TCP by its host, a CAN interface from
 // the ones Qt's CAN plugins offer, or any address typed in full; the recent choices one click away.
-// Connect checks the address and stores the choice (StationUrlSettings), so the next start uses it too.
+// Further buses (a USB-CAN adapter wired to modules) can be listed beside the station, comma-separated.
+// Connect checks the addresses and stores the choice (StationUrlSettings), so the next start uses it too.
 // Connecting itself happens afterwards, in the background: the dialog never waits for a station.
 class ConnectDialog final : public QDialog {
     Q_OBJECT
@@ -31,6 +32,9 @@ public:
     Kind kind() const;
     // Fills the dialog from an address (as stored, typed or recent); an unreadable one is kept as typed.
     void setUrl(const QString& url);
+    // The further buses' addresses, as listed (empty entries left out).
+    QStringList furtherBuses() const;
+    void setFurtherBuses(const QStringList& addresses);
     // Lists the CAN interfaces the plugins offer now.
     void refreshInterfaces();
     void accept() override;
@@ -47,6 +51,7 @@ private:
     void composeUrl();
     void readUrl();
     void check();
+    QString furtherBusError() const;
 
     QComboBox* m_recent = nullptr;
     QLabel* m_recentLabel = nullptr;
@@ -63,6 +68,9 @@ private:
     QLabel* m_urlLabel = nullptr;
     QLineEdit* m_url = nullptr;
     QLabel* m_examples = nullptr;
+    QLabel* m_furtherLabel = nullptr;
+    QLineEdit* m_further = nullptr;
+    QLabel* m_furtherHint = nullptr;
     QLabel* m_error = nullptr;
     QDialogButtonBox* m_buttons = nullptr;
     QPushButton* m_connect = nullptr;

@@ -8,6 +8,7 @@ namespace {
 
 const QString urlKey = QStringLiteral("station/url");
 const QString recentKey = QStringLiteral("station/recent");
+const QString furtherBusesKey = QStringLiteral("station/furtherBuses");
 
 } // namespace
 
@@ -36,6 +37,20 @@ QStringList StationUrlSettings::recent() {
             recent.append(url.trimmed());
     }
     return recent;
+}
+
+QStringList StationUrlSettings::furtherBuses() {
+    const QSettings settings = stellwerkSettings();
+    QStringList addresses;
+    for (const QString& address : settings.value(furtherBusesKey).toStringList())
+        if (!address.trimmed().isEmpty())
+            addresses.append(address.trimmed());
+    return addresses;
+}
+
+void StationUrlSettings::saveFurtherBuses(const QStringList& addresses) {
+    QSettings settings = stellwerkSettings();
+    settings.setValue(furtherBusesKey, addresses);
 }
 
 } // namespace stellwerk::ui

@@ -7,7 +7,8 @@ namespace stellwerk::ui {
 
 // The address of the station Stellwerk connects to at start (key station/url), remembered between runs in
 // Stellwerk's settings; empty (or never set) means the embedded simulated station. Also the stations
-// connected to recently (key station/recent), newest first, for the Connect dialog.
+// connected to recently (key station/recent), newest first, for the Connect dialog. And the further buses
+// held open beside the station (key station/furtherBuses), such as a USB-CAN adapter wired to modules.
 class StationUrlSettings final {
 public:
     static constexpr int MaxRecent = 8;
@@ -17,6 +18,8 @@ public:
     static void save(const QString& url);
     // Newest first, without duplicates; the simulated station is the empty string.
     static QStringList recent();
+    static QStringList furtherBuses();
+    static void saveFurtherBuses(const QStringList& addresses);
 };
 
 } // namespace stellwerk::ui

@@ -46,6 +46,13 @@ void BusMonitorFilter::setCommand(const QString& name) {
     setFilters(name, m_locId, m_text);
 }
 
+void BusMonitorFilter::setProtocol(std::optional<bus::Protocol> protocol) {
+    if (protocol == m_protocol)
+        return;
+    m_protocol = protocol;
+    restart();
+}
+
 void BusMonitorFilter::setLocId(std::optional<std::uint32_t> locId) {
     setFilters(m_command, locId, m_text);
 }
@@ -88,6 +95,8 @@ std::optional<std::uint32_t> BusMonitorFilter::parseLocId(const QString& text) {
 
 // Cheap tests first: the command needs no decoding, the Loc-ID one decode, the text all the text.
 bool BusMonitorFilter::accepts(int sourceRow) const {
+    if (m_protocol && m_source->protocolAt(sourceRow) != *m_protocol)
+        return false;
     if (!m_commandName.empty() && m_source->commandAt(sourceRow) != m_commandName)
         return false;
     if (m_locId && m_source->locIdAt(sourceRow) != m_locId)

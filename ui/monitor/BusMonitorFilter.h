@@ -1,5 +1,7 @@
 #pragma once
 
+#include "bus/FrameClassifier.h"
+
 #include <QAbstractProxyModel>
 #include <QString>
 #include <cstdint>
@@ -13,9 +15,9 @@ namespace stellwerk::ui {
 
 class BusMonitorModel;
 
-// The bus monitor's three filters at once: a command (by its vocabulary name), a Loc-ID and a piece of
-// text; a row is shown when it passes all that are set. Changing a filter tests the rows a slice at a
-// time between events (a million rows take seconds to decode), so the window stays usable and shows
+// The bus monitor's four filters at once: a protocol, a command (by its vocabulary name), a Loc-ID and a
+// piece of text; a row is shown when it passes all that are set. Changing a filter tests the rows a slice at
+// a time between events (a million rows take seconds to decode), so the window stays usable and shows
 // progress; new rows are tested as they come, and rows the history drops leave without a new scan.
 class BusMonitorFilter final : public QAbstractProxyModel {
     Q_OBJECT
@@ -41,7 +43,10 @@ public:
     QString text() const { return m_text; }
     // All three at once, with one new scan when any changed.
     void setFilters(const QString& command, std::optional<std::uint32_t> locId, const QString& text);
-    bool isFiltering() const { return !m_command.isEmpty() || m_locId || !m_text.isEmpty(); }
+    // nullopt = every protocol; else only the frames that belong to it on their bus (Foreign: to none).
+    void setProtocol(std::optional<bus::Protocol> protocol);
+    std::optional<bus::Protocol> protocol() const { return m_protocol; }
+    bool isFiltering() const { return m_protocol || !m_command.isEmpty() || m_locId || !m_text.isEmpty(); }
     // Rows are still being tested after a filter changed; scanPercent() says how far it has come.
     bool isScanning() const;
     int scanPercent() const;
@@ -78,6 +83,7 @@ private:
 
     BusMonitorModel* m_source = nullptr;
     QTimer* m_scanTimer = nullptr;
+    std::optional<bus::Protocol> m_protocol;
     QString m_command;
     std::string m_commandName;
     std::optional<std::uint32_t> m_locId;

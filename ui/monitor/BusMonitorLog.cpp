@@ -5,7 +5,20 @@
 namespace stellwerk::ui {
 namespace {
 
-const QByteArray interfaceName = QByteArrayLiteral("can0");
+QByteArray interfaceName(int bus) {
+    return QByteArrayLiteral("can") + QByteArray::number(bus);
+}
+
+// The N of the "canN" interface after the time stamp; 0 when the line names another one or none.
+int lineBus(const QByteArray& line) {
+    const qsizetype start = line.startsWith('(') ? line.indexOf(") ") + 2 : -1;
+    if (start < 2 || line.mid(start, 3) != "can")
+        return 0;
+    const qsizetype end = line.indexOf(' ', start);
+    bool ok = false;
+    const int bus = line.mid(start + 3, end < 0 ? -1 : end - start - 3).toInt(&ok);
+    return ok && bus >= 0 && bus < 256 ? bus : 0;
+}
 
 // The "(seconds.micros)" a candump log line starts with, as microseconds, if it has one.
 std::optional<qint64> lineTimeUs(const QByteArray& line) {
@@ -43,13 +56,14 @@ void BusMonitorLogWriter::close() {
         m_file.close();
 }
 
-bool BusMonitorLogWriter::write(std::span<const can::CanFrame> frames, const QDateTime& time, bool outgoing) {
+bool BusMonitorLogWriter::write(std::span<const can::CanFrame> frames, const QDateTime& time, bool outgoing,
+                                int bus) {
     if (!m_file.isOpen())
         return false;
     const qint64 ms = time.toMSecsSinceEpoch();
     const QByteArray prefix = QByteArray("(") + QByteArray::number(ms / 1000) + '.' +
                               QByteArray::number((ms % 1000) * 1000).rightJustified(6, '0') + ") " +
-                              interfaceName + ' ';
+                              interfaceName(bus) + ' ';
     const QByteArray mark = outgoing ? QByteArrayLiteral(" T\n") : QByteArrayLiteral(" R\n");
     QByteArray lines;
     lines.reserve(qsizetype(frames.size()) * 48);
@@ -84,6 +98,7 @@ std::optional<BusMonitorLogLine> BusMonitorLogReader::next() {
         result.frame = parsed.value().frame;
         result.timeUs = lineTimeUs(line);
         result.sent = line.endsWith(" T");
+        result.bus = lineBus(line);
         return result;
     }
     return std::nullopt;

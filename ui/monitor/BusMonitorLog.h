@@ -13,7 +13,7 @@ namespace stellwerk::ui {
 // Keeps what the bus monitor saw in a candump log file ("(1700000000.123000) can0 00084711#0000C0030120 T",
 // as SocketCAN's candump -l writes and canplayer reads; the R or T after the data marks a received or a
 // transmitted frame, and readers that expect three fields skip it), so a session can be shared and
-// looked at again.
+// looked at again. The interface names the bus: can0 for the station's, can1, can2, ... for further ones.
 class BusMonitorLogWriter final {
     Q_DISABLE_COPY_MOVE(BusMonitorLogWriter)
 
@@ -27,7 +27,7 @@ public:
     QString fileName() const { return m_file.fileName(); }
     // Appends one line per frame, all with the time `time` and the direction mark, and hands them to the
     // system at once (a crash keeps them); returns false when the disk refused them.
-    bool write(std::span<const can::CanFrame> frames, const QDateTime& time, bool outgoing);
+    bool write(std::span<const can::CanFrame> frames, const QDateTime& time, bool outgoing, int bus = 0);
 
 private:
     QFile m_file;
@@ -39,6 +39,7 @@ struct BusMonitorLogLine {
     std::optional<can::CanFrame> frame; // empty when the line held no frame
     std::optional<qint64> timeUs;       // the "(seconds.micros)" stamp as microseconds, if the line had one
     bool sent = false;                  // the line ends with the "T" mark (transmitted)
+    int bus = 0;                        // N of a "canN" interface name, else 0
     QString problem;                    // why the line held no frame
 };
 

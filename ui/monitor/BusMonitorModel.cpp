@@ -79,8 +79,39 @@ BusMonitorModel::BusMonitorModel(QObject* parent)
 }
 
 BusMonitorModel::Record BusMonitorModel::record(const can::CanFrame& frame, Direction direction,
-                                                qint64 timeMs) {
-    return Record{timeMs, frame.id, frame.dlc, direction, frame.extended, frame.data};
+                                                qint64 timeMs, int bus) {
+    return Record{timeMs, frame.id, frame.dlc, direction, frame.extended, std::uint8_t(bus), frame.data};
+}
+
+void BusMonitorModel::setBuses(std::vector<MonitoredBus> buses) {
+    m_buses = std::move(buses);
+    m_descriptions.clear(); // a bus may expect other protocols now
+    noteBus(int(m_buses.size()) - 1);
+    if (!m_rows.empty())
+        emit dataChanged(index(0, 0), index(int(m_rows.size()) - 1, ColumnCount - 1));
+}
+
+QString BusMonitorModel::busName(int bus) const {
+    if (bus >= 0 && std::size_t(bus) < m_buses.size() && !m_buses[std::size_t(bus)].name.isEmpty())
+        return m_buses[std::size_t(bus)].name;
+    return QStringLiteral("can%1").arg(bus);
+}
+
+const bus::BusProfile& BusMonitorModel::profileOf(int bus) const {
+    static const bus::BusProfile station = bus::BusProfile::centralStation();
+    static const bus::BusProfile none{};
+    if (std::size_t(bus) < m_buses.size())
+        return m_buses[std::size_t(bus)].profile;
+    return bus == 0 ? station : none;
+}
+
+void BusMonitorModel::noteBus(int bus) {
+    if (bus + 1 <= m_busCount)
+        return;
+    const bool mattered = m_busCount > 1;
+    m_busCount = bus + 1;
+    if (!mattered && m_busCount > 1)
+        emit busCountChanged(m_busCount);
 }
 
 void BusMonitorModel::addFrames(std::span<const can::CanFrame> frames, Direction direction) {
@@ -88,12 +119,14 @@ void BusMonitorModel::addFrames(std::span<const can::CanFrame> frames, Direction
 }
 
 void BusMonitorModel::addFrames(std::span<const can::CanFrame> frames, Direction direction,
-                                const QDateTime& time) {
+                                const QDateTime& time, int bus) {
     if (frames.empty())
         return;
+    bus = std::clamp(bus, 0, 255);
+    noteBus(bus);
     const qint64 timeMs = time.toMSecsSinceEpoch();
     for (const can::CanFrame& frame : frames)
-        m_queued.push_back(record(frame, direction, timeMs));
+        m_queued.push_back(record(frame, direction, timeMs, bus));
     // Never hold more than the table could show: the oldest queued frames would be dropped anyway.
     const auto limit = std::size_t(m_historyLimit);
     if (m_queued.size() > limit)
@@ -164,6 +197,10 @@ void BusMonitorModel::clear() {
     endResetModel();
     m_total = 0;
     m_heldBack = 0;
+    const bool mattered = m_busCount > 1;
+    m_busCount = std::max(1, int(m_buses.size()));
+    if (mattered && m_busCount == 1)
+        emit busCountChanged(m_busCount);
     emit countsChanged();
 }
 
@@ -172,7 +209,16 @@ can::CanFrame BusMonitorModel::frameAt(int row) const {
 }
 
 const bus::FrameDescription& BusMonitorModel::describe(int row) const {
-    return m_descriptions.of(m_dropped + std::uint64_t(row), frameOf(m_rows.at(std::size_t(row))));
+    const Record& r = m_rows.at(std::size_t(row));
+    return m_descriptions.of(m_dropped + std::uint64_t(row), frameOf(r), profileOf(r.bus));
+}
+
+int BusMonitorModel::busAt(int row) const {
+    return m_rows.at(std::size_t(row)).bus;
+}
+
+bus::Protocol BusMonitorModel::protocolAt(int row) const {
+    return describe(row).protocol();
 }
 
 QDateTime BusMonitorModel::timeAt(int row) const {
@@ -229,6 +275,8 @@ QVariant BusMonitorModel::data(const QModelIndex& index, int role) const {
         return int(groupOf(describe(index.row()).name()));
     case CommandRole:
         return latin1(describe(index.row()).name());
+    case ProtocolRole:
+        return latin1(bus::protocolName(describe(index.row()).protocol()));
     case LocIdRole: {
         const auto locId = locIdAt(index.row());
         return locId ? QVariant::fromValue(uint(*locId)) : QVariant();
@@ -248,6 +296,8 @@ QVariant BusMonitorModel::display(const bus::FrameDescription& description, cons
     switch (column) {
     case TimeColumn:
         return QDateTime::fromMSecsSinceEpoch(r.timeMs).toString(QStringLiteral("HH:mm:ss.zzz"));
+    case BusColumn:
+        return busName(r.bus);
     case DirectionColumn:
         return r.direction == Direction::Received ? tr("← received") : tr("→ sent");
     case MessageColumn:
@@ -267,6 +317,8 @@ QVariant BusMonitorModel::headerData(int section, Qt::Orientation orientation, i
     switch (section) {
     case TimeColumn:
         return tr("Time");
+    case BusColumn:
+        return tr("Bus");
     case DirectionColumn:
         return tr("Direction");
     case MessageColumn:

@@ -5,6 +5,7 @@
 
 #include <QAbstractTableModel>
 #include <QDateTime>
+#include <QString>
 #include <array>
 #include <cstdint>
 #include <deque>
@@ -17,15 +18,30 @@ class QTimer;
 
 namespace stellwerk::ui {
 
+// A bus the monitor's rows may come from: its name for the bus column and the protocols expected on it.
+struct MonitoredBus {
+    QString name;
+    bus::BusProfile profile;
+};
+
 // The bus monitor's rows: a bounded history of compact frame records (no text per frame; the core's
-// core's FrameDescription, cached for the rows looked at, writes the text when a row is shown), filled in
-// batches so that a flood of frames costs one insert per flush instead of one per frame.
+// FrameDescription, cached for the rows looked at, writes the text when a row is shown), filled in
+// batches so that a flood of frames costs one insert per flush instead of one per frame. Each row knows
+// the bus it came from; the bus column says which when there is more than one.
 class BusMonitorModel final : public QAbstractTableModel {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(BusMonitorModel)
 
 public:
-    enum Column { TimeColumn, DirectionColumn, MessageColumn, DetailsColumn, FrameColumn, ColumnCount };
+    enum Column {
+        TimeColumn,
+        BusColumn,
+        DirectionColumn,
+        MessageColumn,
+        DetailsColumn,
+        FrameColumn,
+        ColumnCount
+    };
     enum class Direction : std::uint8_t { Received, Sent };
     // What kind of command a row carries; each has its own colour.
     enum class Group : std::uint8_t { System, Loco, Accessory, Feedback, Stream, Other };
@@ -33,9 +49,10 @@ public:
         // name, details and frame text in one string (decodes the frame once); BusMonitorFilter uses the
         // cheaper containsText()
         SearchTextRole = Qt::UserRole + 1,
-        GroupRole,   // the row's Group as int
-        CommandRole, // the command's vocabulary name ("loco.speed"), also for frames that did not decode
-        LocIdRole,   // the Loc-ID the frame addresses as uint, or invalid when it names none
+        GroupRole,    // the row's Group as int
+        CommandRole,  // the command's vocabulary name ("loco.speed"), also for frames that did not decode
+        LocIdRole,    // the Loc-ID the frame addresses as uint, or invalid when it names none
+        ProtocolRole, // the protocol's short name ("cs2", "foreign")
     };
 
     static constexpr int DefaultHistory = 100000;
@@ -45,7 +62,14 @@ public:
 
     // Queues frames seen now; they appear at the next flush (at most FlushIntervalMs later).
     void addFrames(std::span<const can::CanFrame> frames, Direction direction);
-    void addFrames(std::span<const can::CanFrame> frames, Direction direction, const QDateTime& time);
+    void addFrames(std::span<const can::CanFrame> frames, Direction direction, const QDateTime& time,
+                   int bus = 0);
+    // The connection's buses, by number (0: the station's). A row of a bus not named here (bus 3 of a
+    // replayed log) is called "can3" and read with no protocol expected (bus 0: the CS2's).
+    void setBuses(std::vector<MonitoredBus> buses);
+    // The buses named or seen in a row since the last clear(), whichever are more.
+    int busCount() const { return m_busCount; }
+    QString busName(int bus) const;
     // Moves the queued frames into the table now: one row insertion (and at most one removal of the
     // oldest rows) per call. Nothing moves while paused.
     void flush();
@@ -67,6 +91,9 @@ public:
     can::CanFrame frameAt(int row) const;
     QDateTime timeAt(int row) const;
     Direction directionAt(int row) const;
+    int busAt(int row) const;
+    // The protocol the frame of `row` belongs to on its bus.
+    bus::Protocol protocolAt(int row) const;
     // The Loc-ID field of the frame in `row`, read by the core's decoder; nullopt when it has none.
     std::optional<std::uint32_t> locIdAt(int row) const;
     // The command's vocabulary name ("loco.speed"), also for a frame that did not decode.
@@ -88,6 +115,8 @@ public:
 signals:
     // After each flush that changed something, and after pause, resume and clear (for counters).
     void countsChanged();
+    // The bus column matters (more than one bus) or stopped mattering.
+    void busCountChanged(int count);
 
 private:
     // 24 bytes per frame: a million rows fit in about 24 MB.
@@ -97,10 +126,13 @@ private:
         std::uint8_t dlc;
         Direction direction;
         bool extended;
+        std::uint8_t bus;
         std::array<std::uint8_t, 8> data;
     };
 
-    static Record record(const can::CanFrame& frame, Direction direction, qint64 timeMs);
+    static Record record(const can::CanFrame& frame, Direction direction, qint64 timeMs, int bus);
+    const bus::BusProfile& profileOf(int bus) const;
+    void noteBus(int bus);
     void dropOldest(std::size_t count);
     QVariant display(const bus::FrameDescription& description, const Record& record, int column) const;
     const bus::FrameDescription& describe(int row) const;
@@ -113,7 +145,9 @@ private:
     std::uint64_t m_heldBack = 0;
     std::uint64_t m_total = 0;
     std::uint64_t m_dropped = 0;
-    FrameDescriptions m_descriptions{bus::BusProfile::centralStation()};
+    FrameDescriptions m_descriptions;
+    std::vector<MonitoredBus> m_buses;
+    int m_busCount = 1;
 };
 
 } // namespace stellwerk::ui

@@ -43,6 +43,19 @@ int plural(std::uint64_t count) {
     return int(std::min<std::uint64_t>(count, std::uint64_t(std::numeric_limits<int>::max())));
 }
 
+// The protocols a frame may belong to, all first; the data is the protocol's short name ("cs2").
+QComboBox* protocolBox(QWidget* parent) {
+    auto* box = new QComboBox(parent);
+    box->setObjectName(QStringLiteral("busMonitorProtocol"));
+    box->addItem(QString(), QString());
+    for (std::size_t protocol = 0; protocol < bus::ProtocolCount; ++protocol) {
+        const std::string_view name = bus::protocolName(bus::Protocol(protocol));
+        box->addItem(QString(), QString::fromLatin1(name.data(), qsizetype(name.size())));
+    }
+    box->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    return box;
+}
+
 QPushButton* button(QWidget* parent, const char* name, bool checkable = false) {
     auto* result = new QPushButton(parent);
     result->setObjectName(QLatin1String(name));
@@ -60,6 +73,7 @@ BusMonitorPanel::BusMonitorPanel(QWidget* parent)
     connect(m_replay, &BusMonitorReplay::framesReplayed, this, &BusMonitorPanel::replayed);
     connect(m_replay, &BusMonitorReplay::lineSkipped, this, &BusMonitorPanel::lineSkipped);
     connect(m_replay, &BusMonitorReplay::stateChanged, this, &BusMonitorPanel::replayStateChanged);
+    connect(m_model, &BusMonitorModel::busCountChanged, this, &BusMonitorPanel::showBusColumn);
 
     m_counter = new QLabel(this);
     m_counter->setObjectName(QStringLiteral("busMonitorCounter"));
@@ -84,6 +98,8 @@ QLayout* BusMonitorPanel::createFilterBar() {
     m_filterEdit = new QLineEdit(this);
     m_filterEdit->setObjectName(QStringLiteral("busMonitorFilter"));
     m_filterEdit->setClearButtonEnabled(true);
+    m_protocolBox = protocolBox(this);
+    connect(m_protocolBox, &QComboBox::currentIndexChanged, this, &BusMonitorPanel::applyFilter);
     m_commandBox = new QComboBox(this);
     m_commandBox->setObjectName(QStringLiteral("busMonitorCommand"));
     m_commandBox->addItem(QString());
@@ -114,6 +130,7 @@ QLayout* BusMonitorPanel::createFilterBar() {
 
     auto* bar = new QHBoxLayout;
     bar->addWidget(m_filterEdit, 1);
+    bar->addWidget(m_protocolBox);
     bar->addWidget(m_commandBox);
     bar->addWidget(m_locIdEdit);
     bar->addWidget(m_pauseButton);
@@ -199,6 +216,8 @@ void BusMonitorPanel::createTable() {
     header->setStretchLastSection(false);
     const int digit = m_table->fontMetrics().horizontalAdvance(QLatin1Char('0'));
     header->resizeSection(BusMonitorModel::TimeColumn, digit * 14);
+    header->resizeSection(BusMonitorModel::BusColumn, digit * 16);
+    showBusColumn();
     header->resizeSection(BusMonitorModel::DirectionColumn, digit * 12);
     header->resizeSection(BusMonitorModel::MessageColumn, digit * 26);
     header->setSectionResizeMode(BusMonitorModel::DetailsColumn, QHeaderView::Stretch);
@@ -215,17 +234,35 @@ void BusMonitorPanel::setConnection(connection::StationConnection* station) {
     if (m_connection)
         disconnect(m_connection, nullptr, this, nullptr);
     m_connection = station;
-    if (station)
-        connect(station, &connection::StationConnection::framesSeen, this, &BusMonitorPanel::receive);
+    if (station) {
+        connect(station, &connection::StationConnection::busFramesSeen, this, &BusMonitorPanel::receive);
+        connect(station, &connection::StationConnection::busesChanged, this, &BusMonitorPanel::takeBuses);
+    }
+    takeBuses();
+}
+
+// The connection's buses name the rows' buses: the station's, then the further ones by their place.
+void BusMonitorPanel::takeBuses() {
+    std::vector<MonitoredBus> buses;
+    if (m_connection)
+        for (const connection::BusInfo& info : m_connection->buses())
+            buses.push_back({info.station ? tr("station") : info.place, info.profile});
+    m_model->setBuses(std::move(buses));
+    showBusColumn();
+}
+
+void BusMonitorPanel::showBusColumn() {
+    m_table->setColumnHidden(BusMonitorModel::BusColumn, m_model->busCount() <= 1);
 }
 
 // Live frames go to the recording always, and to the table unless a log is shown instead.
-void BusMonitorPanel::receive(const std::vector<can::CanFrame>& frames, bool outgoing) {
+void BusMonitorPanel::receive(int bus, const std::vector<can::CanFrame>& frames, bool outgoing) {
     const QDateTime now = QDateTime::currentDateTime();
     if (m_replay->state() == BusMonitorReplay::State::Idle)
-        m_model->addFrames(
-            frames, outgoing ? BusMonitorModel::Direction::Sent : BusMonitorModel::Direction::Received, now);
-    if (m_recorder && !m_recorder->write(frames, now, outgoing)) {
+        m_model->addFrames(frames,
+                           outgoing ? BusMonitorModel::Direction::Sent : BusMonitorModel::Direction::Received,
+                           now, bus);
+    if (m_recorder && !m_recorder->write(frames, now, outgoing, bus)) {
         const QString file = m_recorder->fileName();
         stopRecording();
         QMessageBox::warning(this, tr("Recording stopped"),
@@ -233,10 +270,11 @@ void BusMonitorPanel::receive(const std::vector<can::CanFrame>& frames, bool out
     }
 }
 
-void BusMonitorPanel::replayed(const std::vector<can::CanFrame>& frames, const QDateTime& time,
-                               bool outgoing) {
-    m_model->addFrames(
-        frames, outgoing ? BusMonitorModel::Direction::Sent : BusMonitorModel::Direction::Received, time);
+void BusMonitorPanel::replayed(const std::vector<can::CanFrame>& frames, const QDateTime& time, bool outgoing,
+                               int bus) {
+    m_model->addFrames(frames,
+                       outgoing ? BusMonitorModel::Direction::Sent : BusMonitorModel::Direction::Received,
+                       time, bus);
 }
 
 void BusMonitorPanel::lineSkipped(int line, const QString& reason) {
@@ -283,7 +321,9 @@ QString BusMonitorPanel::openLog(const QString& path) {
     const QString error = m_replay->start(path);
     if (!error.isEmpty())
         return error;
-    m_model->clear(); // the first frames come on the next turn of the event loop
+    m_model->clear();      // the first frames come on the next turn of the event loop
+    m_model->setBuses({}); // the log's buses are its own: can0, can1, ...
+    showBusColumn();
     m_skippedLines.clear();
     m_replayPauseButton->setChecked(false);
     replayStateChanged();
@@ -299,6 +339,7 @@ void BusMonitorPanel::setReplaySpeed(double factor) {
 void BusMonitorPanel::backToLive() {
     m_replay->stop();
     m_model->clear();
+    takeBuses();
 }
 
 void BusMonitorPanel::chooseLog() {
@@ -319,6 +360,15 @@ void BusMonitorPanel::replayStateChanged() {
 void BusMonitorPanel::setFilterText(const QString& text) {
     m_filterEdit->setText(text);
     applyFilter();
+}
+
+bool BusMonitorPanel::setProtocolFilter(const QString& name) {
+    const int index = m_protocolBox->findData(name);
+    if (index < 0)
+        return false;
+    m_protocolBox->setCurrentIndex(index);
+    applyFilter();
+    return true;
 }
 
 bool BusMonitorPanel::setCommandFilter(const QString& name) {
@@ -342,6 +392,8 @@ void BusMonitorPanel::applyFilter() {
     const auto locId = BusMonitorFilter::parseLocId(locIdText);
     m_locIdValid = locIdText.isEmpty() || locId.has_value();
     showLocIdValidity();
+    const int protocol = m_protocolBox->currentIndex() - 1;
+    m_filter->setProtocol(protocol < 0 ? std::nullopt : std::optional(bus::Protocol(protocol)));
     m_filter->setFilters(m_commandBox->currentIndex() > 0 ? m_commandBox->currentText() : QString(), locId,
                          m_filterEdit->text().trimmed());
     updateCounter();
@@ -394,6 +446,11 @@ void BusMonitorPanel::changeEvent(QEvent* event) {
 
 void BusMonitorPanel::retranslate() {
     m_filterEdit->setPlaceholderText(tr("Find text, e.g. speed=0"));
+    m_protocolBox->setItemText(0, tr("All protocols"));
+    m_protocolBox->setItemText(1 + int(bus::Protocol::Cs2), tr("CS2"));
+    m_protocolBox->setItemText(1 + int(bus::Protocol::Foreign), tr("Foreign"));
+    m_protocolBox->setToolTip(tr("Show only frames of one protocol; foreign frames belong to none that is "
+                                 "expected on their bus"));
     m_commandBox->setItemText(0, tr("All commands"));
     m_commandBox->setToolTip(tr("Show only frames of one command"));
     m_locIdEdit->setPlaceholderText(tr("Loc-ID"));

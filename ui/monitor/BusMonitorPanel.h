@@ -30,8 +30,9 @@ class BusMonitorLogWriter;
 class BusMonitorModel;
 class BusMonitorReplay;
 
-// A workspace tab that shows every frame on the station's bus as it passes, both ways, decoded by the
-// core, so that a user can see what the app, the station and other controllers say without a CAN adapter.
+// A workspace tab that shows every frame on the connection's buses as it passes, both ways, decoded by
+// the core, so that a user can see what the app, the station and other controllers say without a CAN
+// adapter. With more than one bus, a column says which bus a frame was on.
 class BusMonitorPanel final : public QWidget {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(BusMonitorPanel)
@@ -48,6 +49,9 @@ public:
     BusMonitorFilter* filter() const { return m_filter; }
     BusMonitorReplay* replay() const { return m_replay; }
     QTableView* table() const { return m_table; }
+    // Shows only frames of the protocol named ("cs2", "foreign"); empty = all. Returns false for a name the
+    // list does not hold.
+    bool setProtocolFilter(const QString& name);
     // Shows only rows whose message, details or frame contain `text` (case-insensitive); applied at once.
     void setFilterText(const QString& text);
     // Shows only rows of the command `name` ("loco.speed"); empty = all. Returns false for a name the
@@ -76,8 +80,10 @@ private:
     QLayout* createFileBar();
     QWidget* createReplayBar();
     void createTable();
-    void receive(const std::vector<can::CanFrame>& frames, bool outgoing);
-    void replayed(const std::vector<can::CanFrame>& frames, const QDateTime& time, bool outgoing);
+    void receive(int bus, const std::vector<can::CanFrame>& frames, bool outgoing);
+    void replayed(const std::vector<can::CanFrame>& frames, const QDateTime& time, bool outgoing, int bus);
+    void takeBuses();
+    void showBusColumn();
     void lineSkipped(int line, const QString& reason);
     void replayStateChanged();
     void chooseRecording(bool start);
@@ -95,6 +101,7 @@ private:
     BusMonitorReplay* m_replay = nullptr;
     QTableView* m_table = nullptr;
     QLineEdit* m_filterEdit = nullptr;
+    QComboBox* m_protocolBox = nullptr;
     QComboBox* m_commandBox = nullptr;
     QLineEdit* m_locIdEdit = nullptr;
     QTimer* m_filterTimer = nullptr;

@@ -131,17 +131,18 @@ void BusMonitorReplay::playDue() {
             m_haveLogTime ? QDateTime::fromMSecsSinceEpoch((due + 500) / 1000) : QDateTime::currentDateTime();
         std::vector<can::CanFrame> batch{*m_pending->frame};
         const bool outgoing = m_pending->sent;
+        const int bus = m_pending->bus;
         m_lastLogUs = due;
         m_playedEnd = m_pendingEnd;
         m_pending.reset();
         while (budget-- > 0 && readPending() && m_pending->timeUs.value_or(m_lastLogUs) == due &&
-               m_pending->sent == outgoing) {
+               m_pending->sent == outgoing && m_pending->bus == bus) {
             batch.push_back(*m_pending->frame);
             m_playedEnd = m_pendingEnd;
             m_pending.reset();
         }
         m_played += qsizetype(batch.size());
-        emit framesReplayed(batch, time, outgoing);
+        emit framesReplayed(batch, time, outgoing, bus);
     }
     if (m_state == State::Playing && !m_pending && !readPending()) {
         m_playedEnd = m_reader.size();

@@ -52,9 +52,10 @@ public:
 
 signals:
     // Frames of the log that are due now, all stamped `time` in the log (a line without a stamp has the
-    // time of the stamped line before it, or now when there is none), and all sent (`outgoing`) or not.
+    // time of the stamped line before it, or now when there is none), all sent (`outgoing`) or not, all
+    // on one bus.
     void framesReplayed(const std::vector<stellwerk::can::CanFrame>& frames, const QDateTime& time,
-                        bool outgoing);
+                        bool outgoing, int bus);
     // A line that held no frame was skipped; `reason` says why.
     void lineSkipped(int line, const QString& reason);
     void progressChanged(int percent);

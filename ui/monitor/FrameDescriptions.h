@@ -15,16 +15,15 @@ class FrameDescriptions {
 public:
     static constexpr std::size_t Capacity = 1024;
 
-    explicit FrameDescriptions(bus::BusProfile profile) : m_profile(std::move(profile)) {}
-
-    // The description of the row with this sequence number; valid until the next call.
-    const bus::FrameDescription& of(std::uint64_t sequence, const can::CanFrame& frame) const;
+    // The description of the row with this sequence number, whose frame came from a bus with `profile`;
+    // valid until the next call.
+    const bus::FrameDescription& of(std::uint64_t sequence, const can::CanFrame& frame,
+                                    const bus::BusProfile& profile) const;
     void clear() const;
     // How many frames were decoded so far (for tests: each row once while it stays in the cache).
     std::uint64_t decodeCount() const { return m_decodes; }
 
 private:
-    bus::BusProfile m_profile;
     mutable std::unordered_map<std::uint64_t, bus::FrameDescription> m_entries;
     mutable std::deque<std::uint64_t> m_order;
     mutable std::uint64_t m_decodes = 0;

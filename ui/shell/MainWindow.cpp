@@ -4,6 +4,7 @@
 #include "connect/ConnectDialog.h"
 #include "connect/ConnectionStatus.h"
 #include "connect/StartupProgress.h"
+#include "connect/StationUrlSettings.h"
 #include "connect/TrafficStatus.h"
 #include "connection/StationConnection.h"
 #include "keyboard/TurnoutPanel.h"
@@ -220,9 +221,10 @@ void MainWindow::connectionStateChanged() {
 
 void MainWindow::showConnectDialog() {
     ConnectDialog dialog(m_connection ? m_connection->address() : QString(), this);
+    dialog.setFurtherBuses(m_connection ? m_connection->furtherBuses() : StationUrlSettings::furtherBuses());
     if (dialog.exec() == QDialog::Accepted && m_connection &&
         m_locomotivePanel->settleUnsavedEdits(tr("connecting again")))
-        m_connection->connectTo(dialog.url());
+        m_connection->connectTo(dialog.url(), dialog.furtherBuses());
 }
 
 void MainWindow::createViewMenu() {

@@ -48,7 +48,7 @@ struct Arrivals {
         clock.start();
         QObject::connect(
             &replay, &BusMonitorReplay::framesReplayed, &context,
-            [this](const std::vector<can::CanFrame>& frames, const QDateTime& time, bool outgoing) {
+            [this](const std::vector<can::CanFrame>& frames, const QDateTime& time, bool outgoing, int) {
                 ++batches;
                 for (const can::CanFrame& frame : frames) {
                     texts.push_back(can::formatCandump(frame));
@@ -212,7 +212,7 @@ TEST_F(BusMonitorReplayTest, PanelShowsTheReplayedFramesInsteadOfLiveOnes) {
     panel.setConnection(&station);
     panel.setReplaySpeed(10.0);
     ASSERT_EQ(panel.openLog(write(timedLog())), QString());
-    emit station.framesSeen({can::parseFrame("00004711 5 00 00 00 00 01").value().frame}, false);
+    emit station.busFramesSeen(0, {can::parseFrame("00004711 5 00 00 00 00 01").value().frame}, false);
     ASSERT_TRUE(QTest::qWaitFor([&] { return panel.replay()->state() == State::Finished; }, ReplayMs));
     panel.model()->flush();
     const BusMonitorModel& model = *panel.model();

@@ -215,9 +215,9 @@ TEST(BusMonitorPanel, ARecordingIsOnDiskBatchByBatchWhileItRuns) {
         QFile file(path); // a reader of its own, as after a crash
         return file.open(QIODevice::ReadOnly) ? file.readAll().count('\n') : qsizetype(-1);
     };
-    emit station.framesSeen({systemStop(), locoSpeed()}, false);
+    emit station.busFramesSeen(0, {systemStop(), locoSpeed()}, false);
     EXPECT_EQ(linesOnDisk(), 2);
-    emit station.framesSeen({locoSpeed()}, true);
+    emit station.busFramesSeen(0, {locoSpeed()}, true);
     EXPECT_EQ(linesOnDisk(), 3);
     EXPECT_TRUE(recorder.isRecording());
 }
@@ -230,10 +230,10 @@ TEST(BusMonitorPanel, RecordsACandumpLogAndOpensItAgain) {
     BusMonitorPanel recorder;
     recorder.setConnection(&station);
     ASSERT_EQ(recorder.startRecording(path), QString());
-    emit station.framesSeen({systemStop(), locoSpeed()}, false);
-    emit station.framesSeen({locoSpeed()}, true);
+    emit station.busFramesSeen(0, {systemStop(), locoSpeed()}, false);
+    emit station.busFramesSeen(0, {locoSpeed()}, true);
     recorder.stopRecording();
-    emit station.framesSeen({systemStop()}, false); // not recorded any more
+    emit station.busFramesSeen(0, {systemStop()}, false); // not recorded any more
 
     QFile file(path);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
@@ -293,14 +293,14 @@ TEST(BusMonitorPanel, AMissingLogIsReportedAndTheLiveViewStays) {
     BusMonitorPanel panel;
     connection::StationConnection station{support::withEmbeddedStation()};
     panel.setConnection(&station);
-    emit station.framesSeen({systemStop()}, false);
+    emit station.busFramesSeen(0, {systemStop()}, false);
     panel.model()->flush();
     ASSERT_EQ(panel.model()->rowCount(), 1);
     EXPECT_FALSE(panel.openLog(dir.filePath(QStringLiteral("none.log"))).isEmpty());
     EXPECT_EQ(panel.replay()->state(), BusMonitorReplay::State::Idle);
     EXPECT_EQ(panel.model()->rowCount(), 1) << "nothing shown is lost";
     EXPECT_TRUE(panel.findChild<QWidget*>(QStringLiteral("busMonitorReplayBar"))->isHidden());
-    emit station.framesSeen({locoSpeed()}, true);
+    emit station.busFramesSeen(0, {locoSpeed()}, true);
     panel.model()->flush();
     EXPECT_EQ(panel.model()->rowCount(), 2);
 }
