@@ -22,20 +22,6 @@ app --decode docs/examples/bus-session.log --panel frameDecoderPanel --screensho
 app --panel statusPanel --screenshot "$shots/status-gauges.png"
 app --panel busMonitorPanel --screenshot "$shots/bus-monitor.png"
 
-# The bus monitor with a further bus: a second simulated station on a free loopback port stands for a
-# gateway with modules behind it; its frames are foreign there and show with the Bus column.
-port=$(python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
-build/app/sim/stellwerk-sim --tcp-port "$port" --udp-port 0 --tick 100 >/dev/null &
-modules=$!
-trap 'kill $modules 2>/dev/null; rm -rf "$config"' EXIT
-sleep 1
-for size in 1366x768 1920x1080; do
-    app --bus "tcp://127.0.0.1:$port" --size $size --panel busMonitorPanel --screenshot "$shots/bus-monitor-two-buses-$size.png"
-    LANG=de_DE.UTF-8 app --bus "tcp://127.0.0.1:$port" --size $size --panel busMonitorPanel \
-        --screenshot "$shots/bus-monitor-two-buses-de-$size.png"
-done
-kill $modules
-
 # The single panels, drawn offscreen by their widget tests; and the whole desk with the track power off and
 # with the station silent ("not reported"), at both sizes and in both languages (StationTrustTest).
 export QT_QPA_PLATFORM=offscreen STELLWERK_SCREENSHOT_DIR=$PWD/$shots

@@ -5,6 +5,7 @@
 #include "cs2/FrameReport.h"
 #include "cs2/LocId.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 
@@ -36,16 +37,33 @@ private:
     bool response_;
 };
 
+// "CS2", "CS2/M-CAN": the protocols a bus expects, as a person names them; empty for none.
+std::string protocolTitles(const BusProfile& profile) {
+    std::string titles;
+    for (const Protocol protocol : profile.protocols()) {
+        if (protocol == Protocol::Foreign)
+            continue;
+        std::string title(protocolName(protocol));
+        std::transform(title.begin(), title.end(), title.begin(),
+                       [](char c) { return char(std::toupper(c)); });
+        titles += (titles.empty() ? "" : "/") + title;
+    }
+    return titles;
+}
+
 // A frame no protocol of the bus claims: shown with its identifier and bytes, never decoded.
 class ForeignReading final : public FrameReading {
 public:
-    explicit ForeignReading(const can::CanFrame& frame) : frame_(frame) {}
+    ForeignReading(const can::CanFrame& frame, const BusProfile& profile)
+        : frame_(frame), expected_(protocolTitles(profile)) {}
 
     std::string_view name() const override { return "foreign"; }
     bool decoded() const override { return false; }
     bool isResponse() const override { return false; }
     std::string detailText() const override {
-        return std::string(frame_.extended ? "29-bit" : "11-bit") + " frame (no protocol of a CS2 bus)";
+        const std::string why =
+            expected_.empty() ? "no protocol expected on this bus" : "no protocol of a " + expected_ + " bus";
+        return std::string(frame_.extended ? "29-bit" : "11-bit") + " frame (" + why + ")";
     }
     std::string text() const override { return can::formatDocument(frame_) + "  foreign " + detailText(); }
     std::string json() const override {
@@ -59,16 +77,18 @@ public:
 
 private:
     can::CanFrame frame_;
+    std::string expected_;
 };
 
-std::shared_ptr<const FrameReading> readingOf(const can::CanFrame& frame, Protocol protocol) {
+std::shared_ptr<const FrameReading> readingOf(const can::CanFrame& frame, Protocol protocol,
+                                              const BusProfile& profile) {
     switch (protocol) {
     case Protocol::Cs2:
         return std::make_shared<const Cs2Reading>(frame);
     case Protocol::Foreign:
         break;
     }
-    return std::make_shared<const ForeignReading>(frame);
+    return std::make_shared<const ForeignReading>(frame, profile);
 }
 
 std::optional<std::uint32_t> parseNumber(std::string_view word) {
@@ -104,7 +124,7 @@ std::vector<std::string> words(std::string_view text) {
 } // namespace
 
 FrameDescription::FrameDescription(const can::CanFrame& frame, const BusProfile& profile)
-    : frame_(frame), protocol_(classify(frame, profile)), reading_(readingOf(frame, protocol_)) {}
+    : frame_(frame), protocol_(classify(frame, profile)), reading_(readingOf(frame, protocol_, profile)) {}
 
 std::string FrameDescription::frameText() const {
     return can::formatDocument(frame_);

@@ -213,6 +213,10 @@ const bus::FrameDescription& BusMonitorModel::describe(int row) const {
     return m_descriptions.of(m_dropped + std::uint64_t(row), frameOf(r), profileOf(r.bus));
 }
 
+QString BusMonitorModel::directionText(Direction direction) {
+    return direction == Direction::Received ? tr("← received") : tr("→ sent");
+}
+
 int BusMonitorModel::busAt(int row) const {
     return m_rows.at(std::size_t(row)).bus;
 }
@@ -299,7 +303,7 @@ QVariant BusMonitorModel::display(const bus::FrameDescription& description, cons
     case BusColumn:
         return busName(r.bus);
     case DirectionColumn:
-        return r.direction == Direction::Received ? tr("← received") : tr("→ sent");
+        return directionText(r.direction);
     case MessageColumn:
         return QString::fromUtf8(description.name().data(), qsizetype(description.name().size()));
     case DetailsColumn:

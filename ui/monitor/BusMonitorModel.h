@@ -91,6 +91,8 @@ public:
     can::CanFrame frameAt(int row) const;
     QDateTime timeAt(int row) const;
     Direction directionAt(int row) const;
+    // "← received" or "→ sent", as the Direction column shows it.
+    static QString directionText(Direction direction);
     int busAt(int row) const;
     // The protocol the frame of `row` belongs to on its bus.
     bus::Protocol protocolAt(int row) const;

@@ -7,6 +7,7 @@
 #include "monitor/BusMonitorModel.h"
 #include "monitor/BusMonitorReplay.h"
 #include "monitor/BusMonitorSettings.h"
+#include "monitor/BusMonitorTable.h"
 
 #include <QColor>
 #include <QComboBox>
@@ -14,18 +15,14 @@
 #include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFontDatabase>
 #include <QHBoxLayout>
-#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPalette>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QScrollBar>
 #include <QSpinBox>
-#include <QTableView>
 #include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -77,7 +74,7 @@ BusMonitorPanel::BusMonitorPanel(QWidget* parent)
 
     m_counter = new QLabel(this);
     m_counter->setObjectName(QStringLiteral("busMonitorCounter"));
-    createTable();
+    m_table = new BusMonitorTable(m_filter, this);
     auto* layout = new QVBoxLayout(this);
     auto* bars = new QHBoxLayout;
     bars->addLayout(createFilterBar(), 1);
@@ -200,34 +197,8 @@ QWidget* BusMonitorPanel::createReplayBar() {
     return m_replayBar;
 }
 
-void BusMonitorPanel::createTable() {
-    m_table = new QTableView(this);
-    m_table->setObjectName(QStringLiteral("busMonitorTable"));
-    m_table->setModel(m_filter);
-    m_table->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_table->setWordWrap(false);
-    m_table->setShowGrid(false);
-    m_table->verticalHeader()->hide();
-    m_table->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
-    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 4);
-    QHeaderView* header = m_table->horizontalHeader();
-    header->setHighlightSections(false);
-    header->setStretchLastSection(false);
-    const int digit = m_table->fontMetrics().horizontalAdvance(QLatin1Char('0'));
-    header->resizeSection(BusMonitorModel::TimeColumn, digit * 14);
-    header->resizeSection(BusMonitorModel::BusColumn, digit * 16);
-    showBusColumn();
-    header->resizeSection(BusMonitorModel::DirectionColumn, digit * 12);
-    header->resizeSection(BusMonitorModel::MessageColumn, digit * 26);
-    header->setSectionResizeMode(BusMonitorModel::DetailsColumn, QHeaderView::Stretch);
-    const QString longestFrame = QStringLiteral("00000000 8 00 00 00 00 00 00 00 00");
-    header->resizeSection(BusMonitorModel::FrameColumn,
-                          m_table->fontMetrics().horizontalAdvance(longestFrame) + digit * 2);
-    QScrollBar* scroll = m_table->verticalScrollBar();
-    connect(scroll, &QScrollBar::valueChanged, this,
-            [this, scroll](int value) { m_followNewest = value >= scroll->maximum(); });
-    connect(scroll, &QScrollBar::rangeChanged, this, &BusMonitorPanel::followNewest);
+QTableView* BusMonitorPanel::table() const {
+    return m_table;
 }
 
 void BusMonitorPanel::setConnection(connection::StationConnection* station) {
@@ -244,15 +215,19 @@ void BusMonitorPanel::setConnection(connection::StationConnection* station) {
 // The connection's buses name the rows' buses: the station's, then the further ones by their place.
 void BusMonitorPanel::takeBuses() {
     std::vector<MonitoredBus> buses;
+    QStringList names;
     if (m_connection)
-        for (const connection::BusInfo& info : m_connection->buses())
+        for (const connection::BusInfo& info : m_connection->buses()) {
             buses.push_back({info.station ? tr("station") : info.place, info.profile});
+            names.append(buses.back().name);
+        }
     m_model->setBuses(std::move(buses));
+    m_table->fitBusColumn(names);
     showBusColumn();
 }
 
 void BusMonitorPanel::showBusColumn() {
-    m_table->setColumnHidden(BusMonitorModel::BusColumn, m_model->busCount() <= 1);
+    m_table->setBusColumnShown(m_model->busCount() > 1);
 }
 
 // Live frames go to the recording always, and to the table unless a log is shown instead.
@@ -407,12 +382,6 @@ void BusMonitorPanel::showLocIdValidity() {
         colours.setColor(QPalette::Text, QColor::fromHsv(0, dark ? 150 : 230, dark ? 255 : 190));
     }
     m_locIdEdit->setPalette(colours);
-}
-
-// Keeps the newest row in sight while the user has not scrolled away from the bottom.
-void BusMonitorPanel::followNewest() {
-    if (m_followNewest)
-        m_table->scrollToBottom();
 }
 
 void BusMonitorPanel::updateCounter() {

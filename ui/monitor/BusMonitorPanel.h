@@ -29,6 +29,7 @@ class BusMonitorFilter;
 class BusMonitorLogWriter;
 class BusMonitorModel;
 class BusMonitorReplay;
+class BusMonitorTable;
 
 // A workspace tab that shows every frame on the connection's buses as it passes, both ways, decoded by
 // the core, so that a user can see what the app, the station and other controllers say without a CAN
@@ -48,7 +49,7 @@ public:
     BusMonitorModel* model() const { return m_model; }
     BusMonitorFilter* filter() const { return m_filter; }
     BusMonitorReplay* replay() const { return m_replay; }
-    QTableView* table() const { return m_table; }
+    QTableView* table() const;
     // Shows only frames of the protocol named ("cs2", "foreign"); empty = all. Returns false for a name the
     // list does not hold.
     bool setProtocolFilter(const QString& name);
@@ -79,7 +80,6 @@ private:
     QLayout* createFilterBar();
     QLayout* createFileBar();
     QWidget* createReplayBar();
-    void createTable();
     void receive(int bus, const std::vector<can::CanFrame>& frames, bool outgoing);
     void replayed(const std::vector<can::CanFrame>& frames, const QDateTime& time, bool outgoing, int bus);
     void takeBuses();
@@ -90,7 +90,6 @@ private:
     void chooseLog();
     void applyFilter();
     void showLocIdValidity();
-    void followNewest();
     void updateCounter();
     void updateReplayStatus();
     void retranslate();
@@ -99,7 +98,7 @@ private:
     BusMonitorModel* m_model = nullptr;
     BusMonitorFilter* m_filter = nullptr;
     BusMonitorReplay* m_replay = nullptr;
-    QTableView* m_table = nullptr;
+    BusMonitorTable* m_table = nullptr;
     QLineEdit* m_filterEdit = nullptr;
     QComboBox* m_protocolBox = nullptr;
     QComboBox* m_commandBox = nullptr;
@@ -123,7 +122,6 @@ private:
     std::unique_ptr<BusMonitorLogWriter> m_recorder;
     QStringList m_skippedLines; // "line 3: why", the first MaxSkippedShown of them
     bool m_locIdValid = true;
-    bool m_followNewest = true;
 };
 
 } // namespace stellwerk::ui

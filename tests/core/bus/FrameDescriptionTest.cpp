@@ -101,5 +101,15 @@ TEST(LocoReference, RefusesWhatIsNoLocomotive) {
     EXPECT_EQ(parseLocoReference("0xZZ"), std::nullopt);
 }
 
+// On a bus that expects no protocol (a module bus before its protocol is built), the reason says so.
+TEST(FrameDescription, AForeignFrameSaysWhatItsBusExpects) {
+    const std::uint8_t data[] = {0, 0, 0, 0, 0};
+    const CanFrame stop = CanFrame::extendedFrame(0x00004711, data);
+    EXPECT_EQ(FrameDescription(stop, BusProfile{}).detailText(),
+              "29-bit frame (no protocol expected on this bus)");
+    EXPECT_EQ(FrameDescription(stop, BusProfile{}).name(), "foreign");
+    EXPECT_EQ(FrameDescription(stop, BusProfile::centralStation()).name(), "system.stop");
+}
+
 } // namespace
 } // namespace stellwerk::bus::test

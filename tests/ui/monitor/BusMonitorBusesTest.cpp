@@ -131,6 +131,10 @@ TEST(BusMonitorPanel, TheBusColumnShowsOnlyWithMoreThanOneBus) {
     ASSERT_TRUE(modules.listen());
     station.connectTo(QString(), {modules.url()});
     EXPECT_FALSE(panel.table()->isColumnHidden(BusMonitorModel::BusColumn));
+    const QString place = QStringLiteral("127.0.0.1:%1").arg(modules.port());
+    EXPECT_GT(panel.table()->columnWidth(BusMonitorModel::BusColumn),
+              panel.table()->fontMetrics().horizontalAdvance(place))
+        << "the further bus's place is not cut";
     station.connectTo(QString());
     panel.model()->clear();
     EXPECT_TRUE(panel.table()->isColumnHidden(BusMonitorModel::BusColumn));
@@ -196,4 +200,44 @@ TEST(BusMonitorPanel, ARecordingKeepsEachFramesBus) {
         }
     EXPECT_EQ(onCan1, 1);
     EXPECT_FALSE(screen.panel.table()->isColumnHidden(BusMonitorModel::BusColumn));
+}
+
+// "← empfangen" is longer than "← received": the Direction column grows with the language in use.
+TEST(BusMonitorPanel, TheDirectionColumnFitsItsTextInEveryLanguage) {
+    Translations translations;
+    BusMonitorPanel panel;
+    for (const Language language : {Language::English, Language::German}) {
+        ASSERT_TRUE(translations.select(language));
+        QCoreApplication::processEvents();
+        const QFontMetrics metrics = panel.table()->fontMetrics();
+        const int width = panel.table()->columnWidth(BusMonitorModel::DirectionColumn);
+        const int margins = 2 * metrics.horizontalAdvance(QLatin1Char('0')); // the cell's padding, not elided
+        for (const Direction direction : {Direction::Received, Direction::Sent})
+            EXPECT_GE(width, metrics.horizontalAdvance(BusMonitorModel::directionText(direction)) + margins)
+                << BusMonitorModel::directionText(direction).toStdString();
+    }
+    translations.select(Language::English);
+}
+
+// docs/screenshots/bus-monitor-two-buses.png and -de.png: the station and a module bus, with the Bus column.
+TEST(BusMonitorPanel, SavesTheTwoBusScreenshotsWhenAsked) {
+    const QString folder = qEnvironmentVariable("STELLWERK_SCREENSHOT_DIR");
+    if (folder.isEmpty())
+        GTEST_SKIP() << "set STELLWERK_SCREENSHOT_DIR to save the screenshots";
+    for (const auto& [language, name] : {std::pair{Language::English, "bus-monitor-two-buses.png"},
+                                         std::pair{Language::German, "bus-monitor-two-buses-de.png"}}) {
+        TwoBusesOnScreen screen;
+        ASSERT_TRUE(screen.translations.select(language));
+        ASSERT_TRUE(screen.start());
+        ASSERT_TRUE(QTest::qWaitFor(
+            [&] { return screen.connection.state() == connection::StationConnection::State::Ready; }, 10000));
+        screen.modules.send(
+            {frame("00004711 5 00 00 00 00 00"), frame("1C400300 4 00 01 00 01"), frame("1C410300 2 01 00")});
+        ASSERT_TRUE(
+            QTest::qWaitFor([&] { return screen.connection.busFrames(1, bus::Protocol::Foreign) == 3; }));
+        screen.panel.resize(1300, 420);
+        screen.panel.show();
+        QTest::qWait(300);
+        EXPECT_TRUE(screen.panel.grab().save(folder + QLatin1Char('/') + QLatin1String(name)));
+    }
 }
