@@ -109,12 +109,26 @@ if [[ -n ${FUZZ_TARGETS:-} ]]; then
     read -r -a targets <<<"$FUZZ_TARGETS"
 fi
 
-say "Running ${#targets[@]} targets for $seconds s each"
+# One target per core at a time (each fuzzes on one core); the results are read back in the targets' order.
+jobs=$(nproc)
+say "Running ${#targets[@]} targets for $seconds s each, $jobs at a time"
+running=()
+for target in "${targets[@]}"; do
+    [[ -x $build/fuzz-$target ]] || fail "no fuzz target '$target' in $build/"
+    mkdir -p "$build/logs"
+    run_target "$target" >"$build/logs/$target.result" &
+    running+=($!)
+    if [[ ${#running[@]} -ge $jobs ]]; then
+        wait "${running[0]}" || true
+        running=("${running[@]:1}")
+    fi
+done
+wait || true
+
 failed=0
 results=()
 for target in "${targets[@]}"; do
-    [[ -x $build/fuzz-$target ]] || fail "no fuzz target '$target' in $build/"
-    result=$(run_target "$target")
+    result=$(cat "$build/logs/$target.result")
     results+=("$result")
     read -r _ runs rate status <<<"$result"
     say "$target: $runs executions, $rate exec/s"

@@ -11,4 +11,5 @@ bash scripts/setup.sh --werror
 export QT_QPA_PLATFORM=offscreen
 
 printf '==> Running the tests\n'
-exec ctest --test-dir build --output-on-failure
+# Each test picks its own free ports, so they run one per core.
+exec ctest --test-dir build --output-on-failure -j"$(nproc)"
