@@ -53,28 +53,6 @@ done
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 
-# Lists the packages that dpkg does not show as fully installed (removed ones keep a status entry too).
-missing_packages() {
-    local package status
-    for package in "${packages[@]}"; do
-        status=$(dpkg -s "$package" 2>/dev/null || true)
-        [[ $status == *"Status: install ok installed"* ]] || printf '%s\n' "$package"
-    done
-}
-
-install_packages() {
-    command -v apt-get >/dev/null || fail "apt-get not found: this script supports Debian and Ubuntu only"
-    local missing
-    mapfile -t missing < <(missing_packages)
-    if [[ ${#missing[@]} -eq 0 ]]; then
-        say "All ${#packages[@]} packages are installed already"
-        return
-    fi
-    say "Installing ${#missing[@]} missing packages: ${missing[*]}"
-    as_root env DEBIAN_FRONTEND=noninteractive apt-get update -q
-    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
-}
-
 configure() {
     local options=(-S . -B build) where=build/
     if [[ -n "$preset" ]]; then
@@ -97,7 +75,7 @@ build() {
     fi
 }
 
-install_packages
+install_packages "${packages[@]}"
 configure
 build
 if [[ -n "$preset" ]]; then
