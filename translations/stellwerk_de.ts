@@ -984,10 +984,135 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::GuideBrowser</name>
+    <message>
+        <source>Stellwerk user guide</source>
+        <translation>Stellwerk-Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>&amp;Back</source>
+        <translation>&amp;Zurück</translation>
+    </message>
+    <message>
+        <source>&amp;Contents</source>
+        <translation>&amp;Inhalt</translation>
+    </message>
+    <message>
+        <source>The user guide is not installed here. It is in the folder docs/guide of Stellwerk&apos;s sources, and after installing in share/doc/stellwerk/guide.</source>
+        <translation>Das Benutzerhandbuch ist hier nicht installiert. Es liegt im Ordner docs/guide der Quellen von Stellwerk und nach der Installation in share/doc/stellwerk/guide.</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::KeyList</name>
+    <message>
+        <source>Keys</source>
+        <translation>Tasten</translation>
+    </message>
+    <message>
+        <source>What they do</source>
+        <translation>Was sie tun</translation>
+    </message>
+    <message>
+        <source>Space</source>
+        <translation>Leertaste</translation>
+    </message>
+    <message>
+        <source>STOP: track power off for the whole layout (also while a throttle has the keys)</source>
+        <translation>STOPP: Gleisspannung für die ganze Anlage aus (auch wenn ein Fahrpult die Tastatur hat)</translation>
+    </message>
+    <message>
+        <source>Alt+1 … Alt+9</source>
+        <translation>Alt+1 … Alt+9</translation>
+    </message>
+    <message>
+        <source>Put the keyboard on throttle 1 … 9</source>
+        <translation>Tastatur auf Fahrpult 1 … 9 legen</translation>
+    </message>
+    <message>
+        <source>Up, Down, +, −</source>
+        <translation>Pfeil auf, Pfeil ab, +, −</translation>
+    </message>
+    <message>
+        <source>On a throttle: faster, slower</source>
+        <translation>Am Fahrpult: schneller, langsamer</translation>
+    </message>
+    <message>
+        <source>Page Up, Page Down</source>
+        <translation>Bild auf, Bild ab</translation>
+    </message>
+    <message>
+        <source>On a throttle: much faster, much slower</source>
+        <translation>Am Fahrpult: viel schneller, viel langsamer</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <source>On a throttle: change direction</source>
+        <translation>Am Fahrpult: Richtung wechseln</translation>
+    </message>
+    <message>
+        <source>0 … 9</source>
+        <translation>0 … 9</translation>
+    </message>
+    <message>
+        <source>On a throttle: functions F0 … F9</source>
+        <translation>Am Fahrpult: Funktionen F0 … F9</translation>
+    </message>
+    <message>
+        <source>E</source>
+        <translation>E</translation>
+    </message>
+    <message>
+        <source>On a throttle: stop this locomotive</source>
+        <translation>Am Fahrpult: diese Lok anhalten</translation>
+    </message>
+    <message>
+        <source>Escape</source>
+        <translation>Esc</translation>
+    </message>
+    <message>
+        <source>Close a dialog without changing anything</source>
+        <translation>Einen Dialog schließen, ohne etwas zu ändern</translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::LanguageMenu</name>
     <message>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::LayoutFileActions</name>
+    <message>
+        <source>Layout exported</source>
+        <translation>Gleisbild exportiert</translation>
+    </message>
+    <message>
+        <source>The layout was written to %1 as a CS2 configuration folder.</source>
+        <translation>Das Gleisbild wurde als CS2-Konfigurationsordner nach %1 geschrieben.</translation>
+    </message>
+    <message>
+        <source>Open a CS2 layout folder</source>
+        <translation>CS2-Gleisbildordner öffnen</translation>
+    </message>
+    <message>
+        <source>Export the layout into a folder</source>
+        <translation>Gleisbild in einen Ordner exportieren</translation>
+    </message>
+    <message>
+        <source>No layouts opened yet</source>
+        <translation>Noch keine Gleisbilder geöffnet</translation>
+    </message>
+    <message>
+        <source>Clear the list</source>
+        <translation>Liste leeren</translation>
+    </message>
+    <message>
+        <source>Open &amp;recent layout</source>
+        <translation>&amp;Zuletzt geöffnete Gleisbilder</translation>
     </message>
 </context>
 <context>
@@ -1451,6 +1576,22 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Space, %1</source>
         <translation>Leertaste, %1</translation>
+    </message>
+    <message>
+        <source>User &amp;guide</source>
+        <translation>&amp;Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>Read how to use Stellwerk</source>
+        <translation>Lesen, wie Stellwerk bedient wird</translation>
+    </message>
+    <message>
+        <source>&amp;Keys</source>
+        <translation>&amp;Tasten</translation>
+    </message>
+    <message>
+        <source>Every key the desk answers to</source>
+        <translation>Alle Tasten, auf die das Stellpult reagiert</translation>
     </message>
 </context>
 <context>
@@ -1983,14 +2124,6 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <translation>Seite %1</translation>
     </message>
     <message>
-        <source>Open a CS2 layout folder</source>
-        <translation>CS2-Gleisbildordner öffnen</translation>
-    </message>
-    <message>
-        <source>Export the layout into a folder</source>
-        <translation>Gleisbild in einen Ordner exportieren</translation>
-    </message>
-    <message>
         <source>Open layout...</source>
         <translation>Gleisbild öffnen …</translation>
     </message>
@@ -2001,10 +2134,6 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Station&apos;s plan</source>
         <translation>Gleisbild der Zentrale</translation>
-    </message>
-    <message>
-        <source>Export...</source>
-        <translation>Exportieren …</translation>
     </message>
     <message>
         <source>Write the layout as a CS2 configuration folder</source>
@@ -2047,6 +2176,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
             <numerusform>... und %n weitere.</numerusform>
             <numerusform>... und %n weitere.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Export layout...</source>
+        <translation>Gleisbild exportieren …</translation>
     </message>
 </context>
 <context>

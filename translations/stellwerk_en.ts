@@ -981,9 +981,134 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::GuideBrowser</name>
+    <message>
+        <source>Stellwerk user guide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Contents</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The user guide is not installed here. It is in the folder docs/guide of Stellwerk&apos;s sources, and after installing in share/doc/stellwerk/guide.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::KeyList</name>
+    <message>
+        <source>Keys</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What they do</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Space</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP: track power off for the whole layout (also while a throttle has the keys)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Alt+1 … Alt+9</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Put the keyboard on throttle 1 … 9</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Up, Down, +, −</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On a throttle: faster, slower</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Page Up, Page Down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On a throttle: much faster, much slower</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>R</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On a throttle: change direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>0 … 9</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On a throttle: functions F0 … F9</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On a throttle: stop this locomotive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Escape</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close a dialog without changing anything</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::LanguageMenu</name>
     <message>
         <source>&amp;Language</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::LayoutFileActions</name>
+    <message>
+        <source>Layout exported</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The layout was written to %1 as a CS2 configuration folder.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a CS2 layout folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the layout into a folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No layouts opened yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clear the list</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;recent layout</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1447,6 +1572,22 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Space, %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>User &amp;guide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read how to use Stellwerk</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Keys</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every key the desk answers to</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1980,14 +2121,6 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Open a CS2 layout folder</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Export the layout into a folder</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Open layout...</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1997,10 +2130,6 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Station&apos;s plan</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Export...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2044,6 +2173,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
             <numerusform>... and %n more.</numerusform>
             <numerusform>... and %n more.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Export layout...</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

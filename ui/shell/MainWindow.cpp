@@ -15,6 +15,8 @@
 #include "programming/ProgrammingPanel.h"
 #include "shell/AboutBox.h"
 #include "shell/ApplicationInfo.h"
+#include "shell/GuideBrowser.h"
+#include "shell/KeyList.h"
 #include "shell/LanguageMenu.h"
 #include "shell/LanguageSettings.h"
 #include "shell/Translations.h"
@@ -26,6 +28,7 @@
 #include "stopkeys/StopKeyMenu.h"
 #include "stopkeys/StopKeySettings.h"
 #include "throttle/ThrottlePanel.h"
+#include "trackplan/LayoutFileActions.h"
 #include "trackplan/TrackPlanPanel.h"
 
 #include <QCloseEvent>
@@ -143,9 +146,16 @@ void MainWindow::createToolBar() {
 void MainWindow::createFileMenu() {
     m_fileMenu = menuBar()->addMenu(QString());
     m_fileMenu->setObjectName(QStringLiteral("fileMenu"));
+    m_layoutFiles = new LayoutFileActions(*m_trackPlan, *this);
+    m_fileMenu->addAction(m_layoutFiles->openAction());
+    m_fileMenu->addMenu(m_layoutFiles->recentMenu());
+    m_fileMenu->addAction(m_layoutFiles->exportAction());
+    m_fileMenu->addSeparator();
     m_quitAction = m_fileMenu->addAction(QString(), this, &MainWindow::close);
     m_quitAction->setObjectName(QStringLiteral("quitAction"));
-    m_quitAction->setShortcut(QKeySequence::Quit);
+    // The platform's Quit key; Ctrl+Q where the platform names none (Windows' scheme, the offscreen one).
+    const QKeySequence quit(QKeySequence::Quit);
+    m_quitAction->setShortcut(quit.isEmpty() ? QKeySequence(Qt::CTRL | Qt::Key_Q) : quit);
     m_quitAction->setMenuRole(QAction::QuitRole);
 }
 
@@ -245,6 +255,12 @@ void MainWindow::createViewMenu() {
 void MainWindow::createHelpMenu() {
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->setObjectName(QStringLiteral("helpMenu"));
+    m_guideAction = m_helpMenu->addAction(QString(), this, [this] { GuideBrowser::showGuide(this); });
+    m_guideAction->setObjectName(QStringLiteral("guideAction"));
+    m_guideAction->setShortcut(QKeySequence::HelpContents);
+    m_keysAction = m_helpMenu->addAction(QString(), this, [this] { KeyList::dialog(*this)->open(); });
+    m_keysAction->setObjectName(QStringLiteral("keysAction"));
+    m_helpMenu->addSeparator();
     m_aboutAction = m_helpMenu->addAction(QString(), this, [this] { AboutBox::show(this); });
     m_aboutAction->setObjectName(QStringLiteral("aboutAction"));
     m_aboutAction->setMenuRole(QAction::AboutRole);
@@ -265,6 +281,7 @@ void MainWindow::createStatusBar() {
 
 void MainWindow::retranslate() {
     m_fileMenu->setTitle(tr("&File"));
+    m_layoutFiles->retranslate();
     m_quitAction->setText(tr("&Quit"));
     m_quitAction->setStatusTip(tr("Close the window and end Stellwerk"));
     m_stationMenu->setTitle(tr("&Station"));
@@ -272,6 +289,10 @@ void MainWindow::retranslate() {
     m_connectAction->setStatusTip(tr("Choose the station to connect to, or the simulated one"));
     m_viewMenu->setTitle(tr("&View"));
     m_helpMenu->setTitle(tr("&Help"));
+    m_guideAction->setText(tr("User &guide"));
+    m_guideAction->setStatusTip(tr("Read how to use Stellwerk"));
+    m_keysAction->setText(tr("&Keys"));
+    m_keysAction->setStatusTip(tr("Every key the desk answers to"));
     m_aboutAction->setText(tr("&About Stellwerk"));
     m_aboutAction->setStatusTip(tr("Show the version of Stellwerk and of Qt"));
     // The keys are EmergencyStopKeys' job (from any widget); the menu only names them.

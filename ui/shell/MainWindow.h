@@ -20,6 +20,7 @@ class ConnectionStatus;
 class EmergencyStopKeys;
 class FrameDecoderPanel;
 class LanguageMenu;
+class LayoutFileActions;
 class LayoutOverview;
 class LocomotivePanel;
 class PowerStatus;
@@ -55,6 +56,7 @@ public:
     TurnoutPanel* turnoutPanel() const { return m_turnoutPanel; }
     ThrottlePanel* throttlePanel() const { return m_throttlePanel; }
     TrackPlanPanel* trackPlan() const { return m_trackPlan; }
+    LayoutFileActions* layoutFiles() const { return m_layoutFiles; }
     LocomotivePanel* locomotivePanel() const { return m_locomotivePanel; }
     ProgrammingPanel* programmingPanel() const { return m_programmingPanel; }
     StopGoButton* stopGoButton() const { return m_stopGo; }
@@ -107,6 +109,9 @@ private:
     EmergencyStopKeys* m_stopKeys = nullptr;
     QMenu* m_fileMenu = nullptr;
     QAction* m_quitAction = nullptr;
+    QAction* m_guideAction = nullptr;
+    QAction* m_keysAction = nullptr;
+    LayoutFileActions* m_layoutFiles = nullptr;
     QMenu* m_stationMenu = nullptr;
     QAction* m_connectAction = nullptr;
     QAction* m_stopAction = nullptr;

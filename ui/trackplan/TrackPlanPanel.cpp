@@ -10,7 +10,6 @@
 
 #include <QAction>
 #include <QEvent>
-#include <QFileDialog>
 #include <QLabel>
 #include <QMenu>
 #include <QScrollArea>
@@ -41,9 +40,11 @@ TrackPlanPanel::TrackPlanPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("trackPlanPanel"));
     auto* layout = new QVBoxLayout(this);
     m_toolBar = new QToolBar(this);
-    m_open = m_toolBar->addAction(QString(), this, &TrackPlanPanel::chooseFolderToOpen);
+    m_open = m_toolBar->addAction(QString()); // LayoutFileActions asks for the folder
+    m_open->setObjectName(QStringLiteral("openLayoutAction"));
     m_station = m_toolBar->addAction(QString(), this, &TrackPlanPanel::showStationPlan);
-    m_export = m_toolBar->addAction(QString(), this, &TrackPlanPanel::chooseFolderToExport);
+    m_export = m_toolBar->addAction(QString());
+    m_export->setObjectName(QStringLiteral("exportLayoutAction"));
     m_toolBar->addSeparator();
     m_zoomOut = m_toolBar->addAction(QString(), this, &TrackPlanPanel::zoomOut);
     m_zoomIn = m_toolBar->addAction(QString(), this, &TrackPlanPanel::zoomIn);
@@ -405,18 +406,8 @@ void TrackPlanPanel::showProblem(const QString& text) {
     m_banner->setVisible(!text.isEmpty());
 }
 
-void TrackPlanPanel::chooseFolderToOpen() {
-    if (m_mayOpen && !m_mayOpen())
-        return;
-    const QString folder = QFileDialog::getExistingDirectory(this, tr("Open a CS2 layout folder"));
-    if (!folder.isEmpty())
-        openFolder(folder);
-}
-
-void TrackPlanPanel::chooseFolderToExport() {
-    const QString folder = QFileDialog::getExistingDirectory(this, tr("Export the layout into a folder"));
-    if (!folder.isEmpty())
-        exportTo(folder);
+bool TrackPlanPanel::mayOpen() const {
+    return !m_mayOpen || m_mayOpen();
 }
 
 void TrackPlanPanel::updateActions() {
@@ -430,7 +421,7 @@ void TrackPlanPanel::retranslate() {
     m_open->setText(tr("Open layout..."));
     m_open->setToolTip(tr("Show the track plan of a CS2 configuration folder"));
     m_station->setText(tr("Station's plan"));
-    m_export->setText(tr("Export..."));
+    m_export->setText(tr("Export layout..."));
     m_export->setToolTip(tr("Write the layout as a CS2 configuration folder"));
     m_zoomIn->setText(tr("Zoom in"));
     m_zoomOut->setText(tr("Zoom out"));

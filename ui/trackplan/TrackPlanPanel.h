@@ -52,6 +52,11 @@ public:
     // Asked before "Open layout..." shows its folder dialog; opening goes on only when it returns true
     // (the window asks about unsaved locomotive edits there).
     void setOpenGuard(std::function<bool()> mayOpen) { m_mayOpen = std::move(mayOpen); }
+    bool mayOpen() const;
+    // "Open layout..." and "Export layout..." on the plan's toolbar; LayoutFileActions gives them their work
+    // and puts them into the File menu too.
+    QAction* openAction() const { return m_open; }
+    QAction* exportAction() const { return m_export; }
     // Shows the station's plan again after a folder was opened.
     void showStationPlan();
     // Writes the shown layout as a CS2 configuration folder; false and a problem shown on failure.
@@ -99,8 +104,6 @@ private:
     QString accessoryName(std::int64_t id) const;
     void showProblem(const QString& text);
     QString findingsText(const std::vector<cs2config::LayoutFinding>& findings) const;
-    void chooseFolderToOpen();
-    void chooseFolderToExport();
     void updateActions();
     void retranslate();
 

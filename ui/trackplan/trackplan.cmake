@@ -1,6 +1,8 @@
 # The track plan tab: pages of the CS2 gleisbild drawn as vector tiles, live states, switching by click.
 target_sources(stellwerk-ui PRIVATE
     trackplan/FeatureShapes.cpp
+    trackplan/LayoutFileActions.cpp trackplan/LayoutFileActions.h
+    trackplan/LayoutFileSettings.cpp trackplan/LayoutFileSettings.h
     trackplan/SignalShapes.cpp
     trackplan/TrackColors.cpp trackplan/TrackColors.h
     trackplan/TrackPageView.cpp trackplan/TrackPageView.h

@@ -90,7 +90,9 @@ TEST_F(MainWindowTest, FileMenuHasQuitWithStandardShortcut) {
     ASSERT_NE(action("quitAction"), nullptr);
     EXPECT_TRUE(menu("fileMenu")->actions().contains(action("quitAction")));
     EXPECT_EQ(actionText("quitAction"), QStringLiteral("Quit"));
-    EXPECT_EQ(action("quitAction")->shortcut(), QKeySequence(QKeySequence::Quit));
+    const QKeySequence platform(QKeySequence::Quit);
+    EXPECT_EQ(action("quitAction")->shortcut(),
+              platform.isEmpty() ? QKeySequence(Qt::CTRL | Qt::Key_Q) : platform);
 }
 
 TEST_F(MainWindowTest, QuitClosesTheWindow) {

@@ -4,6 +4,7 @@ target_sources(stellwerk-ui-tests PRIVATE
     shell/AboutBoxTest.cpp
     shell/CommandLineTest.cpp
     shell/ControlDeskTest.cpp
+    shell/FileAndHelpMenuTest.cpp
     shell/LanguageTest.cpp
     shell/MainWindowTest.cpp
     shell/TranslationFileTest.cpp
