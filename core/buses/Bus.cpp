@@ -9,8 +9,6 @@ namespace stellwerk::buses {
 Bus::Bus(transport::Transport& transport, bus::BusProfile profile, QString name, QObject* parent)
     : QObject(parent), transport_(transport), profile_(std::move(profile)), name_(std::move(name)) {
     connect(&transport_, &transport::Transport::framesReceived, this, &Bus::receive);
-    connect(&transport_, &transport::Transport::framesReceived, this,
-            [this](const std::vector<can::CanFrame>& frames) { emit framesSeen(frames, false); });
     connect(&transport_, &transport::Transport::framesSent, this,
             [this](const std::vector<can::CanFrame>& frames) { emit framesSeen(frames, true); });
 }
@@ -38,6 +36,7 @@ std::uint64_t Bus::received(bus::Protocol protocol) const {
 }
 
 void Bus::receive(const std::vector<can::CanFrame>& frames) {
+    emit framesSeen(frames, false);
     std::array<std::vector<can::CanFrame>, bus::ProtocolCount> sorted;
     for (const can::CanFrame& frame : frames)
         sorted[std::size_t(bus::classify(frame, profile_))].push_back(frame);

@@ -68,16 +68,16 @@ void StationConnection::connectTo(const QString& url, const QStringList& further
         link_.reset();
         return fail(station.error());
     }
-    std::vector<std::unique_ptr<transport::Transport>> further;
+    std::vector<transport::TransportSettings> further;
     for (const QString& address : furtherBuses) {
-        auto transport = furtherTransport(address);
-        if (!transport) {
+        const auto settings = furtherBusSettings(address);
+        if (!settings) {
             link_.reset();
-            return fail(transport.error());
+            return fail(settings.error());
         }
-        further.push_back(std::move(transport.value()));
+        further.push_back(settings.value());
     }
-    open(std::move(station.value()), std::move(further));
+    open(std::move(station.value()), further);
 }
 
 // The transport to the station at address_, or to the local station (started here) when there is none.
@@ -102,12 +102,12 @@ Expected<std::unique_ptr<transport::Transport>, QString> StationConnection::stat
     return transport::createTransport(settings.value());
 }
 
-Expected<std::unique_ptr<transport::Transport>, QString>
-StationConnection::furtherTransport(const QString& address) {
+Expected<transport::TransportSettings, QString>
+StationConnection::furtherBusSettings(const QString& address) {
     const auto settings = transport::parseTransportUrl(address.trimmed());
     if (!settings)
         return QStringLiteral("further bus \"%1\": %2").arg(address.trimmed(), settings.error());
-    return transport::createTransport(settings.value());
+    return settings.value();
 }
 
 // Ends the connection; its parts go at the next turn of the event loop, since this may be called from
@@ -171,13 +171,11 @@ station::StationSession* StationConnection::session() const {
 }
 
 void StationConnection::open(std::unique_ptr<transport::Transport> station,
-                             std::vector<std::unique_ptr<transport::Transport>> further) {
+                             const std::vector<transport::TransportSettings>& further) {
     link_->addBus(std::move(station), bus::BusProfile::centralStation(), endpoint_.place);
-    for (std::size_t index = 0; index < further.size(); ++index) {
-        const auto settings = transport::parseTransportUrl(furtherBuses_[qsizetype(index)].trimmed());
-        link_->addBus(std::move(further[index]), settings_.furtherBusProfile,
-                      StationEndpoint::of(*settings).place);
-    }
+    for (const transport::TransportSettings& settings : further)
+        link_->addBus(transport::createTransport(settings), settings_.furtherBusProfile,
+                      StationEndpoint::of(settings).place);
     link_->session = std::make_unique<station::StationSession>(link_->stationBus(), settings_.session);
     watchTransport();
     watchBuses();

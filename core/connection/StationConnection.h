@@ -144,9 +144,9 @@ signals:
 
 private:
     Expected<std::unique_ptr<transport::Transport>, QString> stationTransport();
-    Expected<std::unique_ptr<transport::Transport>, QString> furtherTransport(const QString& address);
+    static Expected<transport::TransportSettings, QString> furtherBusSettings(const QString& address);
     void open(std::unique_ptr<transport::Transport> station,
-              std::vector<std::unique_ptr<transport::Transport>> further);
+              const std::vector<transport::TransportSettings>& further);
     void fail(const QString& reason);
     void watchTransport();
     void watchBuses();

@@ -22,7 +22,6 @@ LayoutFileActions::LayoutFileActions(TrackPlanPanel& plan, QWidget& window)
     connect(m_open, &QAction::triggered, this, &LayoutFileActions::chooseFolderToOpen);
     connect(m_export, &QAction::triggered, this, &LayoutFileActions::chooseFolderToExport);
     connect(m_recent, &QMenu::aboutToShow, this, &LayoutFileActions::fillRecentMenu);
-    fillRecentMenu();
     retranslate();
 }
 

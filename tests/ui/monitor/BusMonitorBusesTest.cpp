@@ -10,6 +10,7 @@
 #include "monitor/BusMonitorPanel.h"
 #include "monitor/BusMonitorReplay.h"
 #include "shell/Translations.h"
+#include "support/MonitorTestSupport.h"
 
 #include <QFile>
 #include <QSignalSpy>
@@ -21,20 +22,11 @@
 using namespace stellwerk;
 using namespace stellwerk::ui;
 using Direction = BusMonitorModel::Direction;
+using test::cell;
+using test::frame;
+using test::systemStop;
 
 namespace {
-
-can::CanFrame frame(const char* text) {
-    return can::parseFrame(text).value().frame;
-}
-// "System stop": CS2 on the station's bus, foreign on a module bus.
-can::CanFrame systemStop() {
-    return frame("00004711 5 00 00 00 00 00");
-}
-
-QString cell(const QAbstractItemModel& model, int row, int column, int role = Qt::DisplayRole) {
-    return model.index(row, column).data(role).toString();
-}
 
 std::vector<MonitoredBus> stationAndModules() {
     return {{QStringLiteral("station"), bus::BusProfile::centralStation()},

@@ -6,6 +6,7 @@
 #include "monitor/BusMonitorReplay.h"
 #include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
+#include "support/MonitorTestSupport.h"
 #include "support/StationTestSupport.h"
 
 #include <QAbstractItemModel>
@@ -24,6 +25,9 @@
 using namespace stellwerk;
 using namespace stellwerk::ui;
 using Direction = BusMonitorModel::Direction;
+using test::cell;
+using test::frame;
+using test::systemStop;
 
 namespace {
 
@@ -32,24 +36,10 @@ constexpr int FramesMs = 10000;
 
 constexpr quint32 V100 = 0x18; // V 100 2023, MM2 address 24: stands still in the demo
 
-can::CanFrame frame(const char* text) {
-    const auto parsed = can::parseFrame(text);
-    EXPECT_TRUE(parsed.hasValue()) << text;
-    return parsed.hasValue() ? parsed.value().frame : can::CanFrame{};
-}
-
 // loco.speed for Loc-ID 0xC003 (DCC 3), speed 288, as in the protocol document.
 can::CanFrame locoSpeed() {
     return frame("00084711 6 00 00 C0 03 01 20");
 }
-can::CanFrame systemStop() {
-    return frame("00004711 5 00 00 00 00 00");
-}
-
-QString cell(const QAbstractItemModel& model, int row, int column) {
-    return model.index(row, column).data().toString();
-}
-
 } // namespace
 
 TEST(BusMonitorModel, TenThousandFramesInOneBatchAreOneInsertion) {
