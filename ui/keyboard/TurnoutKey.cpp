@@ -13,10 +13,11 @@
 namespace stellwerk::ui {
 namespace {
 
-constexpr int KeyWidth = 150;
-constexpr int FaceHeight = 112;
-constexpr int ButtonRowHeight = 30;
-constexpr int MaxButtons = 4; // more positions go into a menu
+// Four keys side by side fit a laptop's side panel, as on the CS2's keyboard page.
+constexpr int KeyWidth = 104;
+constexpr int FaceHeight = 116;
+constexpr int ButtonRowHeight = 28;
+constexpr int NameLines = 2;
 const QColor PendingAmber{0xe0, 0x9a, 0x1a};
 const QColor UnconfirmedRed{0xd0, 0x36, 0x36};
 
@@ -50,7 +51,7 @@ QSize TurnoutKey::sizeHint() const {
 }
 
 QSize TurnoutKey::minimumSizeHint() const {
-    return {KeyWidth - 30, FaceHeight + ButtonRowHeight + 6};
+    return {KeyWidth - 8, FaceHeight + ButtonRowHeight + 6};
 }
 
 void TurnoutKey::setFace(const KeyFace& face) {
@@ -90,7 +91,7 @@ QString TurnoutKey::positionText() const {
     if (m_face.role == KeyFace::Role::PartOfArticle)
         return tr("part of %1").arg(m_face.owner);
     if (m_face.role == KeyFace::Role::Address && m_face.position < 0)
-        return tr("position unknown");
+        return tr("not known");
     return AccessoryIcon::positionName(m_face.kind, m_face.position);
 }
 
@@ -107,57 +108,67 @@ void TurnoutKey::clearButtons() {
     m_menuButton = nullptr;
 }
 
-// A button per position (red/green for a plain number), a menu for more than four positions.
+// Red and green buttons for a plain number; a menu of the positions for three and more, which would not
+// fit as buttons side by side on a key.
 void TurnoutKey::rebuildButtons() {
     clearButtons();
-    const bool plain = m_face.role == KeyFace::Role::Address;
-    if (m_face.role == KeyFace::Role::PartOfArticle || (!plain && m_face.positions.size() <= 2))
+    if (m_face.role == KeyFace::Role::PartOfArticle)
         return;
-    if (m_face.positions.size() > MaxButtons) {
-        m_menuButton = new QToolButton(this);
-        m_menuButton->setPopupMode(QToolButton::InstantPopup);
-        m_menuButton->setToolButtonStyle(Qt::ToolButtonTextOnly);
-        m_menuButton->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
-        auto* menu = new QMenu(m_menuButton);
+    if (m_face.role == KeyFace::Role::Address) {
         for (const int position : m_face.positions)
-            menu->addAction(AccessoryIcon::positionName(m_face.kind, position), this,
-                            [this, position] { emit switchRequested(m_face.address, position); });
-        m_menuButton->setMenu(menu);
-        m_buttonRow->addWidget(m_menuButton);
+            addChipButton(position);
         return;
     }
+    if (m_face.positions.size() <= 2)
+        return;
+    m_menuButton = new QToolButton(this);
+    m_menuButton->setObjectName(QStringLiteral("positionMenu"));
+    m_menuButton->setPopupMode(QToolButton::InstantPopup);
+    m_menuButton->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    m_menuButton->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    auto* menu = new QMenu(m_menuButton);
     for (const int position : m_face.positions) {
-        auto* button = new QToolButton(this);
-        button->setCheckable(true);
-        if (m_face.positions.size() <= 2) { // three or four names need the room
-            button->setIcon(colourChip(AccessoryIcon::positionColour(position)));
-            button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-        }
-        button->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
-        button->setMinimumWidth(0);
-        connect(button, &QToolButton::clicked, this, [this, position] {
-            updateButtons(); // the check mark follows the station, not the click
-            emit switchRequested(m_face.address, position);
-        });
-        m_buttonRow->addWidget(button);
-        m_buttons.push_back(button);
+        QAction* action = menu->addAction(
+            QString(), this, [this, position] { emit switchRequested(m_face.address, position); });
+        action->setCheckable(true);
     }
+    m_menuButton->setMenu(menu);
+    m_buttonRow->addWidget(m_menuButton);
+}
+
+// A colour chip without text: the CS2's red and green halves of a key. The name is in the tooltip.
+void TurnoutKey::addChipButton(int position) {
+    auto* button = new QToolButton(this);
+    button->setCheckable(true);
+    button->setIcon(colourChip(AccessoryIcon::positionColour(position)));
+    button->setToolButtonStyle(Qt::ToolButtonIconOnly);
+    button->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    button->setMinimumWidth(0);
+    connect(button, &QToolButton::clicked, this, [this, position] {
+        updateButtons(); // the check mark follows the station, not the click
+        emit switchRequested(m_face.address, position);
+    });
+    m_buttonRow->addWidget(button);
+    m_buttons.push_back(button);
 }
 
 void TurnoutKey::updateButtons() {
     for (qsizetype i = 0; i < m_buttons.size(); ++i) {
         const int position = m_face.positions.value(i);
         const QString name = AccessoryIcon::positionName(m_face.kind, position);
-        // Four buttons share a key: their text is the short name, the tooltip the full one.
-        m_buttons[i]->setText(m_face.positions.size() > 2 ? name.section(QLatin1Char(','), 0, 0) : name);
+        m_buttons[i]->setText(name);
         m_buttons[i]->setToolTip(tr("Switch %1 to %2").arg(m_face.address).arg(name));
         m_buttons[i]->setChecked(position == m_face.position);
     }
-    if (m_menuButton) {
-        m_menuButton->setText(tr("Position…"));
-        const QList<QAction*> actions = m_menuButton->menu()->actions();
-        for (qsizetype i = 0; i < actions.size(); ++i)
-            actions[i]->setText(AccessoryIcon::positionName(m_face.kind, m_face.positions.value(i)));
+    if (!m_menuButton)
+        return;
+    m_menuButton->setText(m_face.position < 0 ? tr("Position") : positionText());
+    m_menuButton->setToolTip(tr("Switch %1 to another position").arg(m_face.address));
+    const QList<QAction*> actions = m_menuButton->menu()->actions();
+    for (qsizetype i = 0; i < actions.size(); ++i) {
+        const int position = m_face.positions.value(int(i));
+        actions[i]->setText(AccessoryIcon::positionName(m_face.kind, position));
+        actions[i]->setChecked(position == m_face.position);
     }
 }
 
@@ -218,14 +229,14 @@ void TurnoutKey::paintEvent(QPaintEvent*) {
     painter.drawRoundedRect(face, 6, 6);
     if (part || !isEnabled()) // greyed: part of another article, or a position nobody vouches for now
         painter.setOpacity(0.45);
-    const int iconSize = m_buttons.isEmpty() && !m_menuButton ? 66 : 54;
+    const int iconSize = hasButtons() ? 44 : 56;
     const QRectF icon(face.center().x() - iconSize / 2.0, face.top() + 20, iconSize, iconSize);
     AccessoryIcon::paint(painter, icon, m_face.kind, part ? -1 : m_face.position, palette());
     painter.setOpacity(1);
     paintTexts(painter, face);
 }
 
-// The number top left, a mark top right while switching, name and position at the bottom of the face.
+// The number top left, a mark top right while switching, name (two lines) and position under the drawing.
 void TurnoutKey::paintTexts(QPainter& painter, const QRectF& face) const {
     QFont bold = font();
     bold.setBold(true);
@@ -238,23 +249,78 @@ void TurnoutKey::paintTexts(QPainter& painter, const QRectF& face) const {
         painter.drawText(top, Qt::AlignRight | Qt::AlignVCenter,
                          m_pending ? QStringLiteral("…") : QStringLiteral("!"));
     }
-    const bool buttons = !m_buttons.isEmpty() || m_menuButton;
-    const double textTop = buttons ? face.top() + FaceHeight - 38 : face.bottom() - 40;
-    const QRectF nameRect(face.left() + 6, textTop, face.width() - 12, 18);
-    const QString name = m_face.role == KeyFace::Role::Address         ? tr("no article")
-                         : m_face.role == KeyFace::Role::PartOfArticle ? m_face.ownerName
-                                                                       : m_face.name;
-    painter.setFont(m_face.role == KeyFace::Role::Article ? bold : font());
+    const QFont nameFont = m_face.role == KeyFace::Role::Article ? bold : font();
+    const QFontMetrics metrics(nameFont);
+    const int lineHeight = metrics.height();
+    const double textBottom = hasButtons() ? face.top() + FaceHeight - 2 : face.bottom() - 6;
+    const QRectF positionRect(face.left() + 4, textBottom - lineHeight, face.width() - 8, lineHeight);
+    const KeyName name = nameLines(metrics, int(positionRect.width()));
+    painter.setFont(nameFont);
     painter.setPen(palette().color(m_face.role == KeyFace::Role::Article ? QPalette::ButtonText
                                                                          : QPalette::PlaceholderText));
-    painter.drawText(nameRect, Qt::AlignCenter,
-                     painter.fontMetrics().elidedText(name, Qt::ElideRight, int(nameRect.width())));
+    QRectF line = positionRect.translated(0, -lineHeight * double(name.lines.size()));
+    for (const QString& text : name.lines) {
+        painter.drawText(line, Qt::AlignCenter, text);
+        line.translate(0, lineHeight);
+    }
     painter.setFont(font());
     QColor positionColour = palette().color(QPalette::PlaceholderText);
     if (m_face.role != KeyFace::Role::PartOfArticle && m_face.position >= 0)
         positionColour = palette().color(QPalette::ButtonText);
     painter.setPen(positionColour);
-    painter.drawText(nameRect.translated(0, 17), Qt::AlignCenter, positionText());
+    painter.drawText(
+        positionRect, Qt::AlignCenter,
+        QFontMetrics(font()).elidedText(positionText(), Qt::ElideRight, int(positionRect.width())));
+}
+
+QString TurnoutKey::shownName() const {
+    switch (m_face.role) {
+    case KeyFace::Role::Address:
+        return tr("no article");
+    case KeyFace::Role::PartOfArticle:
+        return m_face.ownerName;
+    case KeyFace::Role::Article:
+        break;
+    }
+    return m_face.name;
+}
+
+// The name broken at spaces into at most two lines of `width`; what still does not fit is elided.
+TurnoutKey::KeyName TurnoutKey::nameLines(const QFontMetrics& metrics, int width) const {
+    KeyName name;
+    QString rest = shownName().simplified();
+    while (!rest.isEmpty() && name.lines.size() < NameLines) {
+        const bool last = name.lines.size() == NameLines - 1;
+        qsizetype cut = rest.size();
+        while (!last && metrics.horizontalAdvance(rest.left(cut)) > width) {
+            const qsizetype space = rest.lastIndexOf(QLatin1Char(' '), cut - 1);
+            if (space <= 0)
+                break; // one word wider than the key: the line elides it
+            cut = space;
+        }
+        QString line = rest.left(cut);
+        rest = rest.mid(cut).trimmed();
+        if (metrics.horizontalAdvance(line) > width || (last && !rest.isEmpty())) {
+            line = metrics.elidedText(line + (rest.isEmpty() ? QString() : QStringLiteral(" ") + rest),
+                                      Qt::ElideRight, width);
+            name.elided = true;
+            rest.clear();
+        }
+        name.lines.push_back(line);
+    }
+    return name;
+}
+
+bool TurnoutKey::isTextElided() const {
+    QFont nameFont = font();
+    nameFont.setBold(m_face.role == KeyFace::Role::Article);
+    const int width = int(faceRect().width()) - 8;
+    return nameLines(QFontMetrics(nameFont), width).elided ||
+           fontMetrics().horizontalAdvance(positionText()) > width;
+}
+
+bool TurnoutKey::hasButtons() const {
+    return !m_buttons.isEmpty() || m_menuButton;
 }
 
 void TurnoutKey::mouseReleaseEvent(QMouseEvent* event) {

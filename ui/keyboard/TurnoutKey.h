@@ -4,9 +4,11 @@
 
 #include <QList>
 #include <QString>
+#include <QStringList>
 #include <QWidget>
 #include <cstdint>
 
+class QFontMetrics;
 class QHBoxLayout;
 class QToolButton;
 
@@ -29,9 +31,9 @@ struct KeyFace {
 };
 
 // One key of the turnout panel, like a key of the CS2 keyboard: the article's drawing in its position,
-// its number, name and position. A two-position article switches over with a click (or Space); one with
-// more positions offers a button per position (a menu for a turntable); a number without an article
-// has a red and a green button. A switching the station has not confirmed yet is framed in amber, one
+// its number, name and position. A two-position article switches over with a click (or Enter); one with
+// more positions offers them in a menu under its drawing; a number without an article has a red and a
+// green button. A switching the station has not confirmed yet is framed in amber, one
 // it did not confirm in red.
 class TurnoutKey final : public QWidget {
     Q_OBJECT
@@ -51,9 +53,12 @@ public:
     bool unconfirmed() const { return m_unconfirmed; }
     // True when a click on the key switches it over (two-position articles).
     bool toggles() const;
-    // The buttons of the positions (more than two positions, or red/green for a plain number).
+    // The red and green buttons of a number without an article.
     QList<QToolButton*> positionButtons() const { return m_buttons; }
+    // The menu of an article with more than two positions, named after the current one.
     QToolButton* positionMenuButton() const { return m_menuButton; }
+    // True when the key's name does not fit its two lines, or its position its line, and is shortened.
+    bool isTextElided() const;
     // The text under the name: "Straight", "Hp0", "part of 4" ...
     QString positionText() const;
 
@@ -70,7 +75,16 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
+    struct KeyName {
+        QStringList lines;
+        bool elided = false;
+    };
+
     void rebuildButtons();
+    void addChipButton(int position);
+    bool hasButtons() const;
+    QString shownName() const;
+    KeyName nameLines(const QFontMetrics& metrics, int width) const;
     void clearButtons();
     void updateButtons();
     void updateToolTip();

@@ -12,6 +12,7 @@
 #include <QLabel>
 #include <QScrollArea>
 #include <QShortcut>
+#include <QStyle>
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -67,6 +68,15 @@ TurnoutPanel::TurnoutPanel(QWidget* parent) : QWidget(parent) {
     up->setContext(Qt::WidgetWithChildrenShortcut);
     retranslate();
     rebuild();
+}
+
+QSize TurnoutPanel::sizeHint() const {
+    const QMargins margins = layout()->contentsMargins();
+    const auto* grid = static_cast<const QGridLayout*>(m_keyboard->widget()->layout());
+    const int keys =
+        KeysPerRow * m_keys.first()->sizeHint().width() + (KeysPerRow - 1) * grid->horizontalSpacing();
+    const int scrollBar = style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, m_keyboard);
+    return {margins.left() + keys + scrollBar + margins.right(), QWidget::sizeHint().height()};
 }
 
 QWidget* TurnoutPanel::buildNavigation() {

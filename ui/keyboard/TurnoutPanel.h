@@ -50,6 +50,9 @@ public:
     // The key of a keyboard number on the current page, else null.
     TurnoutKey* keyFor(std::int64_t address) const;
 
+    // As wide as four keys side by side with the keyboard's scroll bar, the width a side panel wants.
+    QSize sizeHint() const override;
+
 signals:
     void pageChanged(int page);
 

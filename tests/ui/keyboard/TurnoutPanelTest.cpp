@@ -9,6 +9,7 @@
 
 #include <QComboBox>
 #include <QLabel>
+#include <QMenu>
 #include <QToolButton>
 #include <gtest/gtest.h>
 
@@ -48,6 +49,15 @@ protected:
             texts << button->text();
         return texts;
     }
+    static QList<QAction*> positionActions(const TurnoutKey& key) {
+        return key.positionMenuButton() ? key.positionMenuButton()->menu()->actions() : QList<QAction*>{};
+    }
+    static QStringList menuTexts(const TurnoutKey& key) {
+        QStringList texts;
+        for (const QAction* action : positionActions(key))
+            texts << action->text();
+        return texts;
+    }
 
     test::DemoStation demo;
     test::Controller controller;
@@ -66,14 +76,18 @@ TEST_F(TurnoutPanelTest, TheDemoArticlesAppearOnPageOneWithNamesAndAddresses) {
     EXPECT_TRUE(key(1).toggles());
     EXPECT_EQ(key(2).face().kind, AccessoryIcon::Kind::RightTurnout);
     EXPECT_EQ(key(4).face().name, QStringLiteral("W4 Bw"));
-    EXPECT_EQ(buttonTexts(key(4)), (QStringList{"Left", "Straight", "Right"}));
+    EXPECT_EQ(menuTexts(key(4)), (QStringList{"Left", "Straight", "Right"}));
+    EXPECT_TRUE(key(4).positionButtons().isEmpty()) << "three buttons would not fit on a key";
     EXPECT_EQ(key(5).face().role, KeyFace::Role::PartOfArticle);
     EXPECT_EQ(key(5).positionText(), QStringLiteral("part of 4"));
     EXPECT_EQ(key(9).face().kind, AccessoryIcon::Kind::Semaphore);
-    EXPECT_EQ(buttonTexts(key(9)), (QStringList{"Hp0", "Hp1", "Hp2"}));
+    EXPECT_EQ(menuTexts(key(9)), (QStringList{"Hp0", "Hp1", "Hp2"}));
+    EXPECT_EQ(key(9).positionMenuButton()->text(), key(9).positionText()) << "named after the position";
     EXPECT_EQ(key(13).face().kind, AccessoryIcon::Kind::ShuntSignal);
     EXPECT_EQ(key(15).face().role, KeyFace::Role::Address);
     EXPECT_EQ(buttonTexts(key(15)), (QStringList{"Red", "Green"}));
+    EXPECT_EQ(key(15).positionButtons().first()->toolButtonStyle(), Qt::ToolButtonIconOnly);
+    EXPECT_EQ(key(15).positionButtons().first()->toolTip(), QStringLiteral("Switch 15 to Red"));
 }
 
 TEST(TurnoutPanel, WithoutAStationItSaysSoInsteadOfShowingKeys) {
@@ -109,12 +123,13 @@ TEST_F(TurnoutPanelTest, EnterSwitchesTheFocusedKey) {
 }
 
 TEST_F(TurnoutPanelTest, AThreeWayTurnoutOffersItsPositions) {
-    QTest::mouseClick(key(4).positionButtons().at(2), Qt::LeftButton);
+    positionActions(key(4)).at(2)->trigger();
     ASSERT_TRUE(QTest::qWaitFor([&] { return controller.railway()->accessory(4)->position() == 2; },
                                 test::CommandMs));
     EXPECT_EQ(stationPosition(5), 0) << "right is the second address's red output";
-    EXPECT_TRUE(key(4).positionButtons().at(2)->isChecked());
-    EXPECT_FALSE(key(4).positionButtons().at(1)->isChecked());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return positionActions(key(4)).at(2)->isChecked(); }, test::CommandMs));
+    EXPECT_FALSE(positionActions(key(4)).at(1)->isChecked());
+    EXPECT_EQ(key(4).positionMenuButton()->text(), QStringLiteral("Right"));
 }
 
 TEST_F(TurnoutPanelTest, AnAddressWithoutArticleSwitches) {
