@@ -28,7 +28,10 @@ LayoutOverview::LayoutOverview(QWidget* parent)
     tables->addWidget(contactBox_);
     tables->setStretchFactor(0, 3);
     tables->setStretchFactor(1, 2);
+    // Below the plan the height is short: little chrome, so that the tables show several rows.
     auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 2, 4, 2);
+    layout->setSpacing(2);
     layout->addWidget(power_);
     layout->addWidget(tables, 1);
     retranslate();
@@ -44,6 +47,7 @@ QTableView* LayoutOverview::tableView(const QString& objectName) {
     view->setShowGrid(false);
     view->setWordWrap(false);
     view->verticalHeader()->hide();
+    view->verticalHeader()->setDefaultSectionSize(view->fontMetrics().height() + 6);
     view->horizontalHeader()->setStretchLastSection(true);
     view->horizontalHeader()->setHighlightSections(false);
     return view;
@@ -52,7 +56,9 @@ QTableView* LayoutOverview::tableView(const QString& objectName) {
 QGroupBox* LayoutOverview::tableBox(QTableView* view, const QString& objectName) {
     auto* box = new QGroupBox(this);
     box->setObjectName(objectName);
+    box->setFlat(true);
     auto* layout = new QVBoxLayout(box);
+    layout->setContentsMargins(0, 2, 0, 0);
     layout->addWidget(view);
     return box;
 }

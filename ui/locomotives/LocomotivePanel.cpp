@@ -1,5 +1,6 @@
 #include "locomotives/LocomotivePanel.h"
 
+#include "common/SideBySide.h"
 #include "locomotives/LocomotiveFileModel.h"
 #include "locomotives/LocomotiveForm.h"
 #include "model/Railway.h"
@@ -50,11 +51,15 @@ LocomotivePanel::LocomotivePanel(QWidget* parent)
     tools->addWidget(m_add);
     tools->addWidget(m_remove);
     tools->addWidget(m_save);
-    auto* split = new QSplitter(Qt::Horizontal, this);
+    auto* split = new QSplitter(this);
+    split->setObjectName(QStringLiteral("locomotiveSplit"));
+    split->setChildrenCollapsible(false);
     split->addWidget(m_table);
     split->addWidget(editorSide());
-    split->setStretchFactor(0, 3);
-    split->setStretchFactor(1, 2);
+    split->setStretchFactor(0, 2);
+    split->setStretchFactor(1, 3);
+    // The list beside the editor where the panel is wide, above it in a side panel's width.
+    SideBySide::arrange(this, split, 780);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(tools);
     layout->addWidget(m_emptyText);

@@ -1,5 +1,6 @@
 #include "programming/ProgrammingPanel.h"
 
+#include "common/SideBySide.h"
 #include "model/Railway.h"
 #include "programming/ProgrammingResultText.h"
 
@@ -55,6 +56,7 @@ ProgrammingPanel::ProgrammingPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QHBoxLayout(this);
     layout->addWidget(buildRegistration(), 1);
     layout->addWidget(buildCvProgramming(), 1);
+    SideBySide::arrange(this, layout, 760); // stacked in a side panel
     retranslate();
     updateEnabled();
 }
@@ -144,7 +146,7 @@ QGridLayout* ProgrammingPanel::cvGrid() {
             grid->addWidget(second, line, 3);
     };
     grid->addWidget(m_labels[LocomotiveLabel], 0, 0);
-    grid->addWidget(m_locomotive, 0, 1, 1, 4);
+    grid->addWidget(m_locomotive, 0, 1, 1, 3);
     auto* decoder = new QHBoxLayout;
     decoder->addWidget(m_protocol, 1);
     decoder->addWidget(m_address, 1);
@@ -154,7 +156,7 @@ QGridLayout* ProgrammingPanel::cvGrid() {
     row(3, ValueLabel, m_value);
     row(4, TrackLabel, m_track);
     row(5, ModeLabel, m_mode, m_bit, BitLabel);
-    grid->addWidget(m_bitOn, 5, 4);
+    grid->addWidget(m_bitOn, 6, 3); // under the bit: the line stays narrow enough for a side panel
     grid->setColumnStretch(1, 1);
     grid->setColumnStretch(3, 1);
     return grid;

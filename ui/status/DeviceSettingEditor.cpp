@@ -7,21 +7,25 @@
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSlider>
+#include <QVBoxLayout>
 
 namespace stellwerk::ui {
 
 DeviceSettingEditor::DeviceSettingEditor(const model::DeviceSetting& setting, QWidget* parent)
     : QWidget(parent), m_channel(setting.channel()), m_reported(setting.value()), m_setting(setting) {
     setObjectName(QStringLiteral("deviceSetting%1").arg(setting.channel()));
-    auto* row = new QHBoxLayout(this);
-    row->setContentsMargins(0, 0, 0, 0);
+    // The choice on one line, what the device answered under it: a side panel is narrow.
+    auto* column = new QVBoxLayout(this);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(2);
+    m_row = new QHBoxLayout;
+    column->addLayout(m_row);
     if (setting.isList())
         buildList(setting);
     else
         buildNumber(setting);
     m_result = new QLabel(this);
-    m_result->setMinimumWidth(m_result->fontMetrics().horizontalAdvance(QStringLiteral("no answer ✗")) + 8);
-    row->addWidget(m_result);
+    column->addWidget(m_result);
     showValue(setting.value());
     retranslate();
 }
@@ -30,7 +34,7 @@ void DeviceSettingEditor::buildList(const model::DeviceSetting& setting) {
     m_list = new QComboBox(this);
     m_list->addItems(setting.options());
     m_list->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-    layout()->addWidget(m_list);
+    m_row->addWidget(m_list);
     connect(m_list, &QComboBox::activated, this, [this](int index) { choose(std::uint16_t(index)); });
 }
 
@@ -39,7 +43,7 @@ void DeviceSettingEditor::buildNumber(const model::DeviceSetting& setting) {
     m_slider = new QSlider(Qt::Horizontal, this);
     m_slider->setRange(setting.minimum(), setting.maximum());
     m_slider->setPageStep(std::max(1, (setting.maximum() - setting.minimum()) / 10));
-    m_slider->setMinimumWidth(160);
+    m_slider->setMinimumWidth(100);
     m_number = new QDoubleSpinBox(this);
     m_number->setDecimals(setting.decimals());
     m_number->setRange(setting.scaled(setting.minimum()), setting.scaled(setting.maximum()));
@@ -47,8 +51,8 @@ void DeviceSettingEditor::buildNumber(const model::DeviceSetting& setting) {
         std::abs(setting.scaled(std::uint16_t(setting.minimum() + 1)) - setting.scaled(setting.minimum())));
     if (!setting.unit().isEmpty())
         m_number->setSuffix(QLatin1Char(' ') + setting.unit());
-    static_cast<QHBoxLayout*>(layout())->addWidget(m_slider, 1);
-    layout()->addWidget(m_number);
+    m_row->addWidget(m_slider, 1);
+    m_row->addWidget(m_number);
     connect(m_slider, &QSlider::valueChanged, this, [this](int raw) {
         const QSignalBlocker blocker(m_number);
         m_number->setValue(m_setting.scaled(std::uint16_t(raw)));
@@ -131,6 +135,7 @@ QString DeviceSettingEditor::stateText() const {
 
 void DeviceSettingEditor::retranslate() {
     m_result->setText(stateText());
+    m_result->setVisible(!m_result->text().isEmpty());
     const bool bad = m_state == State::Refused || m_state == State::NoAnswer;
     const bool good = m_state == State::Accepted;
     m_result->setStyleSheet(bad    ? QStringLiteral("color: #d03636; font-weight: bold;")

@@ -7,6 +7,7 @@
 
 class QComboBox;
 class QDoubleSpinBox;
+class QHBoxLayout;
 class QLabel;
 class QSlider;
 
@@ -58,6 +59,7 @@ private:
     QComboBox* m_list = nullptr;
     QSlider* m_slider = nullptr;
     QDoubleSpinBox* m_number = nullptr;
+    QHBoxLayout* m_row = nullptr;
     QLabel* m_result = nullptr;
 };
 

@@ -1,23 +1,18 @@
 #include "status/StatusPanel.h"
 
+#include "common/WrappingGrid.h"
 #include "model/Railway.h"
 #include "status/DeviceSettingEditor.h"
 #include "status/GaugeWidget.h"
 
 #include <QEvent>
 #include <QFormLayout>
-#include <QGridLayout>
 #include <QGroupBox>
 #include <QLabel>
 #include <QScrollArea>
 #include <QVBoxLayout>
 
 namespace stellwerk::ui {
-namespace {
-
-constexpr int GaugesPerRow = 4;
-
-} // namespace
 
 StatusPanel::StatusPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("statusPanel"));
@@ -133,13 +128,15 @@ void StatusPanel::addDevice(std::uint32_t uid) {
         device->article().isEmpty()
             ? device->typeName()
             : tr("%1, article %2, version %3").arg(device->typeName(), device->article(), device->version()));
-    auto* grid = new QGridLayout(entry.group);
+    auto* layout = new QVBoxLayout(entry.group);
+    // The gauges wrap into as many columns as the panel's width holds.
+    auto* gauges = new WrappingGrid(entry.group);
+    layout->addWidget(gauges);
     for (const model::StatusChannel& channel : device->channels()) {
-        auto* gauge = new GaugeWidget(entry.group);
+        auto* gauge = new GaugeWidget(gauges);
         gauge->setTitle(measurementName(channel.name()));
         gauge->setChannel(channel);
-        const int index = int(entry.gauges.size());
-        grid->addWidget(gauge, index / GaugesPerRow, index % GaugesPerRow);
+        gauges->add(gauge);
         entry.gauges.push_back(gauge);
         entry.channels.push_back(channel.channel());
     }
@@ -153,13 +150,14 @@ void StatusPanel::addDevice(std::uint32_t uid) {
 void StatusPanel::addSettings(const model::Device& device, DeviceGauges& entry) {
     if (device.settings().empty())
         return;
-    auto* grid = static_cast<QGridLayout*>(entry.group->layout());
+    auto* layout = static_cast<QVBoxLayout*>(entry.group->layout());
     entry.settingsTitle = new QLabel(entry.group);
     QFont bold = entry.settingsTitle->font();
     bold.setBold(true);
     entry.settingsTitle->setFont(bold);
     auto* form = new QFormLayout;
     form->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
+    form->setRowWrapPolicy(QFormLayout::WrapAllRows); // the titles are long, the panel narrow
     for (const model::DeviceSetting& setting : device.settings()) {
         auto* label = new QLabel(setting.title(), entry.group);
         auto* editor = new DeviceSettingEditor(setting, entry.group);
@@ -172,9 +170,8 @@ void StatusPanel::addSettings(const model::Device& device, DeviceGauges& entry) 
         entry.settingLabels.push_back(label);
         entry.settings.push_back(editor);
     }
-    const int row = grid->rowCount();
-    grid->addWidget(entry.settingsTitle, row, 0, 1, GaugesPerRow);
-    grid->addLayout(form, row + 1, 0, 1, GaugesPerRow);
+    layout->addWidget(entry.settingsTitle);
+    layout->addLayout(form);
     entry.settingsTitle->setText(tr("Settings"));
 }
 

@@ -1,6 +1,7 @@
 #include "throttle/ThrottlePanel.h"
 
 #include "common/LayoutStateBanner.h"
+#include "common/WrappingGrid.h"
 #include "model/Railway.h"
 #include "throttle/ThrottleSettings.h"
 #include "throttle/ThrottleWidget.h"
@@ -12,6 +13,8 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QShortcut>
+#include <QStyle>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace stellwerk::ui {
@@ -47,11 +50,8 @@ ThrottlePanel::ThrottlePanel(QWidget* parent) : QWidget(parent) {
     m_scroll = new QScrollArea(this);
     m_scroll->setWidgetResizable(true);
     m_scroll->setFrameShape(QFrame::NoFrame);
-    auto* row = new QWidget(m_scroll);
-    m_row = new QHBoxLayout(row);
-    m_row->setContentsMargins(0, 0, 0, 0);
-    m_row->addStretch(1);
-    m_scroll->setWidget(row);
+    m_rack = new WrappingGrid(m_scroll);
+    m_scroll->setWidget(m_rack);
     layout->addWidget(m_scroll, 1);
 
     createShortcuts();
@@ -81,22 +81,26 @@ void ThrottlePanel::setRailway(model::Railway* railway) {
 ThrottleWidget* ThrottlePanel::addThrottle(std::uint32_t loco) {
     if (m_throttles.size() >= ThrottleSettings::MaximumThrottles)
         return nullptr;
-    auto* throttle = new ThrottleWidget(m_row->parentWidget());
+    auto* throttle = new ThrottleWidget(m_rack);
     throttle->setRailway(m_railway);
     throttle->setLocomotive(loco);
     connect(throttle, &ThrottleWidget::locomotiveChosen, this, &ThrottlePanel::save);
     connect(throttle, &ThrottleWidget::closeRequested, this, [this, throttle] { removeThrottle(throttle); });
-    m_row->insertWidget(m_row->count() - 1, throttle); // before the stretch
+    m_rack->add(throttle);
     m_throttles.push_back(throttle);
     renumber();
     save();
     updateEmptyState();
+    // A throttle the user adds below the others is scrolled into sight once the rack has laid it out.
+    if (!m_restoring)
+        QTimer::singleShot(0, throttle, [this, throttle] { m_scroll->ensureWidgetVisible(throttle); });
     return throttle;
 }
 
 void ThrottlePanel::removeThrottle(ThrottleWidget* throttle) {
     if (!m_throttles.removeOne(throttle))
         return;
+    m_rack->remove(throttle);
     throttle->deleteLater();
     throttle->hide();
     renumber();
@@ -111,6 +115,15 @@ bool ThrottlePanel::focusThrottle(int number) {
     m_scroll->ensureWidgetVisible(throttle);
     throttle->setFocus(Qt::ShortcutFocusReason);
     return true;
+}
+
+int ThrottlePanel::widthFor(int columns) const {
+    const int throttle =
+        m_throttles.isEmpty() ? ThrottleWidget().sizeHint().width() : m_throttles.first()->sizeHint().width();
+    const QMargins margins = layout()->contentsMargins();
+    const int scrollBar = style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, m_scroll);
+    return margins.left() + columns * throttle + (columns - 1) * m_rack->spacing() + scrollBar +
+           margins.right();
 }
 
 QString ThrottlePanel::emptyText() const {
@@ -143,8 +156,11 @@ void ThrottlePanel::updateEmptyState() {
 void ThrottlePanel::retranslate() {
     m_add->setText(tr("Add throttle"));
     m_add->setToolTip(tr("Open one more throttle (up to %1)").arg(ThrottleSettings::MaximumThrottles));
-    m_keysHint->setText(tr("Alt+1…9: keyboard on a throttle · Up/Down or +/−: speed · R: direction · "
-                           "0–9: F0–F9 · E: stop this loco · Space stays STOP for the layout"));
+    // One short line: the full list is the tooltip and Help ▸ Keys, not four wrapped lines above the
+    // throttles.
+    m_keysHint->setText(tr("Alt+1…9: drive with the keyboard"));
+    m_keysHint->setToolTip(tr("Alt+1…9: keyboard on a throttle · Up/Down or +/−: speed · R: direction · "
+                              "0–9: F0–F9 · E: stop this loco · Space stays STOP for the layout"));
     m_emptyText->setText(!m_railway ? tr("No station connected: throttles drive once a station is ready.")
                                     : tr("No throttle open. “Add throttle” opens one for a locomotive."));
 }

@@ -5,7 +5,6 @@
 #include <QWidget>
 #include <cstdint>
 
-class QHBoxLayout;
 class QLabel;
 class QPushButton;
 class QScrollArea;
@@ -17,11 +16,12 @@ class Railway;
 namespace stellwerk::ui {
 
 class LayoutStateBanner;
+class WrappingGrid;
 class ThrottleWidget;
 
-// The throttles page: several throttles side by side, added and closed by the user, each driving one
-// locomotive. Alt+1..Alt+9 put the keyboard on throttle 1..9. Which locomotives were open is remembered
-// (ThrottleSettings) and opened again on the next start.
+// The throttles page: several throttles side by side or stacked as the width allows, added and closed by
+// the user, each driving one locomotive. Alt+1..Alt+9 put the keyboard on throttle 1..9. Which locomotives
+// were open is remembered (ThrottleSettings) and opened again on the next start.
 class ThrottlePanel final : public QWidget {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(ThrottlePanel)
@@ -32,7 +32,7 @@ public:
     // The railway whose locomotives the throttles drive (null: none).
     void setRailway(model::Railway* railway);
 
-    // A new throttle at the right, driving `loco` (0: the user picks one); null when all nine are open.
+    // A new throttle after the others, driving `loco` (0: the user picks one); null when all nine are open.
     ThrottleWidget* addThrottle(std::uint32_t loco = 0);
     void removeThrottle(ThrottleWidget* throttle);
     const QList<ThrottleWidget*>& throttles() const { return m_throttles; }
@@ -40,6 +40,8 @@ public:
     bool focusThrottle(int number);
     // What the page says while it has nothing to drive; empty while throttles drive.
     QString emptyText() const;
+    // The width that shows `columns` throttles side by side without scrolling sideways.
+    int widthFor(int columns) const;
     // Says when the layout is stopped, halted or not reported; hidden while trains may run.
     LayoutStateBanner* layoutState() const { return m_banner; }
 
@@ -60,7 +62,7 @@ private:
     LayoutStateBanner* m_banner;
     QLabel* m_emptyText;
     QScrollArea* m_scroll;
-    QHBoxLayout* m_row;
+    WrappingGrid* m_rack;
     bool m_restoring = false;
 };
 

@@ -1,4 +1,4 @@
-# The throttles: several throttles side by side, each driving one locomotive, with function keys drawn
+# The throttles: several throttles side by side or stacked as the panel's width allows, each driving one locomotive, with function keys drawn
 # from our own icons (resources/function-icons, embedded as :/function-icons/<kind>.svg).
 target_sources(stellwerk-ui PRIVATE
     throttle/FunctionIcons.cpp throttle/FunctionIcons.h

@@ -1,3 +1,7 @@
 # Trust during a running session: views while the station is silent, reconnecting or has switched the
-# power off (against a simulated CS2 on loopback, asserting the wire and the screen).
-target_sources(stellwerk-ui-tests PRIVATE common/StationTrustTest.cpp)
+# power off (against a simulated CS2 on loopback, asserting the wire and the screen). How panels arrange
+# their parts for the width they get.
+target_sources(stellwerk-ui-tests PRIVATE
+    common/PanelArrangementTest.cpp
+    common/StationTrustTest.cpp
+)
