@@ -11,7 +11,6 @@
 namespace stellwerk::ui {
 namespace {
 
-constexpr int Margin = 8;
 constexpr int MinimumColumns = 20; // the CS2's page is at least 20 x 15 tiles
 constexpr int MinimumRows = 15;
 
@@ -44,6 +43,14 @@ void TrackPageView::setDimmed(bool dimmed) {
 
 QSize TrackPageView::gridSize() const {
     return {std::max(m_page.columns, MinimumColumns), std::max(m_page.rows, MinimumRows)};
+}
+
+QRect TrackPageView::drawnCells() const {
+    QRect drawn;
+    for (const model::LayoutTile& tile : m_page.tiles)
+        if (tile.type != QLatin1String("leer"))
+            drawn |= QRect(tile.position.column, tile.position.row, 1, 1);
+    return drawn;
 }
 
 QSize TrackPageView::sizeHint() const {

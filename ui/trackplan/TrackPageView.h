@@ -23,6 +23,8 @@ class TrackPageView final : public QWidget {
     Q_DISABLE_COPY_MOVE(TrackPageView)
 
 public:
+    // Pixels around the grid.
+    static constexpr int Margin = 8;
     using LookOf = std::function<TrackTileLook(int tile)>;
     using TextOf = std::function<QString(int tile)>;
 
@@ -39,6 +41,8 @@ public:
     QSize sizeHint() const override;
     // The size the page needs at one pixel per tile: columns x rows.
     QSize gridSize() const;
+    // The cells (column, row, columns, rows) that hold something drawn; empty for an empty page.
+    QRect drawnCells() const;
     // Greyed: the states drawn are the last the station reported, not what it reports now.
     void setDimmed(bool dimmed);
     bool isDimmed() const { return m_dimmed; }

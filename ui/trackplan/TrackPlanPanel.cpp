@@ -4,6 +4,7 @@
 #include "common/NotReported.h"
 #include "connection/StationConnection.h"
 #include "model/Railway.h"
+#include "trackplan/PageZoom.h"
 #include "trackplan/TrackPageView.h"
 #include "trackplan/TrackTileInfo.h"
 #include "trackplan/TrackTileLook.h"
@@ -23,9 +24,6 @@
 namespace stellwerk::ui {
 namespace {
 
-constexpr int MinimumTile = 12;
-constexpr int MaximumTile = 160;
-
 // The downloaded form of an opened folder's pages, which model::TrackLayout is built from.
 std::vector<station::DownloadedPage> downloadedPages(const cs2config::TrackLayout& layout) {
     std::vector<station::DownloadedPage> pages;
@@ -38,6 +36,7 @@ std::vector<station::DownloadedPage> downloadedPages(const cs2config::TrackLayou
 
 TrackPlanPanel::TrackPlanPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("trackPlanPanel"));
+    m_zoom = new PageZoom(this);
     auto* layout = new QVBoxLayout(this);
     m_toolBar = new QToolBar(this);
     m_open = m_toolBar->addAction(QString()); // LayoutFileActions asks for the folder
@@ -224,14 +223,15 @@ void TrackPlanPanel::addPage(int index) {
             return toolTipOn(*shown, {index, tile});
         },
         scroll);
-    view->setTileSize(m_tileSize);
     view->setDimmed(m_live && !isReported());
     scroll->setWidget(view);
+    m_zoom->attach(page.id, view, scroll);
     connect(view, &TrackPageView::tileClicked, this, [this, index](int tile) { tileClicked(index, tile); });
     connect(view, &TrackPageView::tileMenuRequested, this,
             [this, index](int tile, QPoint where) { showTileMenu(index, tile, where); });
-    connect(view, &TrackPageView::zoomRequested, this,
-            [this](int steps) { setTileSize(int(m_tileSize * std::pow(1.2, steps))); });
+    connect(view, &TrackPageView::zoomRequested, this, [this, view, id = page.id](int steps) {
+        m_zoom->zoomTo(id, int(view->tileSize() * std::pow(1.2, steps)));
+    });
     m_views.push_back(view);
     m_tabs->addTab(scroll, page.name.isEmpty() ? tr("Page %1").arg(page.id) : page.name);
 }
@@ -374,27 +374,40 @@ void TrackPlanPanel::goToPage(std::int64_t pageId) {
             m_tabs->setCurrentIndex(i);
 }
 
+int TrackPlanPanel::tileSize() const {
+    const TrackPageView* view = pageView(m_tabs->currentIndex());
+    return view ? view->tileSize() : 0;
+}
+
+std::optional<std::int64_t> TrackPlanPanel::currentPageId() const {
+    const int index = m_tabs->currentIndex();
+    if (!m_layout || index < 0 || index >= int(m_layout->pages().size()))
+        return std::nullopt;
+    return m_layout->pages()[std::size_t(index)].id;
+}
+
+// The zoom of the page in front; the other pages keep theirs.
 void TrackPlanPanel::setTileSize(int pixels) {
-    m_tileSize = std::clamp(pixels, MinimumTile, MaximumTile);
-    for (TrackPageView* view : m_views)
-        view->setTileSize(m_tileSize);
+    if (const std::optional<std::int64_t> page = currentPageId())
+        m_zoom->zoomTo(*page, pixels);
 }
 
 void TrackPlanPanel::zoomIn() {
-    setTileSize(std::max(m_tileSize + 1, int(m_tileSize * 1.2)));
+    setTileSize(std::max(tileSize() + 1, int(tileSize() * 1.2)));
 }
 
 void TrackPlanPanel::zoomOut() {
-    setTileSize(std::min(m_tileSize - 1, int(m_tileSize / 1.2)));
+    setTileSize(std::min(tileSize() - 1, int(tileSize() / 1.2)));
 }
 
 void TrackPlanPanel::fitToWindow() {
-    TrackPageView* view = pageView(m_tabs->currentIndex());
-    if (!view)
-        return;
-    const QSize room = m_tabs->currentWidget()->size() - QSize(20, 20);
-    const QSize grid = view->gridSize();
-    setTileSize(std::min(room.width() / grid.width(), room.height() / grid.height()));
+    if (const std::optional<std::int64_t> page = currentPageId())
+        m_zoom->fit(*page);
+}
+
+bool TrackPlanPanel::isFitted() const {
+    const std::optional<std::int64_t> page = currentPageId();
+    return page && m_zoom->isFitted(*page);
 }
 
 QString TrackPlanPanel::problemText() const {

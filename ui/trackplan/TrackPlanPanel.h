@@ -27,6 +27,7 @@ class Railway;
 namespace stellwerk::ui {
 
 class LayoutStateBanner;
+class PageZoom;
 class TrackPageView;
 struct TrackTileLook;
 
@@ -71,11 +72,14 @@ public:
     // What a tile shows now (for tests and the screenshot tool).
     TrackTileLook lookOf(model::TileRef ref) const;
     QString toolTipOf(model::TileRef ref) const;
-    int tileSize() const { return m_tileSize; }
+    // The zoom of the page in front (pixels per tile); each page keeps its own (PageZoom).
+    int tileSize() const;
     void setTileSize(int pixels);
     void zoomIn();
     void zoomOut();
+    // The drawn part of the page in front fills the window, and keeps filling it as the window changes.
     void fitToWindow();
+    bool isFitted() const;
     // The problem shown in the banner; empty while it is hidden.
     QString problemText() const;
 
@@ -101,6 +105,7 @@ private:
     void tileClicked(int page, int tile);
     void showTileMenu(int page, int tile, QPoint where);
     void goToPage(std::int64_t pageId);
+    std::optional<std::int64_t> currentPageId() const;
     QString accessoryName(std::int64_t id) const;
     void showProblem(const QString& text);
     QString findingsText(const std::vector<cs2config::LayoutFinding>& findings) const;
@@ -117,7 +122,7 @@ private:
     bool m_live = false;
     std::map<std::int64_t, std::vector<model::TileRef>> m_routeTiles;
     std::vector<TrackPageView*> m_views;
-    int m_tileSize = 40;
+    PageZoom* m_zoom = nullptr;
     std::function<bool()> m_mayOpen;
 
     QToolBar* m_toolBar = nullptr;

@@ -5,6 +5,7 @@ target_sources(stellwerk-ui PRIVATE
     trackplan/LayoutFileSettings.cpp trackplan/LayoutFileSettings.h
     trackplan/SignalShapes.cpp
     trackplan/TrackColors.cpp trackplan/TrackColors.h
+    trackplan/PageZoom.cpp trackplan/PageZoom.h
     trackplan/TrackPageView.cpp trackplan/TrackPageView.h
     trackplan/TrackPlanPanel.cpp trackplan/TrackPlanPanel.h
     trackplan/TrackShapes.cpp trackplan/TrackShapes.h

@@ -1,7 +1,9 @@
-# The track plan tab against the simulated station, and every tile type drawn in every rotation.
+# The track plan tab against the simulated station, each page's zoom and fit, and every tile type drawn in every rotation.
 target_sources(stellwerk-ui-tests PRIVATE
+    trackplan/PageZoomTest.cpp
     trackplan/TrackPlanPanelTest.cpp
     trackplan/TrackTileCacheTest.cpp
     trackplan/TrackTilePainterTest.cpp
 )
-target_compile_definitions(stellwerk-ui-tests PRIVATE STELLWERK_SHARED_DIR="${STELLWERK_SHARED_DIR}")
+target_compile_definitions(stellwerk-ui-tests PRIVATE STELLWERK_SHARED_DIR="${STELLWERK_SHARED_DIR}"
+    STELLWERK_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

@@ -1,0 +1,78 @@
+#include "trackplan/PageZoom.h"
+
+#include "trackplan/TrackPageView.h"
+
+#include <QEvent>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <algorithm>
+
+namespace stellwerk::ui {
+
+PageZoom::PageZoom(QObject* parent) : QObject(parent) {}
+
+void PageZoom::attach(std::int64_t pageId, TrackPageView* view, QScrollArea* scroll) {
+    Page& page = m_pages[pageId];
+    page.view = view;
+    page.scroll = scroll;
+    scroll->viewport()->installEventFilter(this);
+    if (page.fitted)
+        fitNow(page);
+    else
+        view->setTileSize(page.tile);
+}
+
+void PageZoom::zoomTo(std::int64_t pageId, int pixels) {
+    Page& page = m_pages[pageId];
+    page.fitted = false;
+    page.tile = std::clamp(pixels, MinimumTile, MaximumTile);
+    if (page.view)
+        page.view->setTileSize(page.tile);
+}
+
+void PageZoom::fit(std::int64_t pageId) {
+    Page& page = m_pages[pageId];
+    page.fitted = true;
+    fitNow(page);
+}
+
+bool PageZoom::isFitted(std::int64_t pageId) const {
+    return m_pages.value(pageId).fitted;
+}
+
+// A page's window changed size (or was shown for the first time): a fitted page fits again.
+bool PageZoom::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::Resize || event->type() == QEvent::Show)
+        for (Page& page : m_pages)
+            if (page.fitted && page.scroll && page.scroll->viewport() == watched)
+                fitNow(page);
+    return QObject::eventFilter(watched, event);
+}
+
+// A page not shown yet keeps its tile size: its window has no size to fit to until it is shown.
+void PageZoom::fitNow(Page& page) {
+    if (!page.view || !page.scroll || !page.scroll->isVisible())
+        return;
+    const QSize room =
+        page.scroll->viewport()->size() - QSize(2 * TrackPageView::Margin, 2 * TrackPageView::Margin);
+    const QRect drawn = page.view->drawnCells();
+    if (room.isEmpty() || drawn.isEmpty())
+        return;
+    page.tile = std::clamp(std::min(room.width() / drawn.width(), room.height() / drawn.height()),
+                           MinimumTile, MaximumTile);
+    page.view->setTileSize(page.tile);
+    centreDrawnPart(page);
+}
+
+// The drawn part in the middle of the window; the empty rest of the grid stays reachable by scrolling.
+void PageZoom::centreDrawnPart(const Page& page) {
+    const QRect drawn = page.view->drawnCells();
+    const QRect pixels(TrackPageView::Margin + drawn.left() * page.tile,
+                       TrackPageView::Margin + drawn.top() * page.tile, drawn.width() * page.tile,
+                       drawn.height() * page.tile);
+    const QSize room = page.scroll->viewport()->size();
+    page.scroll->horizontalScrollBar()->setValue(pixels.center().x() - room.width() / 2);
+    page.scroll->verticalScrollBar()->setValue(pixels.center().y() - room.height() / 2);
+}
+
+} // namespace stellwerk::ui
