@@ -2037,6 +2037,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>No throttle open. “Add throttle” opens one for a locomotive.</source>
         <translation>Kein Fahrpult offen. „Fahrpult hinzufügen“ öffnet eines für eine Lok.</translation>
     </message>
+    <message>
+        <source>Alt+1…9: drive with the keyboard</source>
+        <translation>Alt+1…9: mit der Tastatur fahren</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::ThrottleWidget</name>
@@ -2200,16 +2204,8 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <translation>Teil von %1</translation>
     </message>
     <message>
-        <source>position unknown</source>
-        <translation>Stellung unbekannt</translation>
-    </message>
-    <message>
         <source>Switch %1 to %2</source>
         <translation>%1 auf %2 stellen</translation>
-    </message>
-    <message>
-        <source>Position…</source>
-        <translation>Stellung …</translation>
     </message>
     <message>
         <source>%1 (%2), address %3: %4</source>
@@ -2234,6 +2230,18 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>no article</source>
         <translation>kein Magnetartikel</translation>
+    </message>
+    <message>
+        <source>not known</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Stellung</translation>
+    </message>
+    <message>
+        <source>Switch %1 to another position</source>
+        <translation>%1 in eine andere Stellung schalten</translation>
     </message>
 </context>
 <context>

@@ -2034,6 +2034,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>No throttle open. “Add throttle” opens one for a locomotive.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Alt+1…9: drive with the keyboard</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::ThrottleWidget</name>
@@ -2197,15 +2201,7 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>position unknown</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Switch %1 to %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Position…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2230,6 +2226,18 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>no article</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not known</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch %1 to another position</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

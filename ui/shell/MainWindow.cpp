@@ -73,17 +73,25 @@ void MainWindow::changeEvent(QEvent* event) {
     QMainWindow::changeEvent(event);
 }
 
-// Without a remembered arrangement, a large screen gives the side panels room for a third column of
-// keyboard keys and a second throttle, instead of the laptop widths of the first arrangement.
+// Without a remembered arrangement, the panels get the widths their content asks for at this size.
 void MainWindow::showEvent(QShowEvent* event) {
     QMainWindow::showEvent(event);
     if (m_shownBefore)
         return;
     m_shownBefore = true;
-    if (!WindowLayoutSettings::load().state.isEmpty() || width() < 1600)
-        return;
+    if (WindowLayoutSettings::load().state.isEmpty())
+        arrangePanels();
+}
+
+// The keyboard with its four columns on the left; one throttle on the right (two where the screen is wide
+// enough), reaching down to the status bar; the tables below about a quarter of the height; the plan gets
+// the rest.
+void MainWindow::arrangePanels() {
+    const int throttleColumns = width() >= 1800 ? 2 : 1;
     resizeDocks({m_workspace->dockOf(m_turnoutPanel), m_workspace->dockOf(m_throttlePanel)},
-                {width() * 24 / 100, width() * 27 / 100}, Qt::Horizontal);
+                {m_turnoutPanel->sizeHint().width(), m_throttlePanel->widthFor(throttleColumns)},
+                Qt::Horizontal);
+    resizeDocks({m_workspace->dockOf(m_layoutOverview)}, {height() * 28 / 100}, Qt::Vertical);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
@@ -125,10 +133,8 @@ void MainWindow::createPanels() {
     for (QWidget* front : {static_cast<QWidget*>(m_turnoutPanel), static_cast<QWidget*>(m_throttlePanel),
                            static_cast<QWidget*>(m_layoutOverview)})
         m_workspace->showPanel(front);
-    // A first arrangement in which the plan keeps most of a laptop's screen.
-    resizeDocks({m_workspace->dockOf(m_turnoutPanel), m_workspace->dockOf(m_throttlePanel)}, {330, 360},
-                Qt::Horizontal);
-    resizeDocks({m_workspace->dockOf(m_layoutOverview)}, {170}, Qt::Vertical);
+    // The throttles are tall: their side reaches down to the status bar, the tables stop beside them.
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
 }
 
 void MainWindow::createToolBar() {
@@ -244,7 +250,10 @@ void MainWindow::createViewMenu() {
     m_panelsMenu->setObjectName(QStringLiteral("panelsMenu"));
     for (QDockWidget* dock : m_workspace->docks())
         m_panelsMenu->addAction(dock->toggleViewAction());
-    m_resetLayoutAction = m_viewMenu->addAction(QString(), m_workspace, &Workspace::reset);
+    m_resetLayoutAction = m_viewMenu->addAction(QString(), this, [this] {
+        m_workspace->reset();
+        arrangePanels();
+    });
     m_resetLayoutAction->setObjectName(QStringLiteral("resetLayoutAction"));
     m_viewMenu->addSeparator();
     m_languageMenu = new LanguageMenu(m_translations.current(), m_viewMenu);

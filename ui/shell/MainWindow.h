@@ -80,6 +80,7 @@ protected:
 private:
     static QSize firstSize();
     void createPanels();
+    void arrangePanels();
     void createToolBar();
     void createFileMenu();
     void createStationMenu();

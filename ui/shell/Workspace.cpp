@@ -11,8 +11,9 @@ namespace stellwerk::ui {
 
 namespace {
 
-// Bumped whenever the set of docks changes, so that an old arrangement is not forced onto new panels.
-constexpr int LayoutVersion = 2;
+// Bumped whenever the set of docks or the first arrangement changes, so that an old arrangement is not forced
+// onto new panels.
+constexpr int LayoutVersion = 3;
 
 } // namespace
 

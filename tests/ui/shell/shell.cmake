@@ -1,9 +1,10 @@
-# The main window offscreen (menus, docks as a control desk, language switching, remembered settings), the
+# The main window offscreen (menus, docks as a control desk and their fit at laptop and full-HD size, language switching, remembered settings), the
 # about box, the German translation file, and `stellwerk --help` without a display.
 target_sources(stellwerk-ui-tests PRIVATE
     shell/AboutBoxTest.cpp
     shell/CommandLineTest.cpp
     shell/ControlDeskTest.cpp
+    shell/DeskFitTest.cpp
     shell/FileAndHelpMenuTest.cpp
     shell/LanguageTest.cpp
     shell/MainWindowTest.cpp

@@ -52,16 +52,20 @@ class DeskOnTestStation : public ::testing::Test {
 protected:
     static constexpr int CommandMs = 5000;
 
+    // The window's size at its first show and the language it starts in; a test can ask for others.
+    virtual QSize deskSize() const { return {1366, 768}; }
+    virtual Language deskLanguage() const { return Language::English; }
+
     void SetUp() override {
         stellwerkSettings().clear();
-        ASSERT_TRUE(translations.select(Language::English));
+        ASSERT_TRUE(translations.select(deskLanguage()));
         ASSERT_TRUE(server.start());
         window = std::make_unique<MainWindow>(translations);
         railways = std::make_unique<RailwayBinding>(connection);
         QObject::connect(railways.get(), &RailwayBinding::railwayChanged, window.get(),
                          &MainWindow::setRailway);
         window->setConnection(&connection);
-        window->resize(1366, 768);
+        window->resize(deskSize());
         window->show();
         ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
         connection.connectTo(server.url());

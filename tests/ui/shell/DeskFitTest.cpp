@@ -1,0 +1,175 @@
+// The first arrangement of the desk on a laptop (1366x768) and a full-HD screen (1920x1080), in English
+// and German: every panel shows its content without a sideways scroll bar, no visible text is cut off, the
+// keyboard shows its four columns, and a throttle added below the others is scrolled into sight.
+
+#include "keyboard/TurnoutKey.h"
+#include "keyboard/TurnoutPanel.h"
+#include "shell/Workspace.h"
+#include "support/TrustTestSupport.h"
+#include "throttle/ThrottlePanel.h"
+#include "throttle/ThrottleWidget.h"
+
+#include <QAbstractButton>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QLabel>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QStringList>
+#include <tuple>
+
+using namespace stellwerk;
+using namespace stellwerk::ui;
+
+namespace {
+
+constexpr quint32 Br218 = 0x4001; // locomotives of the demo layout
+constexpr quint32 V100 = 0x18;
+
+using Desk = std::tuple<QSize, Language>;
+
+// The widget's class and name, and the nearest ancestor with a name where it has none.
+QString nameOf(const QWidget* widget) {
+    const QWidget* named = widget;
+    while (named && named->objectName().isEmpty())
+        named = named->parentWidget();
+    return QStringLiteral("%1 \"%2\"")
+        .arg(QString::fromLatin1(widget->metaObject()->className()), named ? named->objectName() : QString());
+}
+
+QString textOf(const QWidget* widget) {
+    if (const auto* label = qobject_cast<const QLabel*>(widget))
+        return label->text();
+    if (const auto* button = qobject_cast<const QAbstractButton*>(widget))
+        return button->text();
+    if (const auto* combo = qobject_cast<const QComboBox*>(widget))
+        return combo->currentText();
+    return {};
+}
+
+// Whether the widget's own text is cut off: a label narrower (or, wrapping, shorter) than its text, a
+// button or a choice narrower than its text and icon.
+bool isCutOff(const QWidget* widget) {
+    const QString text = textOf(widget);
+    if (text.isEmpty() || widget->width() <= 0)
+        return false;
+    if (const auto* label = qobject_cast<const QLabel*>(widget)) {
+        if (label->textFormat() == Qt::RichText || Qt::mightBeRichText(text))
+            return false; // rich text lays itself out; the plain labels are what gets cut
+        if (label->wordWrap())
+            return label->heightForWidth(label->width()) > label->height() + 1;
+        return label->minimumSizeHint().width() > label->width() + 1;
+    }
+    QString shown = text;
+    shown.remove(QLatin1Char('&'));
+    int needed = widget->fontMetrics().horizontalAdvance(shown) + 8;
+    if (const auto* button = qobject_cast<const QAbstractButton*>(widget); button && !button->icon().isNull())
+        needed += button->iconSize().width() + 4;
+    if (qobject_cast<const QComboBox*>(widget))
+        needed += 20; // the arrow
+    return needed > widget->width();
+}
+
+bool isShown(const QWidget* widget) {
+    return widget->isVisible() && !widget->visibleRegion().isEmpty();
+}
+
+QStringList sidewaysScrolling(const QWidget* dock) {
+    QStringList found;
+    for (const QScrollArea* scroll : dock->findChildren<QScrollArea*>())
+        if (isShown(scroll) && scroll->horizontalScrollBar()->isVisible())
+            found << QStringLiteral("%1 scrolls sideways (%2 of %3 px)")
+                         .arg(nameOf(scroll))
+                         .arg(scroll->viewport()->width())
+                         .arg(scroll->widget()->minimumSizeHint().width());
+    return found;
+}
+
+class DeskFitTest : public test::DeskOnTestStation, public ::testing::WithParamInterface<Desk> {
+protected:
+    QSize deskSize() const override { return std::get<0>(GetParam()); }
+    Language deskLanguage() const override { return std::get<1>(GetParam()); }
+
+    void SetUp() override {
+        DeskOnTestStation::SetUp();
+        ASSERT_NE(window->throttlePanel()->addThrottle(Br218), nullptr);
+        QTest::qWait(100);
+    }
+
+    // Every panel in front of its dock in turn: what needs a sideways scroll bar, what text is cut off.
+    QStringList problems() {
+        QStringList found;
+        for (QDockWidget* dock : window->workspace()->docks()) {
+            QWidget* panel = Workspace::panelOf(dock);
+            window->workspace()->showPanel(panel);
+            QTest::qWait(60);
+            found << sidewaysScrolling(dock);
+            for (const QWidget* widget : panel->findChildren<QWidget*>())
+                if (isShown(widget) && isCutOff(widget))
+                    found << QStringLiteral("%1 in %2 cuts off \"%3\" (%4 px wide)")
+                                 .arg(nameOf(widget), panel->objectName(), textOf(widget))
+                                 .arg(widget->width());
+            for (const TurnoutKey* key : panel->findChildren<TurnoutKey*>())
+                if (isShown(key) && key->isTextElided())
+                    found
+                        << QStringLiteral("key %1 shortens \"%2\"").arg(key->address()).arg(key->face().name);
+        }
+        return found;
+    }
+};
+
+} // namespace
+
+TEST_P(DeskFitTest, NoPanelScrollsSidewaysAndNoTextIsCutOff) {
+    const QStringList found = problems();
+    EXPECT_TRUE(found.isEmpty()) << found.join(QLatin1Char('\n')).toStdString();
+}
+
+TEST_P(DeskFitTest, TheKeyboardShowsItsFourColumns) {
+    const QList<TurnoutKey*> keys = window->turnoutPanel()->keys();
+    ASSERT_EQ(keys.size(), TurnoutPanel::KeysPerPage);
+    for (int column = 0; column < 4; ++column) {
+        const TurnoutKey* key = keys.at(column);
+        const QRect shown = key->visibleRegion().boundingRect();
+        EXPECT_EQ(shown.width(), key->width()) << "key " << key->address() << " is cut off at the side";
+    }
+    EXPECT_LT(keys.at(0)->mapTo(window.get(), QPoint()).y(), keys.at(4)->mapTo(window.get(), QPoint()).y())
+        << "the fifth key starts the second row";
+}
+
+TEST_P(DeskFitTest, AnAddedThrottleIsScrolledIntoSight) {
+    ThrottleWidget* second = window->throttlePanel()->addThrottle(V100);
+    ASSERT_NE(second, nullptr);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return isShown(second); }, 2000));
+    const QRect shown = second->visibleRegion().boundingRect();
+    EXPECT_EQ(shown.width(), second->width()) << "the new throttle is cut off at the side";
+    const ThrottleWidget* first = window->throttlePanel()->throttles().first();
+    const bool wide = deskSize().width() >= 1800;
+    EXPECT_EQ(first->y() == second->y(), wide) << "side by side on a wide screen, stacked on a laptop";
+}
+
+TEST_P(DeskFitTest, ThrottlesAndGaugesWrapAgainWhenTheirPanelGetsNarrower) {
+    ASSERT_NE(window->throttlePanel()->addThrottle(V100), nullptr);
+    QDockWidget* side = window->workspace()->dockOf(window->throttlePanel());
+    window->resizeDocks({side}, {window->throttlePanel()->widthFor(2)}, Qt::Horizontal);
+    QTest::qWait(60);
+    window->resizeDocks({side}, {window->throttlePanel()->widthFor(1)}, Qt::Horizontal);
+    QTest::qWait(60);
+    for (QWidget* panel :
+         {static_cast<QWidget*>(window->throttlePanel()), window->workspace()->panel("statusPanel")}) {
+        window->workspace()->showPanel(panel);
+        QTest::qWait(60);
+        const QStringList found = sidewaysScrolling(side);
+        EXPECT_TRUE(found.isEmpty()) << found.join(QLatin1Char('\n')).toStdString();
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(, DeskFitTest,
+                         ::testing::Combine(::testing::Values(QSize(1366, 768), QSize(1920, 1080)),
+                                            ::testing::Values(Language::English, Language::German)),
+                         [](const ::testing::TestParamInfo<Desk>& info) {
+                             const QSize size = std::get<0>(info.param);
+                             const bool german = std::get<1>(info.param) == Language::German;
+                             return std::to_string(size.width()) + "x" + std::to_string(size.height()) +
+                                    (german ? "German" : "English");
+                         });
