@@ -1,6 +1,7 @@
 # What several features share: the words and lamps for station state ("not reported", the status dots, the
 # track power line, the "layout stopped" banner), the railway's locomotives as a table, the row index of
-# such tables, two parts side by side or stacked as a panel's width allows, and where the remembered settings live.
+# such tables, the toolbars' icons, two parts side by side or stacked and widgets wrapping into rows as a
+# panel's width allows, and where the remembered settings live.
 target_sources(stellwerk-ui PRIVATE
     common/LayoutStateBanner.cpp common/LayoutStateBanner.h
     common/LocomotiveTableModel.cpp common/LocomotiveTableModel.h
@@ -10,5 +11,15 @@ target_sources(stellwerk-ui PRIVATE
     common/SideBySide.cpp common/SideBySide.h
     common/StatusDot.cpp common/StatusDot.h
     common/StellwerkSettings.h
+    common/ToolIcons.cpp common/ToolIcons.h
     common/WrappingGrid.cpp common/WrappingGrid.h
 )
+
+# The toolbars' drawings (resources/tool-icons), embedded as :/tool-icons/<name>.svg.
+set(stellwerk_tool_icons add-throttle connect export-layout fit open-layout station-plan zoom-in zoom-out)
+list(TRANSFORM stellwerk_tool_icons PREPEND ${PROJECT_SOURCE_DIR}/resources/tool-icons/)
+list(TRANSFORM stellwerk_tool_icons APPEND .svg)
+qt_add_resources(stellwerk-ui stellwerk_tool_icons
+    PREFIX /tool-icons
+    BASE ${PROJECT_SOURCE_DIR}/resources/tool-icons
+    FILES ${stellwerk_tool_icons})

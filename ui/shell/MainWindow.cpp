@@ -1,6 +1,7 @@
 #include "shell/MainWindow.h"
 
 #include "common/PowerStatus.h"
+#include "common/ToolIcons.h"
 #include "connect/ConnectDialog.h"
 #include "connect/ConnectionStatus.h"
 #include "connect/StartupProgress.h"
@@ -141,6 +142,7 @@ void MainWindow::createToolBar() {
     m_toolBar = addToolBar(QString());
     m_toolBar->setObjectName(QStringLiteral("mainToolBar"));
     m_toolBar->setMovable(false);
+    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     m_toolBar->toggleViewAction()->setEnabled(false);
     m_stopGo = new StopGoButton(m_toolBar);
     m_toolBar->addWidget(m_stopGo);
@@ -170,6 +172,7 @@ void MainWindow::createStationMenu() {
     m_stationMenu->setObjectName(QStringLiteral("stationMenu"));
     m_connectAction = m_stationMenu->addAction(QString(), this, &MainWindow::showConnectDialog);
     m_connectAction->setObjectName(QStringLiteral("connectAction"));
+    ToolIcons::apply(m_connectAction, ToolIcons::Tool::Connect, *this);
     m_toolBar->addSeparator();
     m_toolBar->addAction(m_connectAction);
     m_stationMenu->addSeparator();

@@ -1,10 +1,8 @@
 #include "throttle/FunctionIcons.h"
 
+#include "common/ToolIcons.h"
+
 #include <QColor>
-#include <QImage>
-#include <QImageReader>
-#include <QPainter>
-#include <QPixmap>
 #include <array>
 #include <utility>
 
@@ -133,21 +131,8 @@ QString FunctionIcons::name(FunctionKind kind) {
 
 QIcon FunctionIcons::icon(FunctionKind kind, const QColor& color, int size) {
     const QString path = resourcePath(kind);
-    if (path.isEmpty())
-        return {};
-    // Read through Qt's SVG image plugin (libqt6svg6, which the application icon needs as well).
-    QImageReader reader(path);
-    reader.setScaledSize(QSize(size, size));
-    QImage image = reader.read();
-    if (image.isNull())
-        return {};
-    image = image.convertToFormat(QImage::Format_ARGB32_Premultiplied);
-    // The drawings are black; paint them over in the palette's colour.
-    QPainter painter(&image);
-    painter.setCompositionMode(QPainter::CompositionMode_SourceIn);
-    painter.fillRect(image.rect(), color);
-    painter.end();
-    return QIcon(QPixmap::fromImage(image));
+    // The drawings are black; they are painted over in the palette's colour.
+    return path.isEmpty() ? QIcon() : ToolIcons::tinted(path, color, size);
 }
 
 } // namespace stellwerk::ui

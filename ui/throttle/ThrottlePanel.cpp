@@ -1,6 +1,7 @@
 #include "throttle/ThrottlePanel.h"
 
 #include "common/LayoutStateBanner.h"
+#include "common/ToolIcons.h"
 #include "common/WrappingGrid.h"
 #include "model/Railway.h"
 #include "throttle/ThrottleSettings.h"
@@ -26,6 +27,7 @@ ThrottlePanel::ThrottlePanel(QWidget* parent) : QWidget(parent) {
     m_add = new QPushButton(this);
     m_add->setObjectName(QStringLiteral("addThrottle"));
     m_add->setFocusPolicy(Qt::NoFocus);
+    m_add->setIcon(ToolIcons::icon(ToolIcons::Tool::AddThrottle, palette().color(QPalette::ButtonText)));
     connect(m_add, &QPushButton::clicked, this, [this] {
         if (ThrottleWidget* throttle = addThrottle())
             throttle->locomotiveChoice()->setFocus();

@@ -2,6 +2,7 @@
 
 #include "common/LayoutStateBanner.h"
 #include "common/NotReported.h"
+#include "common/ToolIcons.h"
 #include "connection/StationConnection.h"
 #include "model/Railway.h"
 #include "trackplan/PageZoom.h"
@@ -17,9 +18,11 @@
 #include <QScrollBar>
 #include <QTabWidget>
 #include <QToolBar>
+#include <QToolButton>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 namespace stellwerk::ui {
 namespace {
@@ -54,9 +57,13 @@ TrackPlanPanel::TrackPlanPanel(QWidget* parent) : QWidget(parent) {
     for (QAction* action : {m_zoomIn, m_zoomOut, m_fit})
         action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     m_toolBar->addSeparator();
-    m_source = new QLabel(m_toolBar);
-    m_source->setObjectName(QStringLiteral("trackPlanSource"));
-    m_toolBar->addWidget(m_source);
+    // Files and the station's plan say what they do; the zoom keys are known by their drawings.
+    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_toolBar->setIconSize(QSize(20, 20));
+    for (QAction* action : {m_zoomIn, m_zoomOut, m_fit})
+        static_cast<QToolButton*>(m_toolBar->widgetForAction(action))
+            ->setToolButtonStyle(Qt::ToolButtonIconOnly);
+    updateIcons();
     layout->addWidget(m_toolBar);
 
     m_banner = new QLabel(this);
@@ -78,6 +85,12 @@ TrackPlanPanel::TrackPlanPanel(QWidget* parent) : QWidget(parent) {
     m_tabs = new QTabWidget(this);
     m_tabs->setObjectName(QStringLiteral("trackPlanPages"));
     m_tabs->setDocumentMode(true);
+    // Where the plan is from, beside its pages: a remark in grey, not a button.
+    m_source = new QLabel(m_tabs);
+    m_source->setObjectName(QStringLiteral("trackPlanSource"));
+    m_source->setForegroundRole(QPalette::PlaceholderText);
+    m_source->setContentsMargins(8, 0, 8, 0);
+    m_tabs->setCornerWidget(m_source, Qt::TopRightCorner);
     layout->addWidget(m_tabs, 1);
     retranslate();
     rebuild();
@@ -439,20 +452,38 @@ void TrackPlanPanel::retranslate() {
     m_zoomIn->setText(tr("Zoom in"));
     m_zoomOut->setText(tr("Zoom out"));
     m_fit->setText(tr("Fit"));
+    for (QAction* action : {m_zoomIn, m_zoomOut, m_fit})
+        action->setToolTip(QStringLiteral("%1 (%2)").arg(
+            action->text(), action->shortcut().toString(QKeySequence::NativeText)));
     m_emptyText->setText(tr("No track plan: connect to a station or open a CS2 layout folder."));
-    if (m_folder)
-        m_source->setText(tr("Files: %1").arg(QString::fromStdString(m_folder->configDirectory.string())));
-    else
-        m_source->setText(m_railway ? tr("Live from the station") : QString());
+    // A folder by its name (the one holding config/), the whole path in the tooltip.
+    const std::filesystem::path config = m_folder ? m_folder->configDirectory : std::filesystem::path();
+    m_source->setText(
+        m_folder    ? tr("Files: %1").arg(QString::fromStdString(config.parent_path().filename().string()))
+        : m_railway ? tr("Live from the station")
+                    : QString());
+    m_source->setToolTip(QString::fromStdString(config.string()));
     if (m_layout)
         for (int i = 0; i < m_tabs->count(); ++i)
             if (m_layout->pages()[std::size_t(i)].name.isEmpty())
                 m_tabs->setTabText(i, tr("Page %1").arg(m_layout->pages()[std::size_t(i)].id));
 }
 
+void TrackPlanPanel::updateIcons() {
+    using Tool = ToolIcons::Tool;
+    ToolIcons::apply(m_open, Tool::OpenLayout, *this);
+    ToolIcons::apply(m_station, Tool::StationPlan, *this);
+    ToolIcons::apply(m_export, Tool::ExportLayout, *this);
+    ToolIcons::apply(m_zoomOut, Tool::ZoomOut, *this);
+    ToolIcons::apply(m_zoomIn, Tool::ZoomIn, *this);
+    ToolIcons::apply(m_fit, Tool::Fit, *this);
+}
+
 void TrackPlanPanel::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange)
         retranslate();
+    if (event->type() == QEvent::PaletteChange)
+        updateIcons();
     QWidget::changeEvent(event);
 }
 

@@ -110,6 +110,7 @@ private:
     void showProblem(const QString& text);
     QString findingsText(const std::vector<cs2config::LayoutFinding>& findings) const;
     void updateActions();
+    void updateIcons();
     void retranslate();
 
     QPointer<model::Railway> m_railway;

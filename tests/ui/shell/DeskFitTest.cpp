@@ -16,6 +16,9 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QStringList>
+#include <QToolBar>
+#include <QToolButton>
+#include <QWidgetAction>
 #include <tuple>
 
 using namespace stellwerk;
@@ -123,6 +126,24 @@ protected:
 TEST_P(DeskFitTest, NoPanelScrollsSidewaysAndNoTextIsCutOff) {
     const QStringList found = problems();
     EXPECT_TRUE(found.isEmpty()) << found.join(QLatin1Char('\n')).toStdString();
+}
+
+TEST_P(DeskFitTest, ToolbarsShowEveryButtonWithItsDrawing) {
+    const QList<QToolBar*> bars = window->findChildren<QToolBar*>();
+    ASSERT_GE(bars.size(), 2) << "the window's and the plan's";
+    for (const QToolBar* bar : bars) {
+        const auto* more = bar->findChild<QToolButton*>(QStringLiteral("qt_toolbar_ext_button"));
+        EXPECT_TRUE(!more || !more->isVisible()) << nameOf(bar).toStdString() << " hides buttons behind »";
+        for (QAction* action : bar->actions()) {
+            const auto* button = qobject_cast<QToolButton*>(bar->widgetForAction(action));
+            if (!button || !action->isVisible() || qobject_cast<QWidgetAction*>(action))
+                continue; // separators, and widgets of their own such as the STOP key
+            EXPECT_FALSE(action->icon().isNull()) << action->text().toStdString() << " has no drawing";
+            if (button->toolButtonStyle() == Qt::ToolButtonIconOnly) {
+                EXPECT_TRUE(action->toolTip().contains(action->text())) << "a drawing alone names itself";
+            }
+        }
+    }
 }
 
 TEST_P(DeskFitTest, TheKeyboardShowsItsFourColumns) {
