@@ -878,6 +878,17 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::FoundDecoders</name>
+    <message>
+        <source>mfx UID</source>
+        <translation>mfx-UID</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::FrameDecoderPanel</name>
     <message>
         <source>unreadable</source>
@@ -1792,14 +1803,6 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <translation>Die Zentrale sucht auf dem Gleis einen mfx-Decoder, der noch nicht angemeldet ist</translation>
     </message>
     <message>
-        <source>mfx UID</source>
-        <translation>mfx-UID</translation>
-    </message>
-    <message>
-        <source>State</source>
-        <translation>Zustand</translation>
-    </message>
-    <message>
         <source>SID:</source>
         <translation>SID:</translation>
     </message>
@@ -1890,6 +1893,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Write</source>
         <translation>CV schreiben</translation>
+    </message>
+    <message>
+        <source>Registered mfx decoder %1 on SID %2. It is a locomotive of the list now: name it and save it there; search again for more.</source>
+        <translation>mfx-Decoder %1 auf SID %2 angemeldet. Er steht jetzt in der Lokliste: dort benennen und speichern; für weitere erneut suchen.</translation>
     </message>
 </context>
 <context>

@@ -875,6 +875,17 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::FoundDecoders</name>
+    <message>
+        <source>mfx UID</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::FrameDecoderPanel</name>
     <message>
         <source>unreadable</source>
@@ -1789,14 +1800,6 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>mfx UID</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>State</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>SID:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1886,6 +1889,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Write</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Registered mfx decoder %1 on SID %2. It is a locomotive of the list now: name it and save it there; search again for more.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

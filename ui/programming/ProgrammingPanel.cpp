@@ -2,6 +2,7 @@
 
 #include "common/SideBySide.h"
 #include "model/Railway.h"
+#include "programming/FoundDecoders.h"
 #include "programming/ProgrammingResultText.h"
 
 #include <QCheckBox>
@@ -39,10 +40,6 @@ enum Label {
     LabelCount
 };
 
-QString uidText(std::uint32_t uid) {
-    return QStringLiteral("0x%1").arg(uid, 8, 16, QLatin1Char('0'));
-}
-
 template <class T>
 T* named(T* widget, const char* name) {
     widget->setObjectName(QLatin1String(name));
@@ -70,12 +67,7 @@ QGroupBox* ProgrammingPanel::buildRegistration() {
     m_progress->setFormat(QStringLiteral("%v / %m"));
     m_searchText = named(new QLabel(m_registration), "searchText");
     m_searchText->setWordWrap(true);
-    m_decoders = named(new QTableWidget(0, 2, m_registration), "foundDecoders");
-    m_decoders->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_decoders->setSelectionMode(QAbstractItemView::SingleSelection);
-    m_decoders->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_decoders->verticalHeader()->hide();
-    m_decoders->horizontalHeader()->setStretchLastSection(true);
+    m_decoders = new FoundDecoders(m_registration);
     m_sidLabel = new QLabel(m_registration);
     m_sid = named(new QSpinBox(m_registration), "bindSid");
     m_sid->setRange(1, Limits::MaxSid);
@@ -196,10 +188,10 @@ void ProgrammingPanel::setRailway(model::Railway* railway) {
                 &ProgrammingPanel::progressed);
         connect(&m_railway->programmer(), &model::Programmer::finished, this, &ProgrammingPanel::finished);
     }
-    m_decoders->setRowCount(0);
+    m_decoders->clearDecoders();
     m_progress->setValue(0);
-    m_searchText->clear();
-    m_result->clear();
+    instruct({});
+    showResult({}, false);
     fillLocomotives();
     updateEnabled();
 }
@@ -280,25 +272,26 @@ void ProgrammingPanel::search() {
         return;
     m_searchFailed = false;
     m_progress->setValue(0);
-    m_searchText->setText(tr("Searching the track for new mfx decoders…"));
+    instruct([] { return tr("Searching the track for new mfx decoders…"); });
     m_railway->programmer().discover();
     updateEnabled();
 }
 
 void ProgrammingPanel::progressed(int range, quint32 uidSoFar) {
     m_progress->setValue(range);
-    m_searchText->setText(tr("Searching: %1 of %2 bits of the decoder's UID known (%3)")
-                              .arg(range)
-                              .arg(model::Programmer::DiscoverySteps)
-                              .arg(uidText(uidSoFar)));
+    instruct([range, uidSoFar] {
+        return tr("Searching: %1 of %2 bits of the decoder's UID known (%3)")
+            .arg(range)
+            .arg(model::Programmer::DiscoverySteps)
+            .arg(FoundDecoders::uidText(uidSoFar));
+    });
 }
 
 void ProgrammingPanel::registerDecoder() {
-    const QList<QTableWidgetItem*> selected = m_decoders->selectedItems();
-    if (!m_railway || selected.isEmpty())
+    const std::optional<std::uint32_t> uid = m_decoders->selectedUid();
+    if (!m_railway || !uid)
         return;
-    const auto uid = std::uint32_t(m_decoders->item(selected.first()->row(), 0)->data(Qt::UserRole).toUInt());
-    m_railway->programmer().bind(uid, std::uint16_t(m_sid->value()));
+    m_railway->programmer().bind(*uid, std::uint16_t(m_sid->value()));
     updateEnabled();
 }
 
@@ -307,10 +300,10 @@ void ProgrammingPanel::readCv() {
     if (!m_railway)
         return;
     if (!cv) {
-        showResult(tr("This address does not exist for the chosen protocol."), true);
+        showResult([] { return tr("This address does not exist for the chosen protocol."); }, true);
         return;
     }
-    showResult(tr("Reading CV %1…").arg(cv->cv), false);
+    showResult([number = cv->cv] { return tr("Reading CV %1…").arg(number); }, false);
     m_railway->programmer().readCv(*cv);
     updateEnabled();
 }
@@ -320,7 +313,7 @@ void ProgrammingPanel::writeCv() {
     if (!m_railway)
         return;
     if (!cv) {
-        showResult(tr("This address does not exist for the chosen protocol."), true);
+        showResult([] { return tr("This address does not exist for the chosen protocol."); }, true);
         return;
     }
     model::CvWrite write;
@@ -331,7 +324,7 @@ void ProgrammingPanel::writeCv() {
                       : std::uint8_t(m_value->value());
     write.track =
         m_track->currentIndex() == 1 ? model::ProgrammingTrack::Main : model::ProgrammingTrack::Programming;
-    showResult(tr("Writing CV %1…").arg(cv->cv), false);
+    showResult([number = cv->cv] { return tr("Writing CV %1…").arg(number); }, false);
     m_railway->programmer().writeCv(write);
     updateEnabled();
 }
@@ -350,14 +343,14 @@ void ProgrammingPanel::finished(const model::ProgrammingResult& result) {
     case Task::ReadCv:
         if (result.succeeded() && result.value)
             m_value->setValue(*result.value); // ready to be changed and written back
-        showResult(result.succeeded() ? ProgrammingResultText::cv(result)
-                                      : ProgrammingResultText::failure(result),
-                   !result.succeeded());
-        break;
+        [[fallthrough]];
     case Task::WriteCv:
-        showResult(result.succeeded() ? ProgrammingResultText::cv(result)
-                                      : ProgrammingResultText::failure(result),
-                   !result.succeeded());
+        showResult(
+            [result] {
+                return result.succeeded() ? ProgrammingResultText::cv(result)
+                                          : ProgrammingResultText::failure(result);
+            },
+            !result.succeeded());
         break;
     }
     updateEnabled();
@@ -367,57 +360,62 @@ void ProgrammingPanel::discoveryFinished(const model::ProgrammingResult& result)
     m_searchFailed = !result.succeeded() && result.outcome != Outcome::NotFound;
     if (result.outcome == Outcome::NotFound) {
         m_progress->setValue(m_progress->maximum());
-        m_searchText->setText(
-            tr("No new mfx decoder answered. Decoders that are registered already take no part."));
+        instruct([] {
+            return tr("No new mfx decoder answered. Decoders that are registered already take no part.");
+        });
         return;
     }
     if (!result.succeeded()) {
-        m_searchText->setText(ProgrammingResultText::failure(result));
+        instruct([result] { return ProgrammingResultText::failure(result); });
         return;
     }
-    showDecoder(result.mfxUid, tr("found"));
-    m_searchText->setText(tr("Found mfx decoder %1. Choose a SID and press Register; search again for more.")
-                              .arg(uidText(result.mfxUid)));
+    m_decoders->show(result.mfxUid, [] { return tr("found"); });
+    instruct([uid = result.mfxUid] {
+        return tr("Found mfx decoder %1. Choose a SID and press Register; search again for more.")
+            .arg(FoundDecoders::uidText(uid));
+    });
     m_sid->setValue(suggestedSid());
 }
 
 void ProgrammingPanel::bindFinished(const model::ProgrammingResult& result) {
     if (!result.succeeded()) {
-        showDecoder(result.mfxUid, ProgrammingResultText::failure(result));
+        m_decoders->show(result.mfxUid, [result] { return ProgrammingResultText::failure(result); });
         return;
     }
-    showDecoder(result.mfxUid, tr("bound to SID %1, verifying…").arg(result.sid));
+    m_decoders->show(result.mfxUid,
+                     [sid = result.sid] { return tr("bound to SID %1, verifying…").arg(sid); });
     if (m_railway)
         m_railway->programmer().verify(result.mfxUid, result.sid);
 }
 
 void ProgrammingPanel::verifyFinished(const model::ProgrammingResult& result) {
     if (!result.succeeded()) {
-        showDecoder(result.mfxUid, result.outcome == Outcome::Refused
-                                       ? tr("does not answer under SID %1").arg(result.sid)
-                                       : ProgrammingResultText::failure(result));
+        m_decoders->show(result.mfxUid, [result] {
+            return result.outcome == Outcome::Refused ? tr("does not answer under SID %1").arg(result.sid)
+                                                      : ProgrammingResultText::failure(result);
+        });
         return;
     }
-    showDecoder(result.mfxUid, tr("registered on SID %1").arg(result.sid));
+    m_decoders->show(result.mfxUid, [sid = result.sid] { return tr("registered on SID %1").arg(sid); });
+    instruct([result] {
+        return tr("Registered mfx decoder %1 on SID %2. It is a locomotive of the list now: name it and save "
+                  "it there; search again for more.")
+            .arg(FoundDecoders::uidText(result.mfxUid))
+            .arg(result.sid);
+    });
     m_lastBoundSid = std::max(m_lastBoundSid, result.sid);
     m_sid->setValue(suggestedSid());
     emit decoderBound(result.mfxUid, result.sid);
 }
 
-void ProgrammingPanel::showDecoder(std::uint32_t mfxUid, const QString& state) {
-    int row = 0;
-    while (row < m_decoders->rowCount() && m_decoders->item(row, 0)->data(Qt::UserRole).toUInt() != mfxUid)
-        ++row;
-    if (row == m_decoders->rowCount()) {
-        m_decoders->insertRow(row);
-        auto* uid = new QTableWidgetItem(uidText(mfxUid));
-        uid->setData(Qt::UserRole, mfxUid);
-        m_decoders->setItem(row, 0, uid);
-        m_decoders->setItem(row, 1, new QTableWidgetItem);
-        m_decoders->selectRow(row);
-    }
-    m_decoders->item(row, 1)->setText(state);
-    m_decoders->resizeColumnToContents(0);
+// The text above the found decoders: what happens, what to do next; made again in another language.
+void ProgrammingPanel::instruct(std::function<QString()> text) {
+    m_instruction = std::move(text);
+    m_searchText->setText(m_instruction ? m_instruction() : QString());
+}
+
+QTableWidget* ProgrammingPanel::decoderTable() const {
+    return m_decoders;
 }
 
 QString ProgrammingPanel::searchText() const {
@@ -428,8 +426,9 @@ QString ProgrammingPanel::resultText() const {
     return m_result->text();
 }
 
-void ProgrammingPanel::showResult(const QString& text, bool problem) {
-    m_result->setText(text);
+void ProgrammingPanel::showResult(std::function<QString()> text, bool problem) {
+    m_resultSaid = std::move(text);
+    m_result->setText(m_resultSaid ? m_resultSaid() : QString());
     m_result->setStyleSheet(problem ? QStringLiteral("QLabel { color: #c82c2c; font-weight: bold; }")
                                     : QStringLiteral("QLabel { font-weight: bold; }"));
 }
@@ -450,7 +449,7 @@ void ProgrammingPanel::updateEnabled() {
     m_read->setEnabled(ready);
     m_write->setEnabled(ready);
     if (!m_railway)
-        m_searchText->setText(tr("No station connected."));
+        instruct([] { return tr("No station connected."); });
 }
 
 void ProgrammingPanel::changeEvent(QEvent* event) {
@@ -464,7 +463,6 @@ void ProgrammingPanel::retranslate() {
     m_programming->setTitle(tr("CV programming"));
     m_search->setText(tr("Search"));
     m_search->setToolTip(tr("The station searches the track for one mfx decoder that is not registered yet"));
-    m_decoders->setHorizontalHeaderLabels({tr("mfx UID"), tr("State")});
     m_sidLabel->setText(tr("SID:"));
     m_register->setText(tr("Register"));
     m_register->setToolTip(tr("Binds the selected decoder to the SID, then checks that it answers"));
@@ -488,6 +486,9 @@ void ProgrammingPanel::retranslate() {
         m_locomotive->setItemText(0, tr("(address below)"));
     protocolChosen();
     updateEnabled();
+    instruct(m_instruction);
+    if (m_resultSaid)
+        m_result->setText(m_resultSaid());
 }
 
 } // namespace stellwerk::ui

@@ -5,6 +5,7 @@
 #include <QPointer>
 #include <QWidget>
 #include <cstdint>
+#include <functional>
 #include <optional>
 
 class QCheckBox;
@@ -27,6 +28,8 @@ namespace stellwerk::ui {
 // progress), register a found one on a free SID (bind, then verify), and read or write a decoder's CVs
 // on the programming or main track, showing the value or why there is none. One command at a time, as
 // the station takes them.
+class FoundDecoders;
+
 class ProgrammingPanel final : public QWidget {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(ProgrammingPanel)
@@ -39,7 +42,7 @@ public:
 
     QPushButton* searchButton() const { return m_search; }
     QProgressBar* searchProgress() const { return m_progress; }
-    QTableWidget* decoderTable() const { return m_decoders; }
+    QTableWidget* decoderTable() const;
     QSpinBox* sidBox() const { return m_sid; }
     QPushButton* registerButton() const { return m_register; }
     QComboBox* locomotiveBox() const { return m_locomotive; }
@@ -81,8 +84,8 @@ private:
     void discoveryFinished(const model::ProgrammingResult& result);
     void bindFinished(const model::ProgrammingResult& result);
     void verifyFinished(const model::ProgrammingResult& result);
-    void showDecoder(std::uint32_t mfxUid, const QString& state);
-    void showResult(const QString& text, bool problem);
+    void instruct(std::function<QString()> text);
+    void showResult(std::function<QString()> text, bool problem);
     std::optional<model::CvTarget> target() const;
     std::uint16_t suggestedSid() const;
     void updateEnabled();
@@ -94,7 +97,8 @@ private:
     QPushButton* m_search = nullptr;
     QProgressBar* m_progress = nullptr;
     QLabel* m_searchText = nullptr;
-    QTableWidget* m_decoders = nullptr;
+    std::function<QString()> m_instruction;
+    FoundDecoders* m_decoders = nullptr;
     QLabel* m_sidLabel = nullptr;
     QSpinBox* m_sid = nullptr;
     QPushButton* m_register = nullptr;
@@ -112,6 +116,7 @@ private:
     QPushButton* m_read = nullptr;
     QPushButton* m_write = nullptr;
     QLabel* m_result = nullptr;
+    std::function<QString()> m_resultSaid;
     QList<QLabel*> m_labels; // the form's labels, named in retranslate()
     std::uint16_t m_lastBoundSid = 0;
     bool m_searchFailed = false;

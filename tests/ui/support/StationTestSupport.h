@@ -46,6 +46,8 @@ inline std::uint16_t closedTcpPort() {
 class TestStation {
 public:
     TestStation() : station_(sim::StationLayout::demo()) {}
+    explicit TestStation(sim::SimulatedStation::Options options)
+        : station_(sim::StationLayout::demo(), options) {}
 
     // Listens on `port` (0: a free one; a station "back" after a stop takes its old port again).
     bool start(std::uint16_t port = 0) {

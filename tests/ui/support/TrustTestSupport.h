@@ -10,6 +10,7 @@
 #include "shell/MainWindow.h"
 #include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
+#include "sim/EmbeddedStation.h"
 #include "support/StationTestSupport.h"
 
 #include <QTest>
@@ -91,8 +92,15 @@ protected:
                                3 * CommandMs);
     }
 
+    // Like the embedded station: a new mfx decoder waits on the track to be found.
+    static sim::SimulatedStation::Options deskStation() {
+        sim::SimulatedStation::Options options;
+        options.newMfxDecoders = {sim::EmbeddedStation::NewMfxDecoder};
+        return options;
+    }
+
     Translations translations;
-    TestStation server;
+    TestStation server{deskStation()};
     connection::StationConnection connection{
         support::withEmbeddedStation()}; // outlives the railway and the window
     std::unique_ptr<MainWindow> window;
