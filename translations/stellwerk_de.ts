@@ -2041,12 +2041,20 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <translation>Keine Zentrale verbunden: Die Fahrpulte fahren, sobald eine Zentrale bereit ist.</translation>
     </message>
     <message>
-        <source>No throttle open. “Add throttle” opens one for a locomotive.</source>
-        <translation>Kein Fahrpult offen. „Fahrpult hinzufügen“ öffnet eines für eine Lok.</translation>
-    </message>
-    <message>
         <source>Alt+1…9: drive with the keyboard</source>
         <translation>Alt+1…9: mit der Tastatur fahren</translation>
+    </message>
+    <message>
+        <source>Drive %1 (running)</source>
+        <translation>%1 fahren (fährt)</translation>
+    </message>
+    <message>
+        <source>Drive %1</source>
+        <translation>%1 fahren</translation>
+    </message>
+    <message>
+        <source>No throttle open. Open one for a locomotive below, or with “Add throttle”.</source>
+        <translation>Kein Fahrpult offen. Unten eines für eine Lok öffnen oder mit „Fahrpult hinzufügen“.</translation>
     </message>
 </context>
 <context>

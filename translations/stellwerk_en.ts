@@ -2038,11 +2038,19 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>No throttle open. “Add throttle” opens one for a locomotive.</source>
+        <source>Alt+1…9: drive with the keyboard</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Alt+1…9: drive with the keyboard</source>
+        <source>Drive %1 (running)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drive %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No throttle open. Open one for a locomotive below, or with “Add throttle”.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

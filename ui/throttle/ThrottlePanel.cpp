@@ -17,6 +17,7 @@
 #include <QStyle>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace stellwerk::ui {
 
@@ -44,10 +45,14 @@ ThrottlePanel::ThrottlePanel(QWidget* parent) : QWidget(parent) {
 
     m_emptyText = new QLabel(this);
     m_emptyText->setObjectName(QStringLiteral("throttlesEmpty"));
-    m_emptyText->setAlignment(Qt::AlignCenter);
+    m_emptyText->setAlignment(Qt::AlignHCenter | Qt::AlignBottom); // just above the offers
     m_emptyText->setEnabled(false);
     m_emptyText->setWordWrap(true); // a narrow dock must not cut the sentence off
     layout->addWidget(m_emptyText, 1);
+    m_offers = new QWidget(this);
+    m_offers->setObjectName(QStringLiteral("driveOffers"));
+    new QVBoxLayout(m_offers);
+    layout->addWidget(m_offers);
 
     m_scroll = new QScrollArea(this);
     m_scroll->setWidgetResizable(true);
@@ -55,6 +60,7 @@ ThrottlePanel::ThrottlePanel(QWidget* parent) : QWidget(parent) {
     m_rack = new WrappingGrid(m_scroll);
     m_scroll->setWidget(m_rack);
     layout->addWidget(m_scroll, 1);
+    layout->addStretch(0); // the room below the offers while no throttle is open
 
     createShortcuts();
     m_restoring = true;
@@ -73,7 +79,13 @@ void ThrottlePanel::createShortcuts() {
 }
 
 void ThrottlePanel::setRailway(model::Railway* railway) {
+    if (m_railway)
+        disconnect(m_railway, nullptr, this, nullptr);
     m_railway = railway;
+    if (m_railway) {
+        connect(m_railway, &model::Railway::loaded, this, &ThrottlePanel::updateOffers);
+        connect(m_railway, &model::Railway::locomotivesChanged, this, &ThrottlePanel::updateOffers);
+    }
     m_banner->setRailway(railway);
     for (ThrottleWidget* throttle : m_throttles)
         throttle->setRailway(railway);
@@ -150,9 +162,48 @@ void ThrottlePanel::updateEmptyState() {
     m_add->setEnabled(m_throttles.size() < ThrottleSettings::MaximumThrottles);
     m_emptyText->setVisible(!m_railway || m_throttles.isEmpty());
     m_scroll->setVisible(!m_throttles.isEmpty());
-    // Alone, the text sits in the middle of the page; above throttles, it is one line.
-    static_cast<QBoxLayout*>(layout())->setStretchFactor(m_emptyText, m_throttles.isEmpty() ? 1 : 0);
+    // Alone, the text and the offers below it sit in the middle of the page (the spare height above the text
+    // and below the offers, the last item); above throttles, the text is one line.
+    auto* box = static_cast<QBoxLayout*>(layout());
+    box->setStretchFactor(m_emptyText, m_throttles.isEmpty() ? 1 : 0);
+    box->setStretch(box->count() - 1, m_throttles.isEmpty() ? 1 : 0);
     retranslate();
+    updateOffers();
+}
+
+// With no throttle open, a newcomer gets a button per locomotive to drive: the running ones first.
+void ThrottlePanel::updateOffers() {
+    QList<const model::Locomotive*> offered;
+    if (m_railway && m_throttles.isEmpty()) {
+        for (const model::Locomotive& loco : m_railway->state().locomotives().items())
+            offered.push_back(&loco);
+        std::stable_sort(
+            offered.begin(), offered.end(),
+            [](const model::Locomotive* a, const model::Locomotive* b) { return a->speed() > b->speed(); });
+        offered = offered.mid(0, MaximumOffers);
+    }
+    while (m_driveButtons.size() > offered.size())
+        delete m_driveButtons.takeLast();
+    while (m_driveButtons.size() < offered.size()) {
+        auto* button = new QPushButton(m_offers);
+        button->setObjectName(QStringLiteral("driveLocomotive"));
+        m_offers->layout()->addWidget(button);
+        m_driveButtons.push_back(button);
+    }
+    for (qsizetype i = 0; i < offered.size(); ++i)
+        offer(m_driveButtons[i], *offered[i]);
+    m_offers->setVisible(!offered.isEmpty());
+}
+
+void ThrottlePanel::offer(QPushButton* button, const model::Locomotive& loco) {
+    const quint32 uid = loco.id().value();
+    button->setText(loco.speed() > 0 ? tr("Drive %1 (running)").arg(loco.displayName())
+                                     : tr("Drive %1").arg(loco.displayName()));
+    button->disconnect(this);
+    connect(button, &QPushButton::clicked, this, [this, uid] {
+        if (ThrottleWidget* throttle = addThrottle(uid))
+            throttle->setFocus(Qt::OtherFocusReason);
+    });
 }
 
 void ThrottlePanel::retranslate() {
@@ -164,7 +215,8 @@ void ThrottlePanel::retranslate() {
     m_keysHint->setToolTip(tr("Alt+1…9: keyboard on a throttle · Up/Down or +/−: speed · R: direction · "
                               "0–9: F0–F9 · E: stop this loco · Space stays STOP for the layout"));
     m_emptyText->setText(!m_railway ? tr("No station connected: throttles drive once a station is ready.")
-                                    : tr("No throttle open. “Add throttle” opens one for a locomotive."));
+                                    : tr("No throttle open. Open one for a locomotive below, or with “Add "
+                                         "throttle”."));
 }
 
 void ThrottlePanel::changeEvent(QEvent* event) {

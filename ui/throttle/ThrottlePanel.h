@@ -10,8 +10,9 @@ class QPushButton;
 class QScrollArea;
 
 namespace stellwerk::model {
+class Locomotive;
 class Railway;
-}
+} // namespace stellwerk::model
 
 namespace stellwerk::ui {
 
@@ -27,6 +28,9 @@ class ThrottlePanel final : public QWidget {
     Q_DISABLE_COPY_MOVE(ThrottlePanel)
 
 public:
+    // How many locomotives the empty page offers to drive.
+    static constexpr int MaximumOffers = 4;
+
     explicit ThrottlePanel(QWidget* parent = nullptr);
 
     // The railway whose locomotives the throttles drive (null: none).
@@ -40,6 +44,8 @@ public:
     bool focusThrottle(int number);
     // What the page says while it has nothing to drive; empty while throttles drive.
     QString emptyText() const;
+    // The buttons that open a throttle on a locomotive while none is open (running ones first).
+    const QList<QPushButton*>& driveOffers() const { return m_driveButtons; }
     // The width that shows `columns` throttles side by side without scrolling sideways.
     int widthFor(int columns) const;
     // Says when the layout is stopped, halted or not reported; hidden while trains may run.
@@ -53,6 +59,8 @@ private:
     void renumber();
     void save();
     void updateEmptyState();
+    void updateOffers();
+    void offer(QPushButton* button, const model::Locomotive& loco);
     void retranslate();
 
     QPointer<model::Railway> m_railway;
@@ -61,6 +69,8 @@ private:
     QLabel* m_keysHint;
     LayoutStateBanner* m_banner;
     QLabel* m_emptyText;
+    QWidget* m_offers;
+    QList<QPushButton*> m_driveButtons;
     QScrollArea* m_scroll;
     WrappingGrid* m_rack;
     bool m_restoring = false;

@@ -287,7 +287,8 @@ TEST_F(ThrottlePanelTest, SaysWhatToDoWhileThereIsNothingToDrive) {
     EXPECT_TRUE(panel.emptyText().startsWith(QStringLiteral("No station connected")))
         << panel.emptyText().toStdString();
     panel.setRailway(railways.railway());
-    EXPECT_TRUE(panel.emptyText().startsWith(QStringLiteral("No throttle open")))
+    EXPECT_TRUE(
+        panel.emptyText().startsWith(QStringLiteral("No throttle open. Open one for a locomotive below")))
         << panel.emptyText().toStdString();
     ThrottleWidget* throttle = panel.addThrottle();
     EXPECT_EQ(panel.emptyText(), QString());
@@ -295,6 +296,30 @@ TEST_F(ThrottlePanelTest, SaysWhatToDoWhileThereIsNothingToDrive) {
     EXPECT_FALSE(throttle->speedSlider()->isEnabled()) << "nothing to drive yet";
     panel.removeThrottle(throttle);
     EXPECT_TRUE(panel.emptyText().startsWith(QStringLiteral("No throttle open")));
+}
+
+TEST_F(ThrottlePanelTest, ANewcomerIsOfferedTheRunningLocomotivesToDrive) {
+    ThrottlePanel panel;
+    EXPECT_TRUE(panel.driveOffers().isEmpty()) << "nothing to offer without a station";
+    panel.setRailway(railways.railway());
+    panel.show();
+    ASSERT_EQ(panel.driveOffers().size(), ThrottlePanel::MaximumOffers);
+    // A running locomotive comes first (the list starts with BR 218, which stands here).
+    railways.railway()->setSpeed(V100, 300);
+    ASSERT_TRUE(waitFor([&] {
+        return panel.driveOffers()[0]->text() == QStringLiteral("Drive V 100 2023 (running)");
+    })) << panel.driveOffers()[0]->text().toStdString();
+    for (qsizetype i = 1; i < panel.driveOffers().size(); ++i)
+        EXPECT_FALSE(panel.driveOffers()[i]->text().endsWith(QStringLiteral("(running)")))
+            << panel.driveOffers()[i]->text().toStdString();
+    EXPECT_TRUE(panel.driveOffers()[0]->isVisible());
+
+    panel.driveOffers()[0]->click();
+    ASSERT_EQ(panel.throttles().size(), 1);
+    EXPECT_EQ(panel.throttles().first()->locomotive(), V100);
+    EXPECT_TRUE(panel.driveOffers().isEmpty()) << "a throttle is open: no more offers";
+    panel.removeThrottle(panel.throttles().first());
+    EXPECT_EQ(panel.driveOffers().size(), ThrottlePanel::MaximumOffers) << "offered again";
 }
 
 TEST_F(ThrottlePanelTest, AltAndANumberPutTheKeyboardOnThatThrottle) {
