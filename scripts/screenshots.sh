@@ -13,6 +13,14 @@ printf '[throttles]\nlocomotives=0x4001, 0x4002\n' >"$config/Stellwerk/Stellwerk
 
 app() { XDG_CONFIG_HOME=$config xvfb-run -a -s "-screen 0 1920x1080x24" build/app/gui/stellwerk "$@"; }
 
+# The first start on a laptop: no throttle open yet, the throttle page offers locomotives to drive.
+first=$(mktemp -d)
+XDG_CONFIG_HOME=$first xvfb-run -a -s "-screen 0 1920x1080x24" build/app/gui/stellwerk --size 1366x768 \
+    --screenshot "$shots/main-window-first-start.png"
+XDG_CONFIG_HOME=$first LANG=de_DE.UTF-8 xvfb-run -a -s "-screen 0 1920x1080x24" build/app/gui/stellwerk \
+    --size 1366x768 --screenshot "$shots/main-window-first-start-de.png"
+rm -rf "$first"
+
 # The whole desk on a laptop's screen and on a full-HD one, in English and German.
 app --size 1366x768 --screenshot "$shots/main-window.png"
 LANG=de_DE.UTF-8 app --size 1366x768 --screenshot "$shots/main-window-de.png"
