@@ -1,6 +1,7 @@
 #include "trackplan/TrackPageView.h"
 
 #include "model/TrackLayout.h"
+#include "trackplan/TileTag.h"
 
 #include <QContextMenuEvent>
 #include <QHelpEvent>
@@ -29,6 +30,7 @@ void TrackPageView::setTileSize(int pixels) {
     if (pixels == m_tileSize)
         return;
     m_tileSize = pixels;
+    m_tags.clear();
     updateGeometry();
     resize(sizeHint());
     update();
@@ -107,11 +109,33 @@ void TrackPageView::paintEvent(QPaintEvent* event) {
             continue; // labels may reach into the area from elsewhere
         m_pictures.paint(painter, cell.topLeft(), look);
     }
+    paintTags(painter, area);
     if (m_dimmed) { // a wash of the background over every state: "not reported", at a glance
         QColor wash = m_colors.background;
         wash.setAlpha(150);
         painter.fillRect(area, wash);
     }
+}
+
+// The names from the file over the drawings, where they reach into the area.
+void TrackPageView::paintTags(QPainter& painter, const QRect& area) {
+    if (m_tileSize < TileTag::MinimumTile)
+        return;
+    const int tiles = int(m_page.tiles.size());
+    for (int i = 0; i < tiles; ++i) {
+        if (!tileRect(i).intersects(area)) // a tag stays on its tile
+            continue;
+        const auto& [rect, picture] = m_tags.tag(i, tiles, [this, i] {
+            const TileTag tag = tagOf(i);
+            return std::pair(tag.rect(), tag.picture(m_colors, devicePixelRatioF()));
+        });
+        if (!picture.isNull())
+            painter.drawPixmap(rect.topLeft(), picture);
+    }
+}
+
+TileTag TrackPageView::tagOf(int tile) const {
+    return TileTag(m_page.tiles[std::size_t(tile)], tileRect(tile), font());
 }
 
 void TrackPageView::mouseReleaseEvent(QMouseEvent* event) {
@@ -149,8 +173,11 @@ bool TrackPageView::event(QEvent* event) {
     }
     if (event->type() == QEvent::PaletteChange) {
         m_colors = TrackColors::from(palette());
+        m_tags.clear();
         update();
     }
+    if (event->type() == QEvent::FontChange || event->type() == QEvent::ScreenChangeInternal)
+        m_tags.clear();
     return QWidget::event(event);
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "trackplan/TileTag.h"
 #include "trackplan/TrackColors.h"
 #include "trackplan/TrackTileCache.h"
 #include "trackplan/TrackTileLook.h"
@@ -36,6 +37,8 @@ public:
     // The tile's rectangle in widget coordinates; the tile at a point (null where there is none).
     QRect tileRect(int tile) const;
     std::optional<int> tileAt(QPoint point) const;
+    // The name tag a tile carries from its file (TileTag: shown() false when none is drawn).
+    TileTag tagOf(int tile) const;
     // Repaints one tile (and the label it may carry beyond its cell).
     void updateTile(int tile);
     QSize sizeHint() const override;
@@ -62,6 +65,7 @@ protected:
 
 private:
     void paintGrid(QPainter& painter, const QRect& area) const;
+    void paintTags(QPainter& painter, const QRect& area);
 
     std::shared_ptr<const model::LayoutPage> m_pageOwner;
     const model::LayoutPage& m_page;
@@ -69,6 +73,7 @@ private:
     TextOf m_toolTip;
     TrackColors m_colors;
     TrackTileCache m_pictures;
+    TileTagCache m_tags;
     int m_tileSize = 40;
     bool m_dimmed = false;
 };

@@ -1,0 +1,92 @@
+// The names elements carry in their files (turnout numbers, signal names, S88 numbers, route names) are
+// drawn on the plan where they are readable.
+
+#include "trackplan/TileTag.h"
+
+#include "model/TrackLayout.h"
+#include "trackplan/TrackPageView.h"
+#include "trackplan/TrackPlanPanel.h"
+
+#include <QApplication>
+#include <QImage>
+#include <QTest>
+#include <filesystem>
+#include <gtest/gtest.h>
+
+using namespace stellwerk;
+using namespace stellwerk::ui;
+using Category = cs2config::TrackCategory;
+
+namespace {
+
+model::LayoutTile tile(Category category, const QString& text) {
+    model::LayoutTile tile;
+    tile.category = category;
+    tile.text = text;
+    return tile;
+}
+
+const QRect Cell(100, 200, 40, 40);
+
+} // namespace
+
+TEST(TileTag, ContactsTurnoutsAndSignalsCarryTheirNameAtTheTopLeft) {
+    for (const Category category : {Category::Feedback, Category::Turnout, Category::Signal}) {
+        const TileTag tag(tile(category, QStringLiteral("603")), Cell, QApplication::font());
+        ASSERT_TRUE(tag.shown());
+        EXPECT_EQ(tag.text(), QStringLiteral("603"));
+        EXPECT_EQ(tag.rect().topLeft(), Cell.topLeft() + QPoint(1, 1));
+        EXPECT_TRUE(Cell.contains(tag.rect())) << "it stays on its tile";
+    }
+    const TileTag longName(tile(Category::Feedback, QStringLiteral("Einfahrt West")), Cell,
+                           QApplication::font());
+    EXPECT_TRUE(Cell.contains(longName.rect())) << "a long name is shortened to its tile";
+}
+
+TEST(TileTag, PlainTrackTextsAndEmptyNamesCarryNone) {
+    EXPECT_FALSE(TileTag(tile(Category::Track, QStringLiteral("7")), Cell, QApplication::font()).shown());
+    EXPECT_FALSE(TileTag(tile(Category::Text, QStringLiteral("Gleis 1")), Cell, QApplication::font()).shown())
+        << "a text tile draws itself";
+    EXPECT_FALSE(TileTag(tile(Category::Turnout, QStringLiteral("  ")), Cell, QApplication::font()).shown());
+}
+
+TEST(TileTag, TooSmallAZoomDrawsNoTag) {
+    const QRect small(0, 0, TileTag::MinimumTile - 1, TileTag::MinimumTile - 1);
+    EXPECT_FALSE(TileTag(tile(Category::Signal, QStringLiteral("D")), small, QApplication::font()).shown());
+}
+
+TEST(TileTag, ARouteNameStaysUnderItsButton) {
+    const TileTag tag(tile(Category::RouteButton, QStringLiteral("Einfahrt von Westen über Gleis 2")), Cell,
+                      QApplication::font());
+    ASSERT_TRUE(tag.shown());
+    EXPECT_TRUE(tag.text().endsWith(QStringLiteral("…"))) << "a long name is shortened to the tile";
+    EXPECT_LE(tag.rect().width(), Cell.width() + 2);
+    EXPECT_EQ(tag.rect().bottom(), Cell.bottom());
+    EXPECT_NEAR(tag.rect().center().x(), Cell.center().x(), 1);
+}
+
+TEST(TileTag, TheCorpusPlanShowsItsContactAndTurnoutNumbers) {
+    TrackPlanPanel panel;
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(
+        (std::filesystem::path(STELLWERK_SHARED_DIR) / "corpus/GBert__railroad/can2udp/files/maerklin")
+            .string())));
+    panel.resize(1200, 500);
+    panel.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&panel));
+    TrackPageView* view = panel.pageView(0);
+    ASSERT_GE(view->tileSize(), TileTag::MinimumTile) << "fitted, the example is large enough for its names";
+    const QImage image = view->grab().toImage();
+    int tagged = 0;
+    for (int i = 0; i < int(panel.layout()->pages()[0].tiles.size()); ++i) {
+        const TileTag tag = view->tagOf(i);
+        if (!tag.shown())
+            continue;
+        ++tagged;
+        int dark = 0; // the text's pixels on the light backing
+        for (int y = tag.rect().top(); y <= tag.rect().bottom(); ++y)
+            for (int x = tag.rect().left(); x <= tag.rect().right(); ++x)
+                dark += QColor(image.pixel(QPoint(x, y) * image.devicePixelRatio())).lightness() < 110;
+        EXPECT_GT(dark, 4) << "tag \"" << tag.text().toStdString() << "\" is drawn";
+    }
+    EXPECT_GE(tagged, 10) << "the example names most of its turnouts, signals and contacts";
+}
