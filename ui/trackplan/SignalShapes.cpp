@@ -3,12 +3,16 @@
 // (Hp2), 3 shunting (Sh1) on signals that have it.
 #include "trackplan/TrackShapes.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace stellwerk::ui::shapes {
 namespace {
 
 enum class Lamp { Red, Green, Yellow, White };
+
+// The distance between lamp centres (in tiles) for one, two, three and four lamps.
+constexpr double LampSteps[] = {0.3, 0.3, 0.25, 0.19};
 
 std::vector<Lamp> lampsOf(const QString& type) {
     const bool shunting = type.endsWith(QLatin1Char('s'));
@@ -50,14 +54,17 @@ void mast(TileCanvas& c, double x, double top) {
 
 } // namespace
 
+// The head fills the lower half of the tile so that the lit lamp reads at a glance: a lamp is a fifth of
+// the tile across with up to two lamps, smaller with more.
 void lightSignal(TileCanvas& c) {
     c.unit();
     c.line(West, East, c.trackColor());
     const std::vector<Lamp> lamps = lampsOf(c.look.type);
-    mast(c, 0.16, 0.66);
+    const double step = LampSteps[std::min<std::size_t>(lamps.size(), 4) - 1];
+    mast(c, 0.12, 0.62);
     QPainterPath head;
-    head.addRoundedRect(QRectF(0.22, 0.7, 0.08 + 0.16 * double(lamps.size()), 0.2), 0.06, 0.06);
-    c.fill(head, c.colors.background, c.colors.track, 0.035);
+    head.addRoundedRect(QRectF(0.2, 0.56, 0.06 + step * double(lamps.size()), 0.4), 0.08, 0.08);
+    c.fill(head, c.colors.background, c.colors.track, 0.04);
     for (std::size_t i = 0; i < lamps.size(); ++i) {
         QColor color = lampColor(c.colors, lamps[i]);
         if (c.look.position < 0)
@@ -65,9 +72,14 @@ void lightSignal(TileCanvas& c) {
         else if (c.look.position != int(i))
             color = c.colors.dim;
         QPainterPath bulb;
-        bulb.addEllipse(QPointF(0.34 + 0.16 * double(i), 0.8), 0.06, 0.06);
+        bulb.addEllipse(lampCentre(i, lamps.size()), step * 0.4, step * 0.4);
         c.fill(bulb, color, QColor());
     }
+}
+
+QPointF lampCentre(std::size_t lamp, std::size_t lamps) {
+    const double step = LampSteps[std::min<std::size_t>(lamps, 4) - 1];
+    return {0.23 + step * (0.5 + double(lamp)), 0.76};
 }
 
 void formSignal(TileCanvas& c) {

@@ -67,6 +67,8 @@ void threeWaySlip(TileCanvas& c);
 void scissors(TileCanvas& c);
 // Signals (SignalShapes.cpp)
 void lightSignal(TileCanvas& c);
+// Where lamp `lamp` of a light signal with `lamps` lamps sits, in tile units (rotation 0).
+QPointF lampCentre(std::size_t lamp, std::size_t lamps);
 void formSignal(TileCanvas& c);
 void shuntingSignal(TileCanvas& c);
 // Everything else (FeatureShapes.cpp)

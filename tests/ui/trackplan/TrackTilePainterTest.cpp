@@ -2,6 +2,7 @@
 
 #include "cs2config/TrackElementType.h"
 #include "trackplan/TrackColors.h"
+#include "trackplan/TrackShapes.h"
 #include "trackplan/TrackTileLook.h"
 
 #include <QImage>
@@ -140,11 +141,17 @@ TEST(TrackTilePainter, ASignalLightsTheLampOfItsAspect) {
     look.position = 1;
     const QImage proceed = render(look, false);
     const TrackColors colors = TrackColors::from(paletteOf(false));
-    const QPoint red(int(0.34 * Size), int(0.8 * Size));
-    const QPoint green(int(0.50 * Size), int(0.8 * Size));
+    const QPoint red = (shapes::lampCentre(0, 2) * Size).toPoint();
+    const QPoint green = (shapes::lampCentre(1, 2) * Size).toPoint();
     EXPECT_EQ(stop.pixelColor(red).rgb(), colors.red.rgb());
     EXPECT_EQ(proceed.pixelColor(green).rgb(), colors.green.rgb());
     EXPECT_EQ(proceed.pixelColor(red).rgb(), colors.dim.rgb());
+    // Readable at a glance: the lit lamp covers at least 3 % of the tile.
+    int lit = 0;
+    for (int y = 0; y < proceed.height(); ++y)
+        for (int x = 0; x < proceed.width(); ++x)
+            lit += proceed.pixelColor(x, y).rgb() == colors.green.rgb();
+    EXPECT_GE(lit * 100, 3 * Size * Size) << lit << " green pixels";
 }
 
 TEST(TrackTilePainter, AnUnknownTypeStillShowsAMark) {
