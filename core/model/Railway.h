@@ -45,6 +45,8 @@ public:
     const Accessory* accessory(std::int64_t id) const { return state_.accessories().find(id); }
     const FeedbackContact* contact(ContactKey key) const { return state_.contacts().find(key); }
     const Route* route(std::int64_t id) const { return state_.routes().find(id); }
+    // True when every accessory of the route stands where the route leaves it, as the station confirmed.
+    bool isRouteSet(std::int64_t id) const;
     const Device* device(std::uint32_t uid) const { return state_.devices().find(uid); }
     // The position the bus last showed for an MM2 keyboard number without an article.
     std::optional<int> addressPosition(std::int64_t address) const { return state_.addressPosition(address); }

@@ -82,6 +82,15 @@ void Railway::switchForRoute(std::int64_t id, int position, std::function<void(c
                      });
 }
 
+bool Railway::isRouteSet(std::int64_t id) const {
+    return RoutePlan::of(state_.routeFile(), id).standsIn([this](std::int64_t id) -> std::optional<int> {
+        const Accessory* accessory = this->accessory(id);
+        if (!accessory || !accessory->isPositionReported() || accessory->position() < 0)
+            return std::nullopt;
+        return accessory->position();
+    });
+}
+
 bool Railway::runRoute(std::int64_t id) {
     Route* route = state_.routes().find(id);
     if (!route || route->running()) {

@@ -63,4 +63,18 @@ RoutePlan RoutePlan::of(const cs2config::RouteFile& routes, std::int64_t id, int
     return plan;
 }
 
+std::map<std::int64_t, int> RoutePlan::finalPositions() const {
+    std::map<std::int64_t, int> positions;
+    for (const RouteAction& action : actions)
+        positions[action.accessory] = action.position;
+    return positions;
+}
+
+bool RoutePlan::standsIn(const std::function<std::optional<int>(std::int64_t accessory)>& positionOf) const {
+    const std::map<std::int64_t, int> positions = finalPositions();
+    return valid() && !positions.empty() && std::ranges::all_of(positions, [&](const auto& wanted) {
+               return positionOf(wanted.first) == wanted.second;
+           });
+}
+
 } // namespace stellwerk::model

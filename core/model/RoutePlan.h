@@ -5,6 +5,8 @@
 #include <QString>
 #include <chrono>
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -27,6 +29,11 @@ struct RoutePlan {
     QString error; // empty when the plan can run
 
     bool valid() const { return error.isEmpty(); }
+    // The position each accessory is left in (its last switching in the plan), by keyboard id.
+    std::map<std::int64_t, int> finalPositions() const;
+    // True when the plan switches something and every accessory it switches stands where the plan leaves
+    // it (`positionOf`: the confirmed position, nullopt when not known): the route is set.
+    bool standsIn(const std::function<std::optional<int>(std::int64_t accessory)>& positionOf) const;
 
     // The plan of route `id` in `routes`: an error for a missing route, a reference cycle or a nesting
     // deeper than `maxDepth`.

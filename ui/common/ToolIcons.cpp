@@ -43,6 +43,11 @@ void ToolIcons::apply(QAction* action, Tool tool, const QWidget& widget) {
     action->setIcon(icon(tool, widget.palette().color(QPalette::ButtonText)));
 }
 
+void ToolIcons::apply(const QWidget& widget, std::initializer_list<std::pair<QAction*, Tool>> actions) {
+    for (const auto& [action, tool] : actions)
+        apply(action, tool, widget);
+}
+
 QIcon ToolIcons::tinted(const QString& path, const QColor& color, int size) {
     // Read through Qt's SVG image plugin (libqt6svg6, which the application icon needs as well).
     QImageReader reader(path);

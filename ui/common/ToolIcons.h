@@ -3,6 +3,8 @@
 #include <QColor>
 #include <QIcon>
 #include <QString>
+#include <initializer_list>
+#include <utility>
 
 class QAction;
 class QWidget;
@@ -19,6 +21,7 @@ public:
     static QIcon icon(Tool tool, const QColor& color);
     // Gives `action` the tool's drawing in the colour of `widget`'s button text.
     static void apply(QAction* action, Tool tool, const QWidget& widget);
+    static void apply(const QWidget& widget, std::initializer_list<std::pair<QAction*, Tool>> actions);
     // A black SVG drawing `size` pixels square in `color`; null when it cannot be read.
     static QIcon tinted(const QString& path, const QColor& color, int size);
 };

@@ -61,7 +61,9 @@ void routeButton(TileCanvas& c) {
     c.unit();
     QPainterPath button;
     button.addRoundedRect(QRectF(0.1, 0.18, 0.8, 0.64), 0.14, 0.14);
-    c.fill(button, c.look.running ? c.colors.highlight : c.colors.button, c.colors.track, 0.05);
+    // Running: filled in the highlight colour; set: ringed in it.
+    c.fill(button, c.look.running ? c.colors.highlight : c.colors.button,
+           c.look.onRoute ? c.colors.highlight : c.colors.track, c.look.onRoute ? 0.1 : 0.05);
     QPainterPath arrow({0.38, 0.32}); // where the route leads
     arrow.lineTo(0.66, 0.5);
     arrow.lineTo(0.38, 0.68);

@@ -5,11 +5,41 @@
 #include <QEvent>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QTabWidget>
 #include <algorithm>
+#include <cmath>
 
 namespace stellwerk::ui {
 
-PageZoom::PageZoom(QObject* parent) : QObject(parent) {}
+PageZoom::PageZoom(QTabWidget* pages, QObject* parent) : QObject(parent), m_tabs(pages) {}
+
+std::optional<std::int64_t> PageZoom::current() const {
+    const QWidget* front = m_tabs ? m_tabs->currentWidget() : nullptr;
+    for (auto it = m_pages.cbegin(); front && it != m_pages.cend(); ++it)
+        if (it->scroll == front && it->view)
+            return it.key();
+    return std::nullopt;
+}
+
+int PageZoom::currentTile() const {
+    const std::optional<std::int64_t> page = current();
+    return page ? m_pages.value(*page).view->tileSize() : 0;
+}
+
+void PageZoom::zoomCurrent(int pixels) {
+    if (const std::optional<std::int64_t> page = current())
+        zoomTo(*page, pixels);
+}
+
+void PageZoom::fitCurrent() {
+    if (const std::optional<std::int64_t> page = current())
+        fit(*page);
+}
+
+bool PageZoom::isCurrentFitted() const {
+    const std::optional<std::int64_t> page = current();
+    return page && isFitted(*page);
+}
 
 void PageZoom::attach(std::int64_t pageId, TrackPageView* view, QScrollArea* scroll) {
     Page& page = m_pages[pageId];
@@ -20,6 +50,11 @@ void PageZoom::attach(std::int64_t pageId, TrackPageView* view, QScrollArea* scr
         fitNow(page);
     else
         view->setTileSize(page.tile);
+}
+
+int PageZoom::stepped(int tile, int steps) {
+    const int zoomed = int(tile * std::pow(1.2, steps));
+    return steps > 0 ? std::max(tile + steps, zoomed) : std::min(tile + steps, zoomed);
 }
 
 void PageZoom::zoomTo(std::int64_t pageId, int pixels) {

@@ -4,8 +4,10 @@
 #include <QObject>
 #include <QPointer>
 #include <cstdint>
+#include <optional>
 
 class QScrollArea;
+class QTabWidget;
 
 namespace stellwerk::ui {
 
@@ -22,15 +24,24 @@ public:
     static constexpr int MinimumTile = 12;
     static constexpr int MaximumTile = 160;
 
-    explicit PageZoom(QObject* parent = nullptr);
+    // `pages` shows the pages' scroll areas as tabs: the one in front is the current page.
+    explicit PageZoom(QTabWidget* pages, QObject* parent = nullptr);
 
     // Takes care of a page's view inside its scroll area: the page's remembered zoom, or fitted.
     void attach(std::int64_t pageId, TrackPageView* view, QScrollArea* scroll);
+    // `tile` zoomed by `steps` (negative: out) of 20 % each, at least a pixel per step.
+    static int stepped(int tile, int steps);
     // Sets the page's tile size; the page no longer follows the window.
     void zoomTo(std::int64_t pageId, int pixels);
     // The page's drawn part fills its window, now and while the window changes size.
     void fit(std::int64_t pageId);
     bool isFitted(std::int64_t pageId) const;
+
+    // The same for the page in front (nothing while no page is shown).
+    int currentTile() const;
+    void zoomCurrent(int pixels);
+    void fitCurrent();
+    bool isCurrentFitted() const;
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -46,6 +57,9 @@ private:
     void fitNow(Page& page);
     void centreDrawnPart(const Page& page);
 
+    std::optional<std::int64_t> current() const;
+
+    QPointer<QTabWidget> m_tabs;
     QHash<std::int64_t, Page> m_pages;
 };
 

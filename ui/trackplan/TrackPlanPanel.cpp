@@ -6,6 +6,7 @@
 #include "connection/StationConnection.h"
 #include "model/Railway.h"
 #include "trackplan/PageZoom.h"
+#include "trackplan/SetRoutes.h"
 #include "trackplan/TrackPageView.h"
 #include "trackplan/TrackTileInfo.h"
 #include "trackplan/TrackTileLook.h"
@@ -21,7 +22,6 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <algorithm>
-#include <cmath>
 #include <filesystem>
 
 namespace stellwerk::ui {
@@ -39,7 +39,7 @@ std::vector<station::DownloadedPage> downloadedPages(const cs2config::TrackLayou
 
 TrackPlanPanel::TrackPlanPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("trackPlanPanel"));
-    m_zoom = new PageZoom(this);
+    m_setRoutes = std::make_unique<SetRoutes>();
     auto* layout = new QVBoxLayout(this);
     m_toolBar = new QToolBar(this);
     m_open = m_toolBar->addAction(QString()); // LayoutFileActions asks for the folder
@@ -83,6 +83,7 @@ TrackPlanPanel::TrackPlanPanel(QWidget* parent) : QWidget(parent) {
     m_emptyText->setEnabled(false);
     layout->addWidget(m_emptyText, 1);
     m_tabs = new QTabWidget(this);
+    m_zoom = new PageZoom(m_tabs, this);
     m_tabs->setObjectName(QStringLiteral("trackPlanPages"));
     m_tabs->setDocumentMode(true);
     // Where the plan is from, beside its pages: a remark in grey, not a button.
@@ -110,6 +111,9 @@ void TrackPlanPanel::setRailway(model::Railway* railway) {
         connect(m_railway, &model::Railway::routeFailed, this, [this](qint64 route) { routeChanged(route); });
         connect(m_railway, &model::Railway::stateReportedChanged, this,
                 &TrackPlanPanel::stateReportedChanged);
+        connect(m_railway, &model::Railway::accessoriesChanged, this, &TrackPlanPanel::updateSetRoutes);
+        connect(m_railway, &model::Railway::routeFinished, this, &TrackPlanPanel::updateSetRoutes);
+        connect(m_railway, &model::Railway::stateReportedChanged, this, &TrackPlanPanel::updateSetRoutes);
         connect(m_railway, &QObject::destroyed, this, [this] { setRailway(nullptr); });
     }
     m_layoutState->setRailway(railway);
@@ -211,6 +215,7 @@ void TrackPlanPanel::rebuild() {
                : m_live ? std::make_shared<const model::TrackLayout>(m_railway->layout())
                         : nullptr;
     indexRoutes();
+    m_setRoutes->update(m_live ? m_railway.data() : nullptr);
     if (m_layout)
         for (int i = 0; i < int(m_layout->pages().size()); ++i)
             addPage(i);
@@ -243,7 +248,7 @@ void TrackPlanPanel::addPage(int index) {
     connect(view, &TrackPageView::tileMenuRequested, this,
             [this, index](int tile, QPoint where) { showTileMenu(index, tile, where); });
     connect(view, &TrackPageView::zoomRequested, this, [this, view, id = page.id](int steps) {
-        m_zoom->zoomTo(id, int(view->tileSize() * std::pow(1.2, steps)));
+        m_zoom->zoomTo(id, PageZoom::stepped(view->tileSize(), steps));
     });
     m_views.push_back(view);
     m_tabs->addTab(scroll, page.name.isEmpty() ? tr("Page %1").arg(page.id) : page.name);
@@ -284,6 +289,8 @@ TrackTileLook TrackPlanPanel::lookOn(const model::TrackLayout& layout, model::Ti
     if (tile.route)
         if (const model::Route* route = m_railway->route(*tile.route))
             look.running = route->running();
+    look.onRoute = (tile.route && m_setRoutes->isSet(*tile.route)) ||
+                   (tile.accessory && m_setRoutes->holds(*tile.accessory));
     return look;
 }
 
@@ -331,6 +338,13 @@ void TrackPlanPanel::tilesChanged(const QList<model::TileRef>& tiles) {
     for (const model::TileRef& ref : tiles)
         if (TrackPageView* view = pageView(ref.page))
             view->updateTile(ref.tile);
+}
+
+// A route became set or stopped being set: the plan repaints (rare, and it may touch several pages).
+void TrackPlanPanel::updateSetRoutes() {
+    if (m_setRoutes->update(isLive() ? m_railway.data() : nullptr))
+        for (TrackPageView* view : m_views)
+            view->update();
 }
 
 void TrackPlanPanel::routeChanged(qint64 route) {
@@ -387,40 +401,12 @@ void TrackPlanPanel::goToPage(std::int64_t pageId) {
             m_tabs->setCurrentIndex(i);
 }
 
-int TrackPlanPanel::tileSize() const {
-    const TrackPageView* view = pageView(m_tabs->currentIndex());
-    return view ? view->tileSize() : 0;
-}
-
-std::optional<std::int64_t> TrackPlanPanel::currentPageId() const {
-    const int index = m_tabs->currentIndex();
-    if (!m_layout || index < 0 || index >= int(m_layout->pages().size()))
-        return std::nullopt;
-    return m_layout->pages()[std::size_t(index)].id;
-}
-
-// The zoom of the page in front; the other pages keep theirs.
-void TrackPlanPanel::setTileSize(int pixels) {
-    if (const std::optional<std::int64_t> page = currentPageId())
-        m_zoom->zoomTo(*page, pixels);
-}
-
 void TrackPlanPanel::zoomIn() {
-    setTileSize(std::max(tileSize() + 1, int(tileSize() * 1.2)));
+    setTileSize(PageZoom::stepped(tileSize(), 1));
 }
 
 void TrackPlanPanel::zoomOut() {
-    setTileSize(std::min(tileSize() - 1, int(tileSize() / 1.2)));
-}
-
-void TrackPlanPanel::fitToWindow() {
-    if (const std::optional<std::int64_t> page = currentPageId())
-        m_zoom->fit(*page);
-}
-
-bool TrackPlanPanel::isFitted() const {
-    const std::optional<std::int64_t> page = currentPageId();
-    return page && m_zoom->isFitted(*page);
+    setTileSize(PageZoom::stepped(tileSize(), -1));
 }
 
 QString TrackPlanPanel::problemText() const {
@@ -471,12 +457,12 @@ void TrackPlanPanel::retranslate() {
 
 void TrackPlanPanel::updateIcons() {
     using Tool = ToolIcons::Tool;
-    ToolIcons::apply(m_open, Tool::OpenLayout, *this);
-    ToolIcons::apply(m_station, Tool::StationPlan, *this);
-    ToolIcons::apply(m_export, Tool::ExportLayout, *this);
-    ToolIcons::apply(m_zoomOut, Tool::ZoomOut, *this);
-    ToolIcons::apply(m_zoomIn, Tool::ZoomIn, *this);
-    ToolIcons::apply(m_fit, Tool::Fit, *this);
+    ToolIcons::apply(*this, {{m_open, Tool::OpenLayout},
+                             {m_station, Tool::StationPlan},
+                             {m_export, Tool::ExportLayout},
+                             {m_zoomOut, Tool::ZoomOut},
+                             {m_zoomIn, Tool::ZoomIn},
+                             {m_fit, Tool::Fit}});
 }
 
 void TrackPlanPanel::changeEvent(QEvent* event) {

@@ -2,6 +2,7 @@
 
 #include "cs2config/LayoutFolder.h"
 #include "model/TrackLayout.h"
+#include "trackplan/PageZoom.h"
 
 #include <QList>
 #include <QPointer>
@@ -27,7 +28,7 @@ class Railway;
 namespace stellwerk::ui {
 
 class LayoutStateBanner;
-class PageZoom;
+class SetRoutes;
 class TrackPageView;
 struct TrackTileLook;
 
@@ -73,13 +74,13 @@ public:
     TrackTileLook lookOf(model::TileRef ref) const;
     QString toolTipOf(model::TileRef ref) const;
     // The zoom of the page in front (pixels per tile); each page keeps its own (PageZoom).
-    int tileSize() const;
-    void setTileSize(int pixels);
+    int tileSize() const { return m_zoom->currentTile(); }
+    void setTileSize(int pixels) { m_zoom->zoomCurrent(pixels); }
     void zoomIn();
     void zoomOut();
     // The drawn part of the page in front fills the window, and keeps filling it as the window changes.
-    void fitToWindow();
-    bool isFitted() const;
+    void fitToWindow() { m_zoom->fitCurrent(); }
+    bool isFitted() const { return m_zoom->isCurrentFitted(); }
     // The problem shown in the banner; empty while it is hidden.
     QString problemText() const;
 
@@ -102,10 +103,10 @@ private:
     void indexRoutes();
     void tilesChanged(const QList<model::TileRef>& tiles);
     void routeChanged(qint64 route);
+    void updateSetRoutes();
     void tileClicked(int page, int tile);
     void showTileMenu(int page, int tile, QPoint where);
     void goToPage(std::int64_t pageId);
-    std::optional<std::int64_t> currentPageId() const;
     QString accessoryName(std::int64_t id) const;
     void showProblem(const QString& text);
     QString findingsText(const std::vector<cs2config::LayoutFinding>& findings) const;
@@ -124,6 +125,7 @@ private:
     std::map<std::int64_t, std::vector<model::TileRef>> m_routeTiles;
     std::vector<TrackPageView*> m_views;
     PageZoom* m_zoom = nullptr;
+    std::unique_ptr<SetRoutes> m_setRoutes;
     std::function<bool()> m_mayOpen;
 
     QToolBar* m_toolBar = nullptr;

@@ -24,9 +24,10 @@ struct TileCanvas {
     void stroke(const QPainterPath& path, const QColor& color, double width = TrackWidth);
     void line(QPointF from, QPointF to, const QColor& color, double width = TrackWidth);
     void fill(const QPainterPath& path, const QColor& color, const QColor& outline, double width = 0.04);
-    // The track colour, or the occupied colour on an occupied contact.
+    // The track colour; the occupied colour on an occupied contact, the highlight on a set route.
     QColor trackColor() const;
-    // The colour of a leg: full when the accessory stands at `position` or its position is unknown.
+    // The colour of a leg: full when the accessory stands at `position` or its position is unknown (the
+    // highlight when a set route holds it), dim otherwise.
     QColor legColor(int position) const;
 };
 

@@ -37,7 +37,7 @@ const TrackTileCache::Picture& TrackTileCache::pictureOf(const TrackTileLook& lo
     const Key key{look.type,          label ? look.text : QString(),
                   int(look.category), look.rotation,
                   look.position,      look.occupied,
-                  look.running};
+                  look.running,       look.onRoute};
     auto it = m_pictures.find(key);
     if (it == m_pictures.end())
         it = m_pictures.insert(key, draw(look));

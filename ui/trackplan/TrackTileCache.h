@@ -39,6 +39,7 @@ private:
         int position = -1;
         bool occupied = false;
         bool running = false;
+        bool onRoute = false;
         bool operator==(const Key&) const = default;
         friend size_t qHash(const Key& key, size_t seed = 0) {
             return qHashMulti(seed, key.type, key.text, key.category, key.rotation, key.position,

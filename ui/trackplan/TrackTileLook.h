@@ -15,6 +15,7 @@ struct TrackTileLook {
     bool occupied = false; // an S88 contact a train occupies
     bool running = false;  // a route button whose route runs
     QString text;
+    bool onRoute = false; // part of a set route: its button, or an accessory it holds
 };
 
 } // namespace stellwerk::ui

@@ -113,11 +113,13 @@ void TileCanvas::fill(const QPainterPath& path, const QColor& color, const QColo
 }
 
 QColor TileCanvas::trackColor() const {
-    return look.occupied ? colors.occupied : colors.track;
+    return look.occupied ? colors.occupied : look.onRoute ? colors.highlight : colors.track;
 }
 
 QColor TileCanvas::legColor(int position) const {
-    return look.position < 0 || look.position == position ? colors.track : colors.dim;
+    if (look.position >= 0 && look.position != position)
+        return colors.dim;
+    return look.onRoute && look.position >= 0 ? colors.highlight : colors.track;
 }
 
 QPainterPath quarter(QPointF corner, double startDegrees, double sweepDegrees) {

@@ -37,7 +37,8 @@ bool isSet(const TileCanvas& c, std::initializer_list<int> positions) {
     return false;
 }
 
-// Draws the legs the accessory is not set to first, dimmed, then the set ones over them.
+// Draws the legs the accessory is not set to first, dimmed, then the set ones over them (in the
+// highlight colour while a set route holds the turnout).
 void drawLegs(TileCanvas& c, std::initializer_list<Leg> legs) {
     c.unit();
     const bool known = c.look.position >= 0;
@@ -46,7 +47,7 @@ void drawLegs(TileCanvas& c, std::initializer_list<Leg> legs) {
             c.stroke(leg.path, c.colors.dim, TileCanvas::TrackWidth * 0.8);
     for (const Leg& leg : legs)
         if (!known || isSet(c, leg.positions))
-            c.stroke(leg.path, c.colors.track);
+            c.stroke(leg.path, known && c.look.onRoute ? c.colors.highlight : c.colors.track);
 }
 
 } // namespace

@@ -6,6 +6,7 @@ target_sources(stellwerk-ui PRIVATE
     trackplan/SignalShapes.cpp
     trackplan/TrackColors.cpp trackplan/TrackColors.h
     trackplan/PageZoom.cpp trackplan/PageZoom.h
+    trackplan/SetRoutes.cpp trackplan/SetRoutes.h
     trackplan/TileTag.cpp trackplan/TileTag.h
     trackplan/TrackPageView.cpp trackplan/TrackPageView.h
     trackplan/TrackPlanPanel.cpp trackplan/TrackPlanPanel.h

@@ -153,6 +153,24 @@ TEST(RoutePlan, AReferencingStepsWaitDelaysTheFirstStepOfTheRouteItRuns) {
     EXPECT_EQ(plan.actions[3].delay, 0ms);
 }
 
+TEST(RoutePlan, ARouteIsSetWhileEveryAccessoryStandsWhereItLeavesIt) {
+    const RoutePlan plan = RoutePlan::of(routes(Routes), 2); // route 1 (W1 1, S5 1, W2 2), then W1 back to 0
+    EXPECT_EQ(plan.finalPositions(), (std::map<std::int64_t, int>{{1, 0}, {2, 2}, {5, 1}}))
+        << "the last switching of W1 counts";
+    std::map<std::int64_t, int> layout{{1, 0}, {2, 2}, {5, 1}};
+    const auto positionOf = [&layout](std::int64_t accessory) -> std::optional<int> {
+        const auto it = layout.find(accessory);
+        return it == layout.end() ? std::nullopt : std::optional<int>(it->second);
+    };
+    EXPECT_TRUE(plan.standsIn(positionOf));
+    layout[2] = 0; // someone threw W2
+    EXPECT_FALSE(plan.standsIn(positionOf));
+    layout.erase(2); // W2's position not known
+    EXPECT_FALSE(plan.standsIn(positionOf));
+    EXPECT_FALSE(RoutePlan::of(routes(Routes), 4).standsIn(positionOf))
+        << "a route that cannot run is never set";
+}
+
 TEST(RoutePlan, AMissingRouteOrReferenceCannotRun) {
     EXPECT_FALSE(RoutePlan::of(routes(Routes), 9).valid());
     const RoutePlan cycle = RoutePlan::of(routes(Routes), 4);

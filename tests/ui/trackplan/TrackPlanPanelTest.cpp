@@ -2,6 +2,7 @@
 
 #include "EmbeddedStationSupport.h"
 #include "model/Railway.h"
+#include "model/RoutePlan.h"
 #include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "support/StationTestSupport.h"
@@ -110,6 +111,37 @@ TEST_F(TrackPlanPanelTest, ClickingARouteButtonRunsTheRouteAndMarksTheButton) {
     EXPECT_TRUE(panel.lookOf(*button).running);
     EXPECT_TRUE(QTest::qWaitFor([&] { return finished.count() == 1; }, 3 * CommandMs));
     EXPECT_FALSE(panel.lookOf(*button).running);
+}
+
+TEST_F(TrackPlanPanelTest, ASetRouteIsDrawnUntilOneOfItsAccessoriesIsThrownElsewhere) {
+    const std::optional<model::TileRef> button = firstTile(cs2config::TrackCategory::RouteButton);
+    ASSERT_TRUE(button);
+    const std::int64_t route = *panel.layout()->tile(*button).route;
+    // A turnout tile of an accessory the route switches.
+    std::optional<model::TileRef> turnout;
+    const model::RoutePlan plan = model::RoutePlan::of(railways.railway()->state().routeFile(), route);
+    const std::map<std::int64_t, int> positions = plan.finalPositions();
+    const auto& tiles = panel.layout()->pages()[std::size_t(button->page)].tiles;
+    for (int t = 0; t < int(tiles.size()) && !turnout; ++t)
+        if (tiles[std::size_t(t)].category == cs2config::TrackCategory::Turnout &&
+            tiles[std::size_t(t)].accessory && positions.contains(*tiles[std::size_t(t)].accessory))
+            turnout = model::TileRef{button->page, t};
+    ASSERT_TRUE(turnout) << "the demo's first route throws a turnout of its page";
+    const std::int64_t accessory = *panel.layout()->tile(*turnout).accessory;
+
+    QSignalSpy finished(railways.railway(), &model::Railway::routeFinished);
+    click(*button);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return finished.count() == 1; }, 3 * CommandMs));
+    EXPECT_TRUE(QTest::qWaitFor([&] { return panel.lookOf(*button).onRoute; }, CommandMs))
+        << "the button is ringed";
+    EXPECT_TRUE(panel.lookOf(*turnout).onRoute) << "its turnout is drawn in the route's colour";
+    if (const QString dir = qEnvironmentVariable("STELLWERK_SCREENSHOT_DIR"); !dir.isEmpty())
+        panel.grab().save(dir + QStringLiteral("/track-plan-route-set.png"));
+
+    railways.railway()->switchAccessory(accessory, positions.at(accessory) == 0 ? 1 : 0);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return !panel.lookOf(*button).onRoute; }, CommandMs))
+        << "thrown elsewhere, the route is no longer set";
+    EXPECT_FALSE(panel.lookOf(*turnout).onRoute);
 }
 
 TEST_F(TrackPlanPanelTest, ClickingAPageLinkGoesToThatPage) {
