@@ -1277,6 +1277,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>none</source>
         <translation>keins</translation>
     </message>
+    <message>
+        <source>Shows</source>
+        <translation>Zeigt</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::LocomotivePanel</name>

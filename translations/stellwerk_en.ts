@@ -1274,6 +1274,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>none</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Shows</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::LocomotivePanel</name>

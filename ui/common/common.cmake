@@ -1,8 +1,9 @@
 # What several features share: the words and lamps for station state ("not reported", the status dots, the
 # track power line, the "layout stopped" banner), the railway's locomotives as a table, the row index of
-# such tables, the toolbars' icons, two parts side by side or stacked and widgets wrapping into rows as a
-# panel's width allows, and where the remembered settings live.
+# such tables, the function keys' and the toolbars' icons, two parts side by side or stacked and widgets
+# wrapping into rows as a panel's width allows, and where the remembered settings live.
 target_sources(stellwerk-ui PRIVATE
+    common/FunctionIcons.cpp common/FunctionIcons.h
     common/LayoutStateBanner.cpp common/LayoutStateBanner.h
     common/LocomotiveTableModel.cpp common/LocomotiveTableModel.h
     common/NotReported.cpp common/NotReported.h
@@ -23,3 +24,15 @@ qt_add_resources(stellwerk-ui stellwerk_tool_icons
     PREFIX /tool-icons
     BASE ${PROJECT_SOURCE_DIR}/resources/tool-icons
     FILES ${stellwerk_tool_icons})
+
+# The function keys' drawings (resources/function-icons), embedded as :/function-icons/<kind>.svg, for the
+# throttles and the locomotive editor.
+set(stellwerk_function_icons
+    announcement bell brake-sound cab-light coupler horn inertia interior-light light pantograph shunting
+    smoke sound whistle)
+list(TRANSFORM stellwerk_function_icons PREPEND ${PROJECT_SOURCE_DIR}/resources/function-icons/)
+list(TRANSFORM stellwerk_function_icons APPEND .svg)
+qt_add_resources(stellwerk-ui stellwerk_function_icons
+    PREFIX /function-icons
+    BASE ${PROJECT_SOURCE_DIR}/resources/function-icons
+    FILES ${stellwerk_function_icons})

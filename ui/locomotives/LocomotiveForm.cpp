@@ -1,5 +1,6 @@
 #include "locomotives/LocomotiveForm.h"
 
+#include "common/FunctionIcons.h"
 #include "locomotives/LocomotiveFileModel.h"
 
 #include <QComboBox>
@@ -25,7 +26,9 @@ constexpr LocomotiveDecoder Decoders[] = {LocomotiveDecoder::Mfx,     Locomotive
 // Unknown: a `..dauer` value the file holds and Stellwerk does not understand; kept as it is.
 constexpr FunctionTrigger Triggers[] = {FunctionTrigger::Latching, FunctionTrigger::Momentary,
                                         FunctionTrigger::Timed, FunctionTrigger::Unknown};
-enum FunctionColumn { IconColumn, TriggerColumn, DurationColumn, FunctionColumns };
+// The CS2's icon number, then what it shows (our drawing and its name), the trigger and the time.
+enum FunctionColumn { IconColumn, PictureColumn, TriggerColumn, DurationColumn, FunctionColumns };
+constexpr int PictureSize = 20;
 
 } // namespace
 
@@ -67,7 +70,9 @@ LocomotiveForm::LocomotiveForm(QWidget* parent)
 void LocomotiveForm::buildFunctionRows() {
     m_functions->setSelectionMode(QAbstractItemView::NoSelection);
     m_functions->setFocusPolicy(Qt::NoFocus);
-    m_functions->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_functions->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_functions->horizontalHeader()->setSectionResizeMode(PictureColumn, QHeaderView::Stretch);
+    m_functions->setIconSize(QSize(PictureSize, PictureSize));
     m_functions->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
     for (int row = 0; row < m_functions->rowCount(); ++row) {
         m_functions->setVerticalHeaderItem(row, new QTableWidgetItem(QStringLiteral("F%1").arg(row)));
@@ -79,9 +84,15 @@ void LocomotiveForm::buildFunctionRows() {
         auto* duration = new QSpinBox(m_functions);
         duration->setRange(0, cs2config::LocomotiveEditor::MaxDuration);
         m_functions->setCellWidget(row, IconColumn, icon);
+        auto* picture = new QTableWidgetItem;
+        picture->setFlags(Qt::ItemIsEnabled);
+        m_functions->setItem(row, PictureColumn, picture);
         m_functions->setCellWidget(row, TriggerColumn, trigger);
         m_functions->setCellWidget(row, DurationColumn, duration);
-        connect(icon, &QSpinBox::valueChanged, this, &LocomotiveForm::edited);
+        connect(icon, &QSpinBox::valueChanged, this, [this, row] {
+            showPicture(row);
+            emit edited();
+        });
         connect(duration, &QSpinBox::valueChanged, this, &LocomotiveForm::edited);
         connect(trigger, &QComboBox::currentIndexChanged, this, [this, row] {
             updateDuration(row);
@@ -89,6 +100,23 @@ void LocomotiveForm::buildFunctionRows() {
         });
         updateDuration(row);
     }
+}
+
+// What the icon number shows: our drawing of its kind and the kind's name ("Horn"), or just the number's
+// name ("Function") where we have no drawing for it.
+void LocomotiveForm::showPicture(int function) {
+    QTableWidgetItem* picture = m_functions->item(function, PictureColumn);
+    const FunctionKind kind = FunctionIcons::kindOf(iconBox(function)->value());
+    picture->setIcon(FunctionIcons::icon(kind, palette().color(QPalette::Text), PictureSize * 2));
+    picture->setText(FunctionIcons::name(kind));
+}
+
+QString LocomotiveForm::pictureText(int function) const {
+    return m_functions->item(function, PictureColumn)->text();
+}
+
+bool LocomotiveForm::showsPicture(int function) const {
+    return !m_functions->item(function, PictureColumn)->icon().isNull();
 }
 
 QSpinBox* LocomotiveForm::iconBox(int function) const {
@@ -129,6 +157,7 @@ void LocomotiveForm::setSettings(const cs2config::LocomotiveSettings& settings) 
         triggerBox(row)->setCurrentIndex(trigger < 0 ? 0 : trigger);
         durationBox(row)->setValue(function.duration);
         updateDuration(row);
+        showPicture(row);
     }
     showAddressRange();
 }
@@ -159,8 +188,9 @@ void LocomotiveForm::retranslate() {
     for (int i = 0; i < m_decoder->count(); ++i)
         m_decoder->setItemText(
             i, LocomotiveFileModel::decoderText(LocomotiveDecoder(m_decoder->itemData(i).toInt())));
-    m_functions->setHorizontalHeaderLabels({tr("Icon"), tr("Trigger"), tr("Time")});
+    m_functions->setHorizontalHeaderLabels({tr("Icon"), tr("Shows"), tr("Trigger"), tr("Time")});
     for (int row = 0; row < m_functions->rowCount(); ++row) {
+        showPicture(row);
         QComboBox* trigger = triggerBox(row);
         trigger->setItemText(0, tr("latching"));
         trigger->setItemText(1, tr("momentary"));

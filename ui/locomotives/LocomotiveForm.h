@@ -33,6 +33,9 @@ public:
     QTableWidget* functionTable() const { return m_functions; }
     // The function key's icon, trigger and time fields (row = function number).
     QSpinBox* iconBox(int function) const;
+    // What function `function`'s icon number shows, in words ("Horn"), and whether a drawing goes with it.
+    QString pictureText(int function) const;
+    bool showsPicture(int function) const;
     QComboBox* triggerBox(int function) const;
     QSpinBox* durationBox(int function) const;
     void retranslate();
@@ -44,6 +47,7 @@ private:
     void buildFunctionRows();
     void showAddressRange();
     void updateDuration(int function);
+    void showPicture(int function);
 
     QFormLayout* m_form;
     QLineEdit* m_name;

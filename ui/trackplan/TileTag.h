@@ -24,7 +24,7 @@ struct TrackColors;
 class TileTag final {
 public:
     // Tiles smaller than this carry no tag: the text would not be readable.
-    static constexpr int MinimumTile = 18;
+    static constexpr int MinimumTile = 26;
 
     TileTag(const model::LayoutTile& tile, const QRect& cell, const QFont& font);
 

@@ -72,6 +72,20 @@ TEST_F(LocomotivePanelTest, ListsTheStationsLocomotivesWithAddressDecoderAndFunc
     EXPECT_EQ(panel.form()->addressBox()->value(), 24);
 }
 
+TEST_F(LocomotivePanelTest, TheFunctionsShowWhatTheirIconNumberIsWithItsDrawing) {
+    ASSERT_TRUE(panel.selectLocomotive(QStringLiteral("BR 218 Ost")));
+    LocomotiveForm* form = panel.form();
+    ASSERT_EQ(form->iconBox(0)->value(), 1) << "the demo's F0 is the CS2's icon 1, light";
+    EXPECT_EQ(form->pictureText(0), QStringLiteral("Light")) << "shown as soon as the locomotive is chosen";
+    EXPECT_TRUE(form->showsPicture(0));
+    form->iconBox(3)->setValue(1);
+    EXPECT_EQ(form->pictureText(3), QStringLiteral("Light"));
+    EXPECT_TRUE(form->showsPicture(3));
+    form->iconBox(3)->setValue(0); // none of our drawings
+    EXPECT_EQ(form->pictureText(3), QStringLiteral("Function"));
+    EXPECT_FALSE(form->showsPicture(3)) << "a number we have no drawing for shows none, not a wrong one";
+}
+
 TEST_F(LocomotivePanelTest, ARenameIsSavedToTheChosenFolderAndEverythingElseStays) {
     const QByteArray before = stationFile();
     ASSERT_TRUE(panel.selectLocomotive(QStringLiteral("V 100 2023")));

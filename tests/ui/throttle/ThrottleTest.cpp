@@ -7,7 +7,7 @@
 #include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "support/StationTestSupport.h"
-#include "throttle/FunctionIcons.h"
+#include "common/FunctionIcons.h"
 #include "throttle/FunctionPad.h"
 #include "throttle/SpeedScale.h"
 #include "throttle/ThrottlePanel.h"

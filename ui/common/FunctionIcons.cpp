@@ -1,4 +1,4 @@
-#include "throttle/FunctionIcons.h"
+#include "common/FunctionIcons.h"
 
 #include "common/ToolIcons.h"
 
