@@ -1,7 +1,7 @@
 #include "throttle/FunctionPad.h"
 
-#include "model/Railway.h"
 #include "common/FunctionIcons.h"
+#include "model/Railway.h"
 #include "throttle/StyleSheetSupport.h"
 
 #include <QEvent>

@@ -3,11 +3,11 @@
 // another controller does shows in the throttle; what the station does not acknowledge is marked.
 
 #include "EmbeddedStationSupport.h"
+#include "common/FunctionIcons.h"
 #include "model/Railway.h"
 #include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "support/StationTestSupport.h"
-#include "common/FunctionIcons.h"
 #include "throttle/FunctionPad.h"
 #include "throttle/SpeedScale.h"
 #include "throttle/ThrottlePanel.h"
