@@ -204,7 +204,7 @@ void unknown(TileCanvas& c) {
     c.unit();
     QPainterPath box;
     box.addRect(QRectF(0.12, 0.12, 0.76, 0.76));
-    c.painter.strokePath(box, QPen(c.colors.dim, 0.04, Qt::DashLine));
+    c.stroke(box, QPen(c.colors.dim, 0.04, Qt::DashLine));
     c.line(West, {0.12, 0.5}, c.colors.dim, 0.06);
     QFont font = c.painter.font();
     font.setPixelSize(50);

@@ -121,21 +121,28 @@ void TrackPageView::paintEvent(QPaintEvent* event) {
 void TrackPageView::paintTags(QPainter& painter, const QRect& area) {
     if (m_tileSize < TileTag::MinimumTile)
         return;
+    const QFont font = tagFont();
+    painter.setFont(font);
     const int tiles = int(m_page.tiles.size());
     for (int i = 0; i < tiles; ++i) {
         if (!tileRect(i).intersects(area)) // a tag stays on its tile
             continue;
-        const auto& [rect, picture] = m_tags.tag(i, tiles, [this, i] {
-            const TileTag tag = tagOf(i);
-            return std::pair(tag.rect(), tag.picture(m_colors, devicePixelRatioF()));
-        });
-        if (!picture.isNull())
-            painter.drawPixmap(rect.topLeft(), picture);
+        m_tags.tag(i, tiles, [&] { return TileTag(m_page.tiles[std::size_t(i)], tileRect(i), font); })
+            .paint(painter, m_colors);
     }
 }
 
+QFont TrackPageView::tagFont() const {
+    if (m_tagFontTile != m_tileSize || m_tagFontBase != font()) {
+        m_tagFontTile = m_tileSize;
+        m_tagFontBase = font();
+        m_tagFont = TileTag::tagFont(font(), m_tileSize); // one font shared by every tag
+    }
+    return m_tagFont;
+}
+
 TileTag TrackPageView::tagOf(int tile) const {
-    return TileTag(m_page.tiles[std::size_t(tile)], tileRect(tile), font());
+    return TileTag(m_page.tiles[std::size_t(tile)], tileRect(tile), tagFont());
 }
 
 void TrackPageView::mouseReleaseEvent(QMouseEvent* event) {
@@ -173,7 +180,6 @@ bool TrackPageView::event(QEvent* event) {
     }
     if (event->type() == QEvent::PaletteChange) {
         m_colors = TrackColors::from(palette());
-        m_tags.clear();
         update();
     }
     if (event->type() == QEvent::FontChange || event->type() == QEvent::ScreenChangeInternal)

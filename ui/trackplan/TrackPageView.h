@@ -66,6 +66,7 @@ protected:
 private:
     void paintGrid(QPainter& painter, const QRect& area) const;
     void paintTags(QPainter& painter, const QRect& area);
+    QFont tagFont() const;
 
     std::shared_ptr<const model::LayoutPage> m_pageOwner;
     const model::LayoutPage& m_page;
@@ -74,6 +75,9 @@ private:
     TrackColors m_colors;
     TrackTileCache m_pictures;
     TileTagCache m_tags;
+    mutable QFont m_tagFont; // the tags' font for m_tagFontTile and m_tagFontBase
+    mutable QFont m_tagFontBase;
+    mutable int m_tagFontTile = 0;
     int m_tileSize = 40;
     bool m_dimmed = false;
 };

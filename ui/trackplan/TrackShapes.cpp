@@ -51,7 +51,7 @@ void tunnel(TileCanvas& c) {
     c.line({0.7, 0.5}, East, c.trackColor());
     QPainterPath inside({0.3, 0.5});
     inside.lineTo(0.7, 0.5);
-    c.painter.strokePath(inside, QPen(c.colors.dim, 0.08, Qt::DashLine, Qt::FlatCap));
+    c.stroke(inside, QPen(c.colors.dim, 0.08, Qt::DashLine, Qt::FlatCap));
     for (const double x : {0.3, 0.7}) { // the portals
         QPainterPath portal({x + (x < 0.5 ? -0.1 : 0.1), 0.2});
         portal.lineTo(x, 0.28);

@@ -22,6 +22,7 @@ struct TileCanvas {
 
     void unit();
     void stroke(const QPainterPath& path, const QColor& color, double width = TrackWidth);
+    void stroke(const QPainterPath& path, QPen pen); // the pen's width in tile units
     void line(QPointF from, QPointF to, const QColor& color, double width = TrackWidth);
     void fill(const QPainterPath& path, const QColor& color, const QColor& outline, double width = 0.04);
     // The track colour; the occupied colour on an occupied contact, the highlight on a set route.

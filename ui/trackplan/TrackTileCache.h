@@ -51,8 +51,13 @@ private:
         QPoint offset; // of the pixmap's top left corner from the cell's
     };
 
+    static Key keyOf(const TrackTileLook& look);
     const Picture& pictureOf(const TrackTileLook& look);
-    Picture draw(const TrackTileLook& look) const;
+    Picture draw(const TrackTileLook& look);
+    QImage drawn(const TrackTileLook& look, const QRect& pixels) const;
+    bool turnsExactly(const TrackTileLook& look) const;
+    Picture turned(const TrackTileLook& look);
+    QRectF cell() const { return {0, 0, double(m_tileSize), double(m_tileSize)}; }
     Picture cropped(const QImage& image, QPoint offset) const;
 
     static constexpr int MaximumPictures = 8192; // labels each have their own; start afresh beyond this

