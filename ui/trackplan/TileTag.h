@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QFont>
+#include <QGlyphRun>
 #include <QRect>
 #include <QStaticText>
 #include <QString>
@@ -45,7 +46,8 @@ private:
     QFont m_font;
     QString m_text;
     QRect m_rect;
-    QStaticText m_glyphs; // m_text shaped in m_font
+    QGlyphRun m_glyphs;   // m_text's glyphs placed in m_font, from the rect's top left
+    QStaticText m_shaped; // m_text laid out by Qt, when m_font lacks one of its characters
 };
 
 // The tags of one page laid out once per zoom: a repaint draws each tag's known text at its known place

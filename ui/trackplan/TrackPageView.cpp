@@ -97,23 +97,35 @@ void TrackPageView::paintEvent(QPaintEvent* event) {
     const QRect area = event->rect();
     painter.setClipRect(area);
     paintGrid(painter, area);
-    m_pictures.prepare(m_tileSize, devicePixelRatioF(), m_colors, font());
-    for (int i = 0; i < int(m_page.tiles.size()); ++i) {
-        const bool label = m_page.tiles[std::size_t(i)].category == cs2config::TrackCategory::Text;
-        const QRect cell = tileRect(i);
-        constexpr int reach = TrackTileCache::Overhang;
-        if (!label && !cell.adjusted(-reach, -reach, reach, reach).intersects(area))
-            continue;
-        const TrackTileLook look = m_look(i);
-        if (label && !m_pictures.area(look, cell.topLeft()).intersects(area))
-            continue; // labels may reach into the area from elsewhere
-        m_pictures.paint(painter, cell.topLeft(), look);
-    }
+    paintTiles(painter, area);
     paintTags(painter, area);
     if (m_dimmed) { // a wash of the background over every state: "not reported", at a glance
         QColor wash = m_colors.background;
         wash.setAlpha(150);
         painter.fillRect(area, wash);
+    }
+}
+
+// The pictures of the tiles that reach into the area; those not drawn yet are drawn first, all at once.
+void TrackPageView::paintTiles(QPainter& painter, const QRect& area) {
+    m_pictures.prepare(m_tileSize, devicePixelRatioF(), m_colors, font());
+    std::vector<int> tiles;
+    std::vector<TrackTileLook> looks;
+    for (int i = 0; i < int(m_page.tiles.size()); ++i) {
+        const bool label = m_page.tiles[std::size_t(i)].category == cs2config::TrackCategory::Text;
+        constexpr int reach = TrackTileCache::Overhang;
+        if (label || tileRect(i).adjusted(-reach, -reach, reach, reach).intersects(area)) {
+            tiles.push_back(i);
+            looks.push_back(m_look(i));
+        }
+    }
+    m_pictures.drawAhead(looks);
+    for (std::size_t k = 0; k < tiles.size(); ++k) {
+        const QPoint cell = tileRect(tiles[k]).topLeft();
+        const bool label = looks[k].category == cs2config::TrackCategory::Text;
+        if (label && !m_pictures.area(looks[k], cell).intersects(area))
+            continue; // labels may reach into the area from elsewhere
+        m_pictures.paint(painter, cell, looks[k]);
     }
 }
 

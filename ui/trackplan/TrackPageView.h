@@ -65,6 +65,7 @@ protected:
 
 private:
     void paintGrid(QPainter& painter, const QRect& area) const;
+    void paintTiles(QPainter& painter, const QRect& area);
     void paintTags(QPainter& painter, const QRect& area);
     QFont tagFont() const;
 

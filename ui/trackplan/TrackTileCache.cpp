@@ -4,8 +4,11 @@
 
 #include <QImage>
 #include <QPainter>
+#include <QSet>
 #include <algorithm>
 #include <cmath>
+#include <future>
+#include <thread>
 
 namespace stellwerk::ui {
 
@@ -23,13 +26,13 @@ void TrackTileCache::prepare(int tileSize, qreal devicePixelRatio, const TrackCo
 
 QRect TrackTileCache::area(const TrackTileLook& look, QPoint cell) {
     const Picture& picture = pictureOf(look);
-    return {cell + picture.offset, picture.pixmap.deviceIndependentSize().toSize()};
+    return {cell + picture.offset, picture.image.deviceIndependentSize().toSize()};
 }
 
 void TrackTileCache::paint(QPainter& painter, QPoint cell, const TrackTileLook& look) {
     const Picture& picture = pictureOf(look);
-    if (!picture.pixmap.isNull())
-        painter.drawPixmap(cell + picture.offset, picture.pixmap);
+    if (!picture.image.isNull())
+        painter.drawImage(cell + picture.offset, picture.image);
 }
 
 TrackTileCache::Key TrackTileCache::keyOf(const TrackTileLook& look) {
@@ -51,14 +54,74 @@ const TrackTileCache::Picture& TrackTileCache::pictureOf(const TrackTileLook& lo
 TrackTileCache::Picture TrackTileCache::draw(const TrackTileLook& look) {
     if (!TrackTilePainter::draws(look))
         return {};
-    // A little room around the cell for strokes that reach over its edge.
-    const QRectF reach =
-        TrackTilePainter::area(cell(), look, m_font).adjusted(-Overhang, -Overhang, Overhang, Overhang);
-    const QRect pixels(QPoint(int(std::floor(reach.left())), int(std::floor(reach.top()))),
-                       QPoint(int(std::ceil(reach.right())), int(std::ceil(reach.bottom()))));
     if ((look.rotation & 3) != 0 && turnsExactly(look))
         return turned(look);
+    const QRect pixels = pixelsOf(look);
     return cropped(drawn(look, pixels), pixels.topLeft());
+}
+
+// The device's whole pixels the tile's picture may cover, relative to its cell's top left corner: a
+// little room around the cell for strokes that reach over its edge.
+QRect TrackTileCache::pixelsOf(const TrackTileLook& look) const {
+    const QRectF reach =
+        TrackTilePainter::area(cell(), look, m_font).adjusted(-Overhang, -Overhang, Overhang, Overhang);
+    return {QPoint(int(std::floor(reach.left())), int(std::floor(reach.top()))),
+            QPoint(int(std::ceil(reach.right())), int(std::ceil(reach.bottom())))};
+}
+
+void TrackTileCache::drawAhead(const std::vector<TrackTileLook>& looks) {
+    std::vector<TrackTileLook> uprights; // drawn without the font, not drawn yet, each once
+    std::vector<TrackTileLook> turns;    // to be turned from their upright pictures
+    QSet<Key> seen;
+    for (const TrackTileLook& look : looks) {
+        const Key key = keyOf(look);
+        if (!TrackTilePainter::draws(look) || TrackTilePainter::usesFont(look) || m_pictures.contains(key) ||
+            seen.contains(key))
+            continue;
+        seen.insert(key);
+        const bool turning = (look.rotation & 3) != 0 && turnsExactly(look);
+        (turning ? turns : uprights).push_back(look);
+        TrackTileLook upright = look;
+        upright.rotation = 0;
+        if (turning && !m_pictures.contains(keyOf(upright)) && !seen.contains(keyOf(upright))) {
+            seen.insert(keyOf(upright));
+            uprights.push_back(upright);
+        }
+    }
+    if (int(uprights.size() + turns.size()) < MinimumAhead)
+        return; // a few tiles: not worth starting threads
+    insert(uprights, onAllCores(uprights.size(), [&](std::size_t i) {
+               const QRect pixels = pixelsOf(uprights[i]);
+               return cropped(drawn(uprights[i], pixels), pixels.topLeft());
+           }));
+    insert(turns, onAllCores(turns.size(), [&](std::size_t i) {
+               TrackTileLook upright = turns[i];
+               upright.rotation = 0;
+               return turn(*m_pictures.constFind(keyOf(upright)), turns[i].rotation);
+           }));
+}
+
+template <class Make>
+std::vector<TrackTileCache::Picture> TrackTileCache::onAllCores(std::size_t count, Make make) {
+    std::vector<Picture> pictures(count);
+    const auto range = [&](std::size_t from, std::size_t step) {
+        for (std::size_t i = from; i < count; i += step)
+            pictures[i] = make(i);
+    };
+    const std::size_t threads =
+        std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, MaximumThreads);
+    std::vector<std::future<void>> helpers;
+    for (std::size_t t = 1; t < threads && t < count; ++t)
+        helpers.push_back(std::async(std::launch::async, range, t, threads));
+    range(0, threads);
+    for (std::future<void>& helper : helpers)
+        helper.get();
+    return pictures;
+}
+
+void TrackTileCache::insert(const std::vector<TrackTileLook>& looks, std::vector<Picture> pictures) {
+    for (std::size_t i = 0; i < looks.size(); ++i)
+        m_pictures.insert(keyOf(looks[i]), std::move(pictures[i]));
 }
 
 QImage TrackTileCache::drawn(const TrackTileLook& look, const QRect& pixels) const {
@@ -83,17 +146,20 @@ bool TrackTileCache::turnsExactly(const TrackTileLook& look) const {
 TrackTileCache::Picture TrackTileCache::turned(const TrackTileLook& look) {
     TrackTileLook upright = look;
     upright.rotation = 0;
-    const Picture& picture = pictureOf(upright);
-    if (picture.pixmap.isNull())
+    return turn(pictureOf(upright), look.rotation);
+}
+
+TrackTileCache::Picture TrackTileCache::turn(const Picture& upright, int rotation) const {
+    if (upright.image.isNull())
         return {};
     const double centre = m_tileSize / 2.0;
-    const QTransform turn = QTransform().rotate(-90.0 * (look.rotation & 3));
+    const QTransform turn = QTransform().rotate(-90.0 * (rotation & 3));
     const QTransform aboutCentre =
         QTransform::fromTranslate(-centre, -centre) * turn * QTransform::fromTranslate(centre, centre);
-    const QRectF area(picture.offset, picture.pixmap.deviceIndependentSize());
-    QPixmap pixmap = picture.pixmap.transformed(turn);
-    pixmap.setDevicePixelRatio(m_devicePixelRatio);
-    return {pixmap, aboutCentre.mapRect(area).topLeft().toPoint()};
+    const QRectF area(upright.offset, upright.image.deviceIndependentSize());
+    QImage image = upright.image.transformed(turn);
+    image.setDevicePixelRatio(m_devicePixelRatio);
+    return {std::move(image), aboutCentre.mapRect(area).topLeft().toPoint()};
 }
 
 // Most of a tile is empty: keeping only the part that was drawn on saves blending those pixels on
@@ -101,7 +167,7 @@ TrackTileCache::Picture TrackTileCache::turned(const TrackTileLook& look) {
 TrackTileCache::Picture TrackTileCache::cropped(const QImage& image, QPoint offset) const {
     const int ratio = int(m_devicePixelRatio);
     if (ratio != m_devicePixelRatio) // a fractional ratio: no whole logical pixels to crop to
-        return {QPixmap::fromImage(image), offset};
+        return {image, offset};
     const int width = image.width(), height = image.height();
     int left = width, top = height, right = -1, bottom = -1;
     for (int y = 0; y < height; ++y) {
@@ -124,7 +190,7 @@ TrackTileCache::Picture TrackTileCache::cropped(const QImage& image, QPoint offs
         return {}; // nothing drawn
     QImage part = image.copy(QRect(drawn.topLeft() * ratio, drawn.size() * ratio));
     part.setDevicePixelRatio(m_devicePixelRatio);
-    return {QPixmap::fromImage(std::move(part)), offset + drawn.topLeft()};
+    return {std::move(part), offset + drawn.topLeft()};
 }
 
 } // namespace stellwerk::ui

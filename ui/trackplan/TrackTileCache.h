@@ -5,15 +5,15 @@
 
 #include <QFont>
 #include <QHash>
-#include <QPixmap>
+#include <QImage>
 #include <QPoint>
+#include <vector>
 
-class QImage;
 class QPainter;
 
 namespace stellwerk::ui {
 
-// The drawn picture of every tile look at the current tile size, so that a repaint blits pixmaps instead
+// The drawn picture of every tile look at the current tile size, so that a repaint blits pictures instead
 // of stroking paths and laying out text for each of thousands of tiles. The pictures are drawn by
 // TrackTilePainter at the screen's device pixel ratio and thrown away when the size, the colours, the
 // font or the ratio change, so the plan stays anti-aliased vector art at every zoom.
@@ -28,6 +28,9 @@ public:
     // beyond their cell).
     QRect area(const TrackTileLook& look, QPoint cell);
     void paint(QPainter& painter, QPoint cell, const TrackTileLook& look);
+    // Draws the pictures `looks` will need and that are not drawn yet, on all of the machine's cores (up
+    // to four): a page's first paint draws hundreds at once. Labels are left to paint(), on this thread.
+    void drawAhead(const std::vector<TrackTileLook>& looks);
     int size() const { return int(m_pictures.size()); }
 
 private:
@@ -47,19 +50,28 @@ private:
         }
     };
     struct Picture {
-        QPixmap pixmap;
-        QPoint offset; // of the pixmap's top left corner from the cell's
+        QImage image;  // not a QPixmap: on the raster engine both are blitted alike, and images need no
+                       // conversion after drawing, cropping and turning
+        QPoint offset; // of the image's top left corner from the cell's
     };
 
     static Key keyOf(const TrackTileLook& look);
     const Picture& pictureOf(const TrackTileLook& look);
     Picture draw(const TrackTileLook& look);
+    QRect pixelsOf(const TrackTileLook& look) const;
     QImage drawn(const TrackTileLook& look, const QRect& pixels) const;
     bool turnsExactly(const TrackTileLook& look) const;
     Picture turned(const TrackTileLook& look);
+    Picture turn(const Picture& upright, int rotation) const;
+    // make(0) .. make(count - 1), spread over up to MaximumThreads threads (this one among them).
+    template <class Make>
+    static std::vector<Picture> onAllCores(std::size_t count, Make make);
+    void insert(const std::vector<TrackTileLook>& looks, std::vector<Picture> pictures);
     QRectF cell() const { return {0, 0, double(m_tileSize), double(m_tileSize)}; }
     Picture cropped(const QImage& image, QPoint offset) const;
 
+    static constexpr int MinimumAhead = 32; // fewer missing pictures are drawn as they are met
+    static constexpr std::size_t MaximumThreads = 4;
     static constexpr int MaximumPictures = 8192; // labels each have their own; start afresh beyond this
 
     QHash<Key, Picture> m_pictures;

@@ -77,6 +77,11 @@ bool TrackTilePainter::draws(const TrackTileLook& look) {
     return shapeFor(look.type) != nullptr;
 }
 
+bool TrackTilePainter::usesFont(const TrackTileLook& look) {
+    const Shape draw = shapeFor(look.type);
+    return draw == shapes::label || draw == shapes::unknown;
+}
+
 QRectF TrackTilePainter::area(const QRectF& cell, const TrackTileLook& look, const QFont& font) {
     if (shapeFor(look.type) != shapes::label)
         return cell;

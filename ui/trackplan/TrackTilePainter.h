@@ -19,6 +19,9 @@ public:
                       const TrackColors& colors);
     // Whether the tile shows anything at all (an empty tile does not).
     static bool draws(const TrackTileLook& look);
+    // Whether drawing the tile needs the font (labels, the "?" of an unknown type): only those are left
+    // to the GUI thread when pictures are drawn on several threads.
+    static bool usesFont(const TrackTileLook& look);
     // The area the tile draws into: its cell, or for a label the text that runs beyond it.
     static QRectF area(const QRectF& cell, const TrackTileLook& look, const QFont& font);
 };

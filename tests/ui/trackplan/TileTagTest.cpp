@@ -4,11 +4,14 @@
 #include "trackplan/TileTag.h"
 
 #include "model/TrackLayout.h"
+#include "trackplan/TrackColors.h"
 #include "trackplan/TrackPageView.h"
 #include "trackplan/TrackPlanPanel.h"
 
 #include <QApplication>
+#include <QFontMetrics>
 #include <QImage>
+#include <QPainter>
 #include <QTest>
 #include <filesystem>
 #include <gtest/gtest.h>
@@ -89,4 +92,43 @@ TEST(TileTag, TheCorpusPlanShowsItsContactAndTurnoutNumbers) {
         EXPECT_GT(dark, 4) << "tag \"" << tag.text().toStdString() << "\" is drawn";
     }
     EXPECT_GE(tagged, 10) << "the example names most of its turnouts, signals and contacts";
+}
+
+namespace {
+
+// The dark pixels of a tag drawn on a white picture of its cell.
+int darkPixelsOf(const TileTag& tag) {
+    QImage image(Cell.right() + 10, Cell.bottom() + 10, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    painter.setFont(tag.font());
+    tag.paint(painter, TrackColors::from(QApplication::palette()));
+    painter.end();
+    int dark = 0;
+    for (int y = tag.rect().top(); y <= tag.rect().bottom(); ++y)
+        for (int x = tag.rect().left(); x <= tag.rect().right(); ++x)
+            dark += QColor(image.pixel(x, y)).lightness() < 110;
+    return dark;
+}
+
+} // namespace
+
+TEST(TileTag, ANameIsDrawnAsWideAsItsTextAndOneTheFontLacksStillShows) {
+    const QFont font = TileTag::tagFont(QApplication::font(), Cell.width());
+    const TileTag plain(tile(Category::Turnout, QStringLiteral("W12")), Cell, font);
+    ASSERT_TRUE(plain.shown());
+    EXPECT_NEAR(plain.rect().width(), QFontMetrics(font).horizontalAdvance(QStringLiteral("W12")) + 4, 1);
+    EXPECT_GT(darkPixelsOf(plain), 8);
+    EXPECT_LT(darkPixelsOf(TileTag(tile(Category::Turnout, QStringLiteral("W")), Cell, font)),
+              darkPixelsOf(plain))
+        << "its own glyphs are drawn, not a stand-in";
+
+    // A character outside the font's tables (a locomotive, U+1F682, two UTF-16 units): Qt's own layout
+    // draws it, from another font or as a box.
+    const TileTag foreign(tile(Category::Signal, QString::fromUtf8("\xF0\x9F\x9A\x82"
+                                                                   "1")),
+                          Cell, font);
+    ASSERT_TRUE(foreign.shown());
+    EXPECT_GT(foreign.rect().width(), 4);
+    EXPECT_GT(darkPixelsOf(foreign), 4);
 }

@@ -83,6 +83,34 @@ TEST(TrackTileCache, DrawsEveryTypeInEveryRotationAsThePainterDoes) {
     }
 }
 
+TEST(TrackTileCache, DrawsAPagesPicturesAheadOnSeveralThreadsAsPaintWouldHave) {
+    std::vector<TrackTileLook> page;
+    for (const cs2config::TrackElementType& type : cs2config::trackElementTypes())
+        for (int rotation = 0; rotation < 4; ++rotation)
+            for (int position = -1; position < (type.switchable() ? 2 : 0); ++position)
+                page.push_back(look(std::string(type.name).c_str(), rotation, position));
+    page.push_back(page.front()); // a look twice is drawn once
+    const TrackTileLook label = look("text", 1, -1, QStringLiteral("Bahnhof"));
+    page.push_back(label);
+
+    TrackTileCache ahead;
+    ahead.prepare(Size, 1.0, colors(), QApplication::font());
+    ahead.drawAhead(page);
+    const int drawnAhead = ahead.size();
+    EXPECT_GT(drawnAhead, 900);
+    page.pop_back();
+    // Empty tiles and texts without a text are drawn (as nothing, or a font's text) when painted.
+    std::erase_if(page, [](const TrackTileLook& tile) {
+        return !TrackTilePainter::draws(tile) || TrackTilePainter::usesFont(tile);
+    });
+    for (const TrackTileLook& tile : page)
+        EXPECT_LE(differingPixels(drawn(tile, &ahead), drawn(tile, nullptr)), 4)
+            << tile.type.toStdString() << tile.rotation << " " << tile.position;
+    EXPECT_EQ(ahead.size(), drawnAhead) << "painting the page found every picture drawn";
+    drawn(label, &ahead);
+    EXPECT_EQ(ahead.size(), drawnAhead + 1) << "a label is drawn when it is painted, on the GUI thread";
+}
+
 TEST(TrackTileCache, KeepsTheDrawnPartOfOnePicturePerLookAndStartsAfreshWhenTheSizeChanges) {
     TrackTileCache cache;
     cache.prepare(Size, 1.0, colors(), QApplication::font());
