@@ -2204,6 +2204,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>Export layout...</source>
         <translation>Gleisbild exportieren …</translation>
     </message>
+    <message>
+        <source>Locomotive on it: %1</source>
+        <translation>Lok darauf: %1</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::TrafficStatus</name>

@@ -2201,6 +2201,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>Export layout...</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Locomotive on it: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::TrafficStatus</name>

@@ -3,6 +3,7 @@
 
 #include "connect/StationUrlSettings.h"
 #include "connection/StationConnection.h"
+#include "model/OccupantBook.h"
 #include "model/Railway.h"
 #include "monitor/FrameDecoderPanel.h"
 #include "shell/ApplicationInfo.h"
@@ -65,6 +66,16 @@ bool asksOnlyForText(int argc, char* argv[]) {
             return true;
     }
     return false;
+}
+
+// A new embedded simulated station, telling `occupants` where its trains stand.
+std::unique_ptr<stellwerk::transport::LocalPeer> embeddedStation(stellwerk::model::OccupantBook& occupants) {
+    occupants.clear(); // a new simulation places its trains anew
+    auto station = std::make_unique<stellwerk::sim::EmbeddedStation>();
+    station->reportOccupants([&occupants](std::uint16_t device, std::uint16_t contact, std::uint32_t locId) {
+        occupants.report(stellwerk::model::contactKey(device, contact), locId);
+    });
+    return station;
 }
 
 void nameApplication() {
@@ -176,9 +187,15 @@ int main(int argc, char* argv[]) {
     translations.select(stellwerk::ui::LanguageSettings::load());
     // The program's own station is the embedded simulated CS2, handed to the UI through the connection.
     stellwerk::connection::ConnectionSettings connectionSettings;
-    connectionSettings.localStation = stellwerk::sim::EmbeddedStation::factory();
+    // Where its trains stand is what a real station cannot say: it goes to the railway beside the
+    // connection (the book outlives the station).
+    stellwerk::model::OccupantBook demoOccupants;
+    connectionSettings.localStation = [&demoOccupants] { return embeddedStation(demoOccupants); };
     StationConnection connection{std::move(connectionSettings)}; // outlives the railway and the window
     stellwerk::ui::RailwayBinding railways(connection);          // a railway model per session
+    QObject::connect(
+        &railways, &stellwerk::ui::RailwayBinding::railwayChanged, &railways,
+        [&demoOccupants](stellwerk::model::Railway* railway) { demoOccupants.setRailway(railway); });
     stellwerk::ui::MainWindow window(translations);
     window.setConnection(&connection);
     QObject::connect(&railways, &stellwerk::ui::RailwayBinding::railwayChanged, &window,

@@ -12,6 +12,15 @@ bool FeedbackContact::confirm(bool occupied, const QDateTime& now) {
         lastChange_ = now; // reported again unchanged: it has been so since the last change
     occupied_ = occupied;
     known_ = true;
+    if (!occupied)
+        occupant_ = 0; // the train left
+    return true;
+}
+
+bool FeedbackContact::setOccupant(std::uint32_t locId) {
+    if (locId == occupant_)
+        return false;
+    occupant_ = locId;
     return true;
 }
 

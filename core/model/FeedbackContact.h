@@ -34,8 +34,13 @@ public:
     // When the state last changed (local clock); invalid before the first change.
     const QDateTime& lastChange() const { return lastChange_; }
 
-    // Returns true when the state or its knownness changed.
+    // Returns true when the state or its knownness changed. A contact reported free has no occupant.
     bool confirm(bool occupied, const QDateTime& now);
+
+    // The Loc-ID of the locomotive on the contact, as the simulator or the user says (the station cannot
+    // report it); 0 when nobody said. Returns true when it changed.
+    std::uint32_t occupant() const { return occupant_; }
+    bool setOccupant(std::uint32_t locId);
 
 private:
     std::uint16_t device_ = 0;
@@ -43,6 +48,7 @@ private:
     QString name_;
     bool occupied_ = false;
     bool known_ = false;
+    std::uint32_t occupant_ = 0;
     QDateTime lastChange_;
 };
 

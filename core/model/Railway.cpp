@@ -108,6 +108,10 @@ void Railway::apply(const station::StationUpdates& updates) {
     announce(changes);
 }
 
+void Railway::reportOccupant(ContactKey key, std::uint32_t locId) {
+    announce(state_.setOccupant(key, locId));
+}
+
 void Railway::announce(const RailwayChanges& changes) {
     if (!changes.locomotives.empty())
         emit locomotivesChanged(toList<std::uint32_t, quint32>(changes.locomotives));

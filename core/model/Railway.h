@@ -44,6 +44,9 @@ public:
     const Locomotive* locomotive(std::uint32_t id) const { return state_.locomotives().find(id); }
     const Accessory* accessory(std::int64_t id) const { return state_.accessories().find(id); }
     const FeedbackContact* contact(ContactKey key) const { return state_.contacts().find(key); }
+    // Which locomotive (Loc-ID; 0: nobody) is on a contact, as the simulator or the user says: the station
+    // cannot report it. Forgotten when the contact is reported free. Announced as contactsChanged.
+    void reportOccupant(ContactKey key, std::uint32_t locId);
     const Route* route(std::int64_t id) const { return state_.routes().find(id); }
     // True when every accessory of the route stands where the route leaves it, as the station confirmed.
     bool isRouteSet(std::int64_t id) const;

@@ -165,6 +165,16 @@ void RailwayState::applyContacts(const station::StationUpdates& updates, const Q
     }
 }
 
+RailwayChanges RailwayState::setOccupant(ContactKey key, std::uint32_t locId) {
+    RailwayChanges changes;
+    FeedbackContact* contact = contacts_.find(key);
+    if (!contact)
+        contact = &contacts_.put(key, FeedbackContact(std::uint16_t(key >> 16), std::uint16_t(key & 0xffff)));
+    if (contact->setOccupant(locId))
+        changes.contacts.add(key);
+    return changes;
+}
+
 void RailwayState::applyDevices(const station::StationUpdates& updates, const QDateTime& now,
                                 RailwayChanges& changes) {
     for (const cs2::DeviceIdentity& identity : updates.devices)

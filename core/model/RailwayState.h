@@ -41,6 +41,8 @@ public:
     // Railway created before the start-up sees the state answers) is kept.
     void load(const station::StartupResult& startup);
     RailwayChanges apply(const station::StationUpdates& updates, const QDateTime& now);
+    // Who is on a contact (FeedbackContact::occupant); a contact not reported yet is made for it.
+    RailwayChanges setOccupant(ContactKey key, std::uint32_t locId);
 
     Registry<std::uint32_t, Locomotive>& locomotives() { return locomotives_; }
     const Registry<std::uint32_t, Locomotive>& locomotives() const { return locomotives_; }

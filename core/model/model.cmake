@@ -7,6 +7,8 @@ target_sources(stellwerk-model PRIVATE
     model/Device.cpp
     model/FeedbackContact.cpp
     model/Locomotive.cpp
+    model/OccupantBook.cpp
+    model/OccupantBook.h
     model/Programmer.cpp
     model/Programmer.h
     model/Railway.cpp

@@ -75,6 +75,8 @@ bool EmbeddedStation::start() {
         return false;
     }
     trains_ = std::make_unique<TrainMovement>(*station_, TrainTrack::demo());
+    if (report_)
+        QObject::connect(trains_.get(), &TrainMovement::occupantChanged, trains_.get(), report_);
     trains_->start();
     return true;
 }

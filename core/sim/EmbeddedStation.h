@@ -4,6 +4,7 @@
 
 #include <QString>
 #include <cstdint>
+#include <functional>
 #include <memory>
 
 namespace stellwerk::sim {
@@ -41,10 +42,18 @@ public:
 
     SimulatedStation* station() const { return station_.get(); }
 
+    // Which train is on which contact, as the simulation moves them (locId 0: none any more). A real
+    // station cannot say this; the GUI program shows the demo's trains on its plan with it. Set before
+    // start(): the trains' first places are told during start().
+    using OccupantReport =
+        std::function<void(std::uint16_t device, std::uint16_t contact, std::uint32_t locId)>;
+    void reportOccupants(OccupantReport report) { report_ = std::move(report); }
+
 private:
     std::unique_ptr<SimulatedStation> station_;
     std::unique_ptr<StationServer> server_;
     std::unique_ptr<TrainMovement> trains_;
+    OccupantReport report_;
     QString error_;
 };
 

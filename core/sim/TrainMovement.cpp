@@ -47,8 +47,8 @@ void TrainMovement::place(const TrainPlacement& placement) {
     const double length = lengthOf(placement.section);
     train.frontMm =
         std::clamp(double(placement.offsetMm), std::min(double(options_.trainLengthMm), length), length);
-    occupy(placement.section);
     trains_.push_back(std::move(train));
+    occupy(placement.section, placement.locId);
 }
 
 void TrainMovement::advance(std::chrono::milliseconds elapsed) {
@@ -85,7 +85,7 @@ bool TrainMovement::enterNext(Train& train) {
         return false;
     train.frontMm -= lengthOf(train.sections.front());
     train.sections.push_front(next);
-    occupy(next);
+    occupy(next, train.locId);
     return true;
 }
 
@@ -96,8 +96,9 @@ void TrainMovement::releaseTail(Train& train) {
     while (keep < train.sections.size() && covered < options_.trainLengthMm)
         covered += lengthOf(train.sections[keep++]);
     while (train.sections.size() > keep) {
-        release(train.sections.back());
+        const int left = train.sections.back();
         train.sections.pop_back();
+        release(left);
     }
 }
 
@@ -127,22 +128,27 @@ int TrainMovement::nextSection(const Train& train) const {
     return position && *position == exit.divergingPosition ? exit.diverging : exit.next;
 }
 
-void TrainMovement::occupy(int section) {
-    if (occupants_[std::size_t(section)]++ == 0) {
-        const FeedbackSection& watched = track_.sections[std::size_t(section)];
+void TrainMovement::occupy(int section, std::uint32_t locId) {
+    const FeedbackSection& watched = track_.sections[std::size_t(section)];
+    if (occupants_[std::size_t(section)]++ == 0)
         station_.setContact(watched.device, watched.contact, true);
-    }
+    emit occupantChanged(watched.device, watched.contact, locId); // the train that came in last
 }
 
 void TrainMovement::release(int section) {
-    if (--occupants_[std::size_t(section)] == 0) {
-        const FeedbackSection& watched = track_.sections[std::size_t(section)];
+    const FeedbackSection& watched = track_.sections[std::size_t(section)];
+    if (--occupants_[std::size_t(section)] == 0)
         station_.setContact(watched.device, watched.contact, false);
-    }
+    emit occupantChanged(watched.device, watched.contact, occupantOf(section));
 }
 
-// What the track draws: nothing without power, the decoders' idle current, and more for every running
-// train, growing with its speed.
+std::uint32_t TrainMovement::occupantOf(int section) const {
+    for (const Train& train : trains_)
+        if (std::find(train.sections.begin(), train.sections.end(), section) != train.sections.end())
+            return train.locId;
+    return 0;
+}
+
 void TrainMovement::updateLoad() {
     int load = 0;
     if (station_.power() != SimulatedStation::Power::Stopped) {

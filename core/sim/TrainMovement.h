@@ -48,6 +48,15 @@ public:
 
     std::optional<TrainPosition> position(std::uint32_t locId) const;
     bool occupied(int section) const;
+    // The Loc-ID of a train in the section (0: none); of one of them when two are.
+    std::uint32_t occupantOf(int section) const;
+
+signals:
+    // A train came into the section of a contact, or one left it (locId: the train still in it, 0 when
+    // none is): what the simulator knows and a real station cannot say, for the demo's track plan.
+    void occupantChanged(std::uint16_t device, std::uint16_t contact, std::uint32_t locId);
+
+public:
     const TrainTrack& track() const { return track_; }
     int trackLoad() const { return load_; }
 
@@ -66,7 +75,7 @@ private:
     void releaseTail(Train& train);
     void turnAround(Train& train);
     int nextSection(const Train& train) const;
-    void occupy(int section);
+    void occupy(int section, std::uint32_t locId);
     void release(int section);
     void updateLoad();
     double lengthOf(int section) const;

@@ -47,22 +47,34 @@ TileTag::TileTag(const model::LayoutTile& tile, const QRect& cell, const QFont& 
     const QString name = tile.text.trimmed();
     if (name.isEmpty() || !carriesName(tile.category) || cell.width() < MinimumTile)
         return;
-    const QFontMetrics metrics(m_font);
     // Every name stays on its tile: neighbours (a signal beside its contact, buttons in a row) carry theirs.
     // A route button's goes under the button.
-    const bool route = tile.category == Category::RouteButton;
-    const int room = cell.width() - 2;
+    place(name, cell.topLeft() + QPoint(1, 1), cell.width() - 2);
+    if (tile.category == Category::RouteButton)
+        m_rect.moveTo(cell.center().x() - m_rect.width() / 2, cell.bottom() + 1 - m_rect.height());
+}
+
+TileTag TileTag::occupant(const QString& name, const QRect& cell, const QFont& font) {
+    TileTag tag(font);
+    tag.m_occupant = true;
+    if (!name.trimmed().isEmpty() && cell.width() >= MinimumTile)
+        tag.place(name.trimmed(), cell.topLeft() + QPoint(1, 1), occupantReach(cell).width() - 2);
+    return tag;
+}
+
+QRect TileTag::occupantReach(const QRect& cell) {
+    return {cell.topLeft(), QSize(OccupantTiles * cell.width(), cell.height())};
+}
+
+// The text, shortened to `room` pixels where it is wider, on a backing with its top left at `corner`.
+void TileTag::place(const QString& name, QPoint corner, int room) {
     m_text = name;
     int advance = laidOut(name);
     if (advance + 4 > room) { // shortening lays the text out again: only where it is needed
-        m_text = metrics.elidedText(name, Qt::ElideRight, room - 4);
+        m_text = QFontMetrics(m_font).elidedText(name, Qt::ElideRight, room - 4);
         advance = laidOut(m_text);
     }
-    const QSize size(advance + 4, metrics.height());
-    const QPoint corner =
-        route ? QPoint(cell.center().x() - size.width() / 2, cell.bottom() + 1 - size.height())
-              : cell.topLeft() + QPoint(1, 1);
-    m_rect = QRect(corner, size);
+    m_rect = QRect(corner, QSize(advance + 4, QFontMetrics(m_font).height()));
 }
 
 // Places the text's glyphs once, straight from the font's tables: a repaint then only blits them. Names on
@@ -101,10 +113,11 @@ QFont TileTag::tagFont(const QFont& font, int tileSize) {
 void TileTag::paint(QPainter& painter, const TrackColors& colors) const {
     if (!shown())
         return;
-    QColor backing = colors.background;
-    backing.setAlpha(215);
+    QColor backing = m_occupant ? colors.occupied : colors.background;
+    backing.setAlpha(m_occupant ? 255 : 215);
     painter.fillRect(m_rect, backing);
-    painter.setPen(colors.text);
+    painter.setPen(m_occupant ? (colors.occupied.lightness() < 150 ? QColor(Qt::white) : QColor(Qt::black))
+                              : colors.text);
     if (m_glyphs.isEmpty())
         painter.drawStaticText(m_rect.topLeft() + QPoint(2, 0), m_shaped);
     else

@@ -28,6 +28,12 @@ public:
 
     // `font` is the plan's font; every tag of one zoom shares the font sized from it (tagFont).
     TileTag(const model::LayoutTile& tile, const QRect& cell, const QFont& font);
+    // The name of the locomotive on an occupied contact, in the occupied colour at the tile's top left; it
+    // may run over OccupantTiles tiles, since a locomotive's name is longer than a contact's number.
+    static TileTag occupant(const QString& name, const QRect& cell, const QFont& font);
+    static constexpr int OccupantTiles = 3;
+    // The area an occupant's tag may cover, for repainting the contact's tile.
+    static QRect occupantReach(const QRect& cell);
     // The font of the tags on tiles of `tileSize` pixels.
     static QFont tagFont(const QFont& font, int tileSize);
 
@@ -35,17 +41,21 @@ public:
     // Where the tag is drawn, inside the tile; empty when none is shown.
     QRect rect() const { return m_rect; }
     QString text() const { return m_text; }
+    bool isOccupant() const { return m_occupant; }
     QFont font() const { return m_font; }
     // Draws the tag; the painter's font must be font() (the tags of a page share it: setting it once
     // for all saves a font lookup per tag).
     void paint(QPainter& painter, const TrackColors& colors) const;
 
 private:
+    explicit TileTag(const QFont& font) : m_font(font) {}
     int laidOut(const QString& text);
+    void place(const QString& name, QPoint corner, int room);
 
     QFont m_font;
     QString m_text;
     QRect m_rect;
+    bool m_occupant = false;
     QGlyphRun m_glyphs;   // m_text's glyphs placed in m_font, from the rect's top left
     QStaticText m_shaped; // m_text laid out by Qt, when m_font lacks one of its characters
 };

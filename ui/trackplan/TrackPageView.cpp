@@ -74,8 +74,11 @@ std::optional<int> TrackPageView::tileAt(QPoint point) const {
 
 void TrackPageView::updateTile(int tile) {
     const QRect cell = tileRect(tile);
-    if (m_page.tiles[std::size_t(tile)].category == cs2config::TrackCategory::Text)
+    const auto category = m_page.tiles[std::size_t(tile)].category;
+    if (category == cs2config::TrackCategory::Text)
         update(QRect(0, cell.top(), width(), cell.height()).united(cell.adjusted(0, -width(), 0, width())));
+    else if (category == cs2config::TrackCategory::Feedback)
+        update(TileTag::occupantReach(cell)); // the name of the locomotive on it runs further
     else
         update(cell);
 }
@@ -135,13 +138,22 @@ void TrackPageView::paintTags(QPainter& painter, const QRect& area) {
         return;
     const QFont font = tagFont();
     painter.setFont(font);
+    std::vector<TileTag> occupants; // drawn last: they run over their neighbours' names
     const int tiles = int(m_page.tiles.size());
     for (int i = 0; i < tiles; ++i) {
-        if (!tileRect(i).intersects(area)) // a tag stays on its tile
-            continue;
-        m_tags.tag(i, tiles, [&] { return TileTag(m_page.tiles[std::size_t(i)], tileRect(i), font); })
-            .paint(painter, m_colors);
+        const QRect cell = tileRect(i);
+        if (m_page.tiles[std::size_t(i)].category == cs2config::TrackCategory::Feedback &&
+            TileTag::occupantReach(cell).intersects(area))
+            if (const QString occupant = m_look(i).occupant; !occupant.isEmpty()) {
+                occupants.push_back(TileTag::occupant(occupant, cell, font));
+                continue;
+            }
+        if (cell.intersects(area)) // a name stays on its tile
+            m_tags.tag(i, tiles, [&] { return TileTag(m_page.tiles[std::size_t(i)], cell, font); })
+                .paint(painter, m_colors);
     }
+    for (const TileTag& tag : occupants)
+        tag.paint(painter, m_colors);
 }
 
 QFont TrackPageView::tagFont() const {

@@ -284,8 +284,10 @@ TrackTileLook TrackPlanPanel::lookOn(const model::TrackLayout& layout, model::Ti
         if (const model::Accessory* accessory = m_railway->accessory(*tile.accessory))
             look.position = accessory->position();
     if (tile.contact)
-        if (const model::FeedbackContact* contact = m_railway->contact(*tile.contact))
+        if (const model::FeedbackContact* contact = m_railway->contact(*tile.contact)) {
             look.occupied = contact->occupied();
+            look.occupant = occupantName(*contact);
+        }
     if (tile.route)
         if (const model::Route* route = m_railway->route(*tile.route))
             look.running = route->running();
@@ -304,9 +306,20 @@ QString TrackPlanPanel::toolTipOn(const model::TrackLayout& layout, model::TileR
     else if (tile.route && isLive())
         if (const model::Route* route = m_railway->route(*tile.route))
             name = route->name();
-    const QString tip = TrackTileInfo::toolTip(tile, name);
+    QString tip = TrackTileInfo::toolTip(tile, name);
+    if (tile.contact && isLive())
+        if (const model::FeedbackContact* contact = m_railway->contact(*tile.contact); contact)
+            if (const QString occupant = occupantName(*contact); !occupant.isEmpty())
+                tip += QStringLiteral("\n") + tr("Locomotive on it: %1").arg(occupant);
     const bool hasState = tile.accessory || tile.contact || tile.route;
     return hasState && isLive() && !isReported() ? tip + QStringLiteral("\n") + NotReported::reason() : tip;
+}
+
+// The name of the locomotive on an occupied contact, where the simulator or the user said which it is.
+QString TrackPlanPanel::occupantName(const model::FeedbackContact& contact) const {
+    const model::Locomotive* locomotive =
+        contact.occupied() ? m_railway->locomotive(contact.occupant()) : nullptr;
+    return locomotive ? locomotive->displayName() : QString();
 }
 
 bool TrackPlanPanel::isLive() const {

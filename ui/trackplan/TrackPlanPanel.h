@@ -22,8 +22,9 @@ namespace stellwerk::connection {
 class StationConnection;
 }
 namespace stellwerk::model {
+class FeedbackContact;
 class Railway;
-}
+} // namespace stellwerk::model
 
 namespace stellwerk::ui {
 
@@ -94,6 +95,7 @@ protected:
 private:
     void rebuild();
     // True while the pages shown are the railway's, with its live states.
+    QString occupantName(const model::FeedbackContact& contact) const;
     bool isLive() const;
     bool isReported() const;
     TrackTileLook lookOn(const model::TrackLayout& layout, model::TileRef ref) const;

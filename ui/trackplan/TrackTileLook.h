@@ -15,7 +15,8 @@ struct TrackTileLook {
     bool occupied = false; // an S88 contact a train occupies
     bool running = false;  // a route button whose route runs
     QString text;
-    bool onRoute = false; // part of a set route: its button, or an accessory it holds
+    bool onRoute = false;  // part of a set route: its button, or an accessory it holds
+    QString occupant = {}; // the locomotive on an occupied contact, where the simulator or the user says
 };
 
 } // namespace stellwerk::ui

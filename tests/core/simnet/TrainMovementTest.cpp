@@ -60,6 +60,30 @@ TEST_F(TrainMovementTest, PlacedTrainOccupiesItsSectionAtStart) {
     EXPECT_TRUE(station_.contact(0, 1));
 }
 
+// What a real station cannot say and the simulator can: which train is on which contact.
+TEST_F(TrainMovementTest, TellsWhichTrainComesOntoAContactAndWhenItLeaves) {
+    TrainTrack track = TrainTrack::demo();
+    track.placements = {{Br218, *track.find("Gleis 1"), 1500}};
+    TrainMovement movement(station_, std::move(track));
+    std::vector<std::pair<std::uint16_t, std::uint32_t>> told; // contact, Loc-ID
+    QObject::connect(&movement, &TrainMovement::occupantChanged,
+                     [&told](std::uint16_t, std::uint16_t contact, std::uint32_t locId) {
+                         told.emplace_back(contact, locId);
+                     });
+    movement.start();
+    movement.stop();
+    EXPECT_EQ(told, (std::vector<std::pair<std::uint16_t, std::uint32_t>>{{1, Br218}}))
+        << "placed on Gleis 1";
+    EXPECT_EQ(movement.occupantOf(*movement.track().find("Gleis 1")), Br218);
+    told.clear();
+    station_.receive(test::speed(Br218, 1000));
+    for (int step = 0; step < 20; ++step) // 2 s at 500 mm/s: into Ausfahrt Ost, clear of Gleis 1
+        movement.advance(100ms);
+    EXPECT_EQ(told, (std::vector<std::pair<std::uint16_t, std::uint32_t>>{{8, Br218}, {1, 0}}));
+    EXPECT_EQ(movement.occupantOf(*movement.track().find("Ausfahrt Ost")), Br218);
+    EXPECT_EQ(movement.occupantOf(*movement.track().find("Gleis 1")), 0u);
+}
+
 TEST_F(TrainMovementTest, RunningForwardPassesTheContactsAroundTheLoopInOrder) {
     placeBr218("Gleis 1", 1500);
     station_.receive(test::speed(Br218, 1000)); // 500 mm/s: once round the 14.4 m loop

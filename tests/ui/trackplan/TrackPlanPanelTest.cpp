@@ -6,9 +6,12 @@
 #include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "support/StationTestSupport.h"
+#include "trackplan/TileTag.h"
+#include "trackplan/TrackColors.h"
 #include "trackplan/TrackPageView.h"
 #include "trackplan/TrackTileLook.h"
 
+#include <QImage>
 #include <QSignalSpy>
 #include <QTabWidget>
 #include <QTemporaryDir>
@@ -97,6 +100,54 @@ TEST_F(TrackPlanPanelTest, AnS88EventLightsTheContactTile) {
     const bool before = panel.lookOf(*contactTile).occupied;
     server.station().setContact(std::uint16_t(key >> 16), std::uint16_t(key & 0xFFFF), !before);
     EXPECT_TRUE(QTest::qWaitFor([&] { return panel.lookOf(*contactTile).occupied == !before; }, CommandMs));
+}
+
+namespace {
+
+// Pixels of the occupied colour in the tiles right of a contact's, where only a locomotive's name reaches.
+int occupiedBeyond(TrackPageView* view, int tile) {
+    const QImage image = view->grab().toImage();
+    const QColor occupied = TrackColors::from(view->palette()).occupied;
+    const QRect cell = view->tileRect(tile);
+    const QRect beyond(cell.right() + 3, cell.top(), cell.width() * 2 - 6, cell.height() / 3);
+    int count = 0;
+    for (int y = beyond.top(); y <= beyond.bottom(); ++y)
+        for (int x = beyond.left(); x <= beyond.right(); ++x)
+            count += QColor(image.pixel(QPoint(x, y) * image.devicePixelRatio())) == occupied;
+    return count;
+}
+
+} // namespace
+
+// The demo's simulator says which train is where (Railway::reportOccupant); the plan names it on the
+// occupied contact, and forgets it when the contact is free.
+TEST_F(TrackPlanPanelTest, AnOccupiedContactShowsTheNameOfTheLocomotiveOnIt) {
+    const std::optional<model::TileRef> contactTile = firstTile(cs2config::TrackCategory::Feedback);
+    ASSERT_TRUE(contactTile);
+    panel.pageTabs()->setCurrentIndex(contactTile->page);
+    TrackPageView* view = panel.pageView(contactTile->page);
+    ASSERT_GE(view->tileSize(), TileTag::MinimumTile);
+    const model::ContactKey key = *panel.layout()->tile(*contactTile).contact;
+    const auto device = std::uint16_t(key >> 16), contact = std::uint16_t(key & 0xFFFF);
+    server.station().setContact(device, contact, true);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.lookOf(*contactTile).occupied; }, CommandMs));
+    EXPECT_EQ(panel.lookOf(*contactTile).occupant, QString()) << "nobody said which train it is";
+    const int before = occupiedBeyond(view, contactTile->tile);
+
+    railways.railway()->reportOccupant(key, 0x4001); // BR 218 Ost in the demo's lokomotive.cs2
+    EXPECT_EQ(panel.lookOf(*contactTile).occupant, QStringLiteral("BR 218 Ost"));
+    EXPECT_TRUE(panel.toolTipOf(*contactTile).contains(QStringLiteral("Locomotive on it: BR 218 Ost")));
+    QTest::qWait(50);
+    EXPECT_GT(occupiedBeyond(view, contactTile->tile), before + 20) << "the name runs over the next tiles";
+
+    railways.railway()->reportOccupant(key, 0x7777); // a Loc-ID the station does not know
+    EXPECT_EQ(panel.lookOf(*contactTile).occupant, QString());
+    railways.railway()->reportOccupant(key, 0x4001);
+    server.station().setContact(device, contact, false);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !panel.lookOf(*contactTile).occupied; }, CommandMs));
+    EXPECT_EQ(panel.lookOf(*contactTile).occupant, QString()) << "the train left";
+    QTest::qWait(50);
+    EXPECT_EQ(occupiedBeyond(view, contactTile->tile), 0) << "and its name is gone from the plan";
 }
 
 TEST_F(TrackPlanPanelTest, ClickingARouteButtonRunsTheRouteAndMarksTheButton) {
