@@ -170,6 +170,17 @@
     </message>
 </context>
 <context>
+    <name>TileMenu</name>
+    <message>
+        <source>Locomotive on this contact</source>
+        <translation>Lok auf diesem Kontakt</translation>
+    </message>
+    <message>
+        <source>Not known</source>
+        <translation>Nicht bekannt</translation>
+    </message>
+</context>
+<context>
     <name>TrackTileInfo</name>
     <message>
         <source>Straight track</source>

@@ -7,6 +7,7 @@
 #include "model/Railway.h"
 #include "trackplan/PageZoom.h"
 #include "trackplan/SetRoutes.h"
+#include "trackplan/TileMenu.h"
 #include "trackplan/TrackPageView.h"
 #include "trackplan/TrackTileInfo.h"
 #include "trackplan/TrackTileLook.h"
@@ -387,25 +388,11 @@ void TrackPlanPanel::tileClicked(int page, int tile) {
 }
 
 void TrackPlanPanel::showTileMenu(int page, int tile, QPoint where) {
-    const model::LayoutTile& t = m_layout->tile({page, tile});
-    if (!t.accessory || !isLive() || !isReported())
-        return;
-    const model::Accessory* accessory = m_railway->accessory(*t.accessory);
-    if (!accessory)
+    if (!isLive() || !isReported())
         return;
     QMenu menu(this);
-    menu.setObjectName(QStringLiteral("trackTileMenu"));
-    for (int position = 0; position < accessory->positionCount(); ++position) {
-        QAction* action = menu.addAction(TrackTileInfo::positionName(t.type, t.category, position));
-        action->setCheckable(true);
-        action->setChecked(position == accessory->position());
-        const std::int64_t id = accessory->id();
-        connect(action, &QAction::triggered, this, [this, id, position] {
-            if (m_railway)
-                m_railway->switchAccessory(id, position);
-        });
-    }
-    menu.exec(where);
+    if (TileMenu::fill(menu, m_layout->tile({page, tile}), *m_railway))
+        menu.exec(where);
 }
 
 void TrackPlanPanel::goToPage(std::int64_t pageId) {

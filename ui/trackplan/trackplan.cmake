@@ -7,6 +7,7 @@ target_sources(stellwerk-ui PRIVATE
     trackplan/TrackColors.cpp trackplan/TrackColors.h
     trackplan/PageZoom.cpp trackplan/PageZoom.h
     trackplan/SetRoutes.cpp trackplan/SetRoutes.h
+    trackplan/TileMenu.cpp trackplan/TileMenu.h
     trackplan/TileTag.cpp trackplan/TileTag.h
     trackplan/TrackPageView.cpp trackplan/TrackPageView.h
     trackplan/TrackPlanPanel.cpp trackplan/TrackPlanPanel.h

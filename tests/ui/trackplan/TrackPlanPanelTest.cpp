@@ -6,12 +6,15 @@
 #include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "support/StationTestSupport.h"
+#include "trackplan/TileMenu.h"
 #include "trackplan/TileTag.h"
 #include "trackplan/TrackColors.h"
 #include "trackplan/TrackPageView.h"
 #include "trackplan/TrackTileLook.h"
 
+#include <QAction>
 #include <QImage>
+#include <QMenu>
 #include <QSignalSpy>
 #include <QTabWidget>
 #include <QTemporaryDir>
@@ -148,6 +151,59 @@ TEST_F(TrackPlanPanelTest, AnOccupiedContactShowsTheNameOfTheLocomotiveOnIt) {
     EXPECT_EQ(panel.lookOf(*contactTile).occupant, QString()) << "the train left";
     QTest::qWait(50);
     EXPECT_EQ(occupiedBeyond(view, contactTile->tile), 0) << "and its name is gone from the plan";
+}
+
+namespace {
+
+QAction* actionNamed(const QMenu& menu, const QString& text) {
+    for (QAction* action : menu.actions())
+        if (action->text() == text)
+            return action;
+    return nullptr;
+}
+
+} // namespace
+
+// A real station cannot say which train is on a contact: the user can, from the contact's menu.
+TEST_F(TrackPlanPanelTest, TheMenuOfAnOccupiedContactSaysWhichLocomotiveIsOnIt) {
+    const std::optional<model::TileRef> contactTile = firstTile(cs2config::TrackCategory::Feedback);
+    ASSERT_TRUE(contactTile);
+    const model::LayoutTile& tile = panel.layout()->tile(*contactTile);
+    QMenu free;
+    EXPECT_FALSE(TileMenu::fill(free, tile, *railways.railway())) << "a free contact has nobody to name";
+
+    server.station().setContact(std::uint16_t(*tile.contact >> 16), std::uint16_t(*tile.contact & 0xFFFF),
+                                true);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.lookOf(*contactTile).occupied; }, CommandMs));
+    QMenu menu;
+    ASSERT_TRUE(TileMenu::fill(menu, tile, *railways.railway()));
+    QAction* unknown = actionNamed(menu, QStringLiteral("Not known"));
+    QAction* br218 = actionNamed(menu, QStringLiteral("BR 218 Ost"));
+    ASSERT_TRUE(unknown && br218);
+    EXPECT_TRUE(unknown->isChecked());
+    EXPECT_EQ(menu.actions().size(), 2 + int(railways.railway()->state().locomotives().items().size()))
+        << "a heading, 'not known' and every locomotive";
+    br218->trigger();
+    EXPECT_EQ(panel.lookOf(*contactTile).occupant, QStringLiteral("BR 218 Ost"));
+
+    QMenu again;
+    ASSERT_TRUE(TileMenu::fill(again, tile, *railways.railway()));
+    EXPECT_TRUE(actionNamed(again, QStringLiteral("BR 218 Ost"))->isChecked());
+    actionNamed(again, QStringLiteral("Not known"))->trigger();
+    EXPECT_EQ(panel.lookOf(*contactTile).occupant, QString());
+}
+
+TEST_F(TrackPlanPanelTest, TheMenuOfATurnoutSwitchesItToThePositionChosen) {
+    const std::optional<model::TileRef> turnout = firstTile(cs2config::TrackCategory::Turnout);
+    ASSERT_TRUE(turnout);
+    const int before = panel.lookOf(*turnout).position;
+    QMenu menu;
+    ASSERT_TRUE(TileMenu::fill(menu, panel.layout()->tile(*turnout), *railways.railway()));
+    ASSERT_GE(menu.actions().size(), 2);
+    EXPECT_TRUE(menu.actions().at(before)->isChecked());
+    menu.actions().at((before + 1) % 2)->trigger();
+    EXPECT_TRUE(
+        QTest::qWaitFor([&] { return panel.lookOf(*turnout).position == (before + 1) % 2; }, CommandMs));
 }
 
 TEST_F(TrackPlanPanelTest, ClickingARouteButtonRunsTheRouteAndMarksTheButton) {
