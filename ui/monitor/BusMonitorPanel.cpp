@@ -438,6 +438,8 @@ void BusMonitorPanel::retranslate() {
     m_history->setSuffix(tr(" frames"));
     m_history->setToolTip(tr("How many frames the table keeps; older ones are dropped"));
     emit m_model->headerDataChanged(Qt::Horizontal, 0, BusMonitorModel::ColumnCount - 1);
+    if (m_connection && m_replay->state() == BusMonitorReplay::State::Idle)
+        takeBuses(); // the station's bus is named in the language
     retranslateReplay();
     updateCounter();
 }

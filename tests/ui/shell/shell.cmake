@@ -6,6 +6,7 @@ target_sources(stellwerk-ui-tests PRIVATE
     shell/ControlDeskTest.cpp
     shell/DeskFitTest.cpp
     shell/FileAndHelpMenuTest.cpp
+    shell/LanguageSwitchTest.cpp
     shell/LanguageTest.cpp
     shell/MainWindowTest.cpp
     shell/TranslationFileTest.cpp
