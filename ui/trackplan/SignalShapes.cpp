@@ -82,25 +82,32 @@ QPointF lampCentre(std::size_t lamp, std::size_t lamps) {
     return {0.23 + step * (0.5 + double(lamp)), 0.76};
 }
 
+// A semaphore as large as a light signal's head: a broad arm with a disc at its end, in the aspect's colour,
+// level at stop and raised at proceed; the second arm (Hp2) below it. The track is drawn over the arms'
+// tips, which a raised arm reaches up to.
 void formSignal(TileCanvas& c) {
     c.unit();
-    c.line(West, East, c.trackColor());
     const bool twoArms =
         c.look.type.contains(QLatin1String("hp02")) || c.look.type.contains(QLatin1String("hp012"));
-    mast(c, 0.3, 0.62);
-    const auto arm = [&c](double y, bool raised) {
-        const QPointF root(0.3, y);
-        c.line(root, raised ? root + QPointF(0.32, -0.22) : root + QPointF(0.45, 0), aspectColor(c), 0.08);
+    mast(c, 0.2, 0.58);
+    const auto arm = [&c](double y, double length, double width, bool raised) {
+        QPainterPath paddle;
+        paddle.addRect(QRectF(0, -width / 2, length, width));
+        paddle.addEllipse(QPointF(length, 0), width * 0.75, width * 0.75);
+        paddle.setFillRule(Qt::WindingFill);
+        const QTransform place = QTransform::fromTranslate(0.2, y).rotate(raised ? -40 : 0);
+        c.fill(place.map(paddle.simplified()), aspectColor(c), QColor());
         QPainterPath hub;
-        hub.addEllipse(root, 0.04, 0.04);
+        hub.addEllipse(QPointF(0.2, y), 0.045, 0.045);
         c.fill(hub, c.colors.track, QColor());
     };
-    arm(0.7, c.look.position >= 1);
+    arm(twoArms ? 0.7 : 0.8, 0.44, 0.14, c.look.position >= 1);
     if (twoArms)
-        arm(0.86, c.look.position == 2);
+        arm(0.9, 0.36, 0.1, c.look.position == 2);
+    c.line(West, East, c.trackColor());
     if (c.look.type.endsWith(QLatin1Char('s'))) {
         QPainterPath lamp;
-        lamp.addEllipse(QPointF(0.18, 0.78), 0.05, 0.05);
+        lamp.addEllipse(QPointF(0.08, 0.8), 0.05, 0.05);
         c.fill(lamp, c.look.position == 3 ? c.colors.white : c.colors.dim, c.colors.track, 0.02);
     }
 }

@@ -154,6 +154,46 @@ TEST(TrackTilePainter, ASignalLightsTheLampOfItsAspect) {
     EXPECT_GE(lit * 100, 3 * Size * Size) << lit << " green pixels";
 }
 
+namespace {
+
+int pixelsOf(const QImage& image, const QColor& color) {
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            count += image.pixelColor(x, y).rgb() == color.rgb();
+    return count;
+}
+
+} // namespace
+
+// A semaphore reads as well as a light signal: its arm in the aspect's colour covers at least as much of the
+// tile as a lit lamp, and it is raised (reaching higher up the tile) at proceed.
+TEST(TrackTilePainter, AFormSignalShowsItsArmLargeInTheColourOfItsAspect) {
+    TrackTileLook look{
+        QStringLiteral("signal_f_hp01"), cs2config::TrackCategory::Signal, 0, 0, false, false, {}};
+    const TrackColors colors = TrackColors::from(paletteOf(false));
+    const QImage stop = render(look, false);
+    look.position = 1;
+    const QImage proceed = render(look, false);
+    // (The arm of 20 px by 4 px drawn before covered 2.5 % at stop, 1.6 % raised.)
+    EXPECT_GE(pixelsOf(stop, colors.red) * 1000, 45 * Size * Size) << "a red arm at stop";
+    EXPECT_GE(pixelsOf(proceed, colors.green) * 100, 3 * Size * Size)
+        << "a green arm at proceed, partly behind the track";
+    EXPECT_EQ(pixelsOf(proceed, colors.red), 0);
+    const auto middle = [](const QImage& image, const QColor& color) { // the mean row of the colour
+        double rows = 0;
+        int count = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                if (image.pixelColor(x, y).rgb() == color.rgb()) {
+                    rows += y;
+                    ++count;
+                }
+        return count ? rows / count : 0.0;
+    };
+    EXPECT_LT(middle(proceed, colors.green) + Size / 10.0, middle(stop, colors.red)) << "raised at proceed";
+}
+
 TEST(TrackTilePainter, AnUnknownTypeStillShowsAMark) {
     const TrackTileLook look{
         QStringLiteral("custom_perm_left"), cs2config::TrackCategory::Unknown, 0, -1, false, false, {}};
