@@ -860,6 +860,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
+    <message>
+        <source>Locomotive</source>
+        <translation>Lok</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::DeviceSettingEditor</name>

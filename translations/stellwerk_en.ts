@@ -857,6 +857,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>%1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Locomotive</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::DeviceSettingEditor</name>

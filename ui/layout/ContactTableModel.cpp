@@ -112,10 +112,19 @@ QVariant ContactTableModel::display(const model::FeedbackContact& contact, int c
     case State:
         return NotReported::applies(railway_) ? tr("%1 (%2)").arg(stateText(contact), NotReported::word())
                                               : stateText(contact);
+    case Locomotive:
+        return occupantText(contact);
     case LastChange:
         return lastChangeText(contact);
     }
     return {};
+}
+
+// The locomotive on an occupied contact, where the simulator or the user said which it is.
+QString ContactTableModel::occupantText(const model::FeedbackContact& contact) const {
+    const model::Locomotive* locomotive =
+        contact.occupied() ? railway_->locomotive(contact.occupant()) : nullptr;
+    return locomotive ? locomotive->displayName() : QString();
 }
 
 QVariant ContactTableModel::lamp(const model::FeedbackContact& contact) const {
@@ -136,6 +145,8 @@ QVariant ContactTableModel::headerData(int section, Qt::Orientation orientation,
         return tr("Name");
     case State:
         return tr("State");
+    case Locomotive:
+        return tr("Locomotive");
     case LastChange:
         return tr("Last change");
     }

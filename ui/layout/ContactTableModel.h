@@ -22,7 +22,7 @@ class ContactTableModel final : public QAbstractTableModel {
     Q_DISABLE_COPY_MOVE(ContactTableModel)
 
 public:
-    enum Column { Number, Name, State, LastChange, ColumnCount };
+    enum Column { Number, Name, State, Locomotive, LastChange, ColumnCount };
 
     explicit ContactTableModel(QObject* parent = nullptr);
 
@@ -49,6 +49,7 @@ private:
     void update(const QList<quint32>& keys);
     void insertNew();
     QVariant display(const model::FeedbackContact& contact, int column) const;
+    QString occupantText(const model::FeedbackContact& contact) const;
     QVariant lamp(const model::FeedbackContact& contact) const;
 
     QPointer<const model::Railway> railway_;

@@ -26,8 +26,10 @@ LayoutOverview::LayoutOverview(QWidget* parent)
     contactBox_ = tableBox(contactView_, QStringLiteral("contactBox"));
     tables->addWidget(locomotiveBox_);
     tables->addWidget(contactBox_);
-    tables->setStretchFactor(0, 3);
-    tables->setStretchFactor(1, 2);
+    // Half each: the contacts' five columns need as much room as the locomotives' (whose functions column
+    // has room to spare); at 1366 px the contacts would scroll sideways with less.
+    tables->setStretchFactor(0, 1);
+    tables->setStretchFactor(1, 1);
     // Below the plan the height is short: little chrome, so that the tables show several rows.
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 2, 4, 2);

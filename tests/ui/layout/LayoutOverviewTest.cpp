@@ -103,6 +103,23 @@ TEST_F(LayoutOverviewTest, ListsTheDemosFeedbackContactsInNumberOrder) {
     EXPECT_FALSE(contacts.index(0, ContactTableModel::State).data(Qt::DecorationRole).isNull());
 }
 
+// Which train is on an occupied contact, as the simulator or the user says (the plan shows it too).
+TEST_F(LayoutOverviewTest, AnOccupiedContactNamesTheLocomotiveOnIt) {
+    const ContactTableModel& contacts = *overview.contacts();
+    ASSERT_EQ(cell(contacts, 0, ContactTableModel::State), QStringLiteral("occupied"));
+    EXPECT_EQ(cell(contacts, 0, ContactTableModel::Locomotive), QString()) << "nobody said";
+    QSignalSpy changed(&contacts, &QAbstractItemModel::dataChanged);
+    railways.railway()->reportOccupant(model::contactKey(0, 1), 0x4001);
+    EXPECT_EQ(cell(contacts, 0, ContactTableModel::Locomotive), QStringLiteral("BR 218 Ost"));
+    EXPECT_EQ(changed.count(), 1) << "the row is told, without a reset";
+    EXPECT_EQ(header(contacts, ContactTableModel::Locomotive), QStringLiteral("Locomotive"));
+    // Einfahrt West (7): the running trains need many seconds to reach it.
+    ASSERT_EQ(cell(contacts, 6, ContactTableModel::State), QStringLiteral("free"));
+    railways.railway()->reportOccupant(model::contactKey(0, 7), 0x4001);
+    EXPECT_EQ(cell(contacts, 6, ContactTableModel::Locomotive), QString())
+        << "a free contact has nobody on it";
+}
+
 TEST_F(LayoutOverviewTest, TrackPowerIsOnInTheEmbeddedDemo) {
     EXPECT_TRUE(QTest::qWaitFor([this] { return railways.railway()->power().has_value(); }, CommandMs));
     EXPECT_EQ(overview.powerText(), QStringLiteral("Track power: on, trains may run"));
@@ -148,6 +165,7 @@ TEST_F(LayoutOverviewTest, DeutschTranslatesHeadersStatesAndPower) {
     EXPECT_EQ(header(contacts, ContactTableModel::Number), QStringLiteral("Kontakt"));
     EXPECT_EQ(header(contacts, ContactTableModel::State), QStringLiteral("Zustand"));
     EXPECT_EQ(header(contacts, ContactTableModel::LastChange), QStringLiteral("Letzte Änderung"));
+    EXPECT_EQ(header(contacts, ContactTableModel::Locomotive), QStringLiteral("Lok"));
     EXPECT_EQ(cell(contacts, 0, ContactTableModel::State), QStringLiteral("besetzt"));
     EXPECT_EQ(overview.powerText(), QStringLiteral("Gleisspannung: an, Züge dürfen fahren"));
 }

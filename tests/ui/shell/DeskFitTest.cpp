@@ -16,6 +16,7 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QStringList>
+#include <QTableView>
 #include <QToolBar>
 #include <QToolButton>
 #include <QWidgetAction>
@@ -28,6 +29,7 @@ namespace {
 
 constexpr quint32 Br218 = 0x4001; // locomotives of the demo layout
 constexpr quint32 V100 = 0x18;
+constexpr quint32 IceVelaro = 0x4002;
 
 using Desk = std::tuple<QSize, Language>;
 
@@ -79,6 +81,11 @@ bool isShown(const QWidget* widget) {
 
 QStringList sidewaysScrolling(const QWidget* dock) {
     QStringList found;
+    // The overview's tables show all their columns (the bus monitor's long table may scroll).
+    if (const QWidget* overview = dock->findChild<QWidget*>(QStringLiteral("layoutOverview")))
+        for (const QTableView* table : overview->findChildren<QTableView*>())
+            if (isShown(table) && table->horizontalScrollBar()->isVisible())
+                found << QStringLiteral("%1 scrolls sideways").arg(nameOf(table));
     for (const QScrollArea* scroll : dock->findChildren<QScrollArea*>())
         if (isShown(scroll) && scroll->horizontalScrollBar()->isVisible())
             found << QStringLiteral("%1 scrolls sideways (%2 of %3 px)")
@@ -96,6 +103,17 @@ protected:
     void SetUp() override {
         DeskOnTestStation::SetUp();
         ASSERT_NE(window->throttlePanel()->addThrottle(Br218), nullptr);
+        // Trains on two contacts, named as the demo names them: the contacts' widest rows.
+        for (const quint16 contact : {1, 2}) {
+            server.station().setContact(0, contact, true);
+            ASSERT_TRUE(QTest::qWaitFor(
+                [&] {
+                    const model::FeedbackContact* c = railway()->contact(model::contactKey(0, contact));
+                    return c && c->occupied();
+                },
+                CommandMs));
+            railway()->reportOccupant(model::contactKey(0, contact), contact == 1 ? IceVelaro : Br218);
+        }
         QTest::qWait(100);
     }
 
