@@ -47,6 +47,10 @@ public:
     // Which locomotive (Loc-ID; 0: nobody) is on a contact, as the simulator or the user says: the station
     // cannot report it. Forgotten when the contact is reported free. Announced as contactsChanged.
     void reportOccupant(ContactKey key, std::uint32_t locId);
+    // The locomotive on an occupied contact, where someone said which it is and the station knows it.
+    const Locomotive* locomotiveOn(const FeedbackContact& contact) const {
+        return contact.occupied() ? locomotive(contact.occupant()) : nullptr;
+    }
     const Route* route(std::int64_t id) const { return state_.routes().find(id); }
     // True when every accessory of the route stands where the route leaves it, as the station confirmed.
     bool isRouteSet(std::int64_t id) const;

@@ -122,8 +122,7 @@ QVariant ContactTableModel::display(const model::FeedbackContact& contact, int c
 
 // The locomotive on an occupied contact, where the simulator or the user said which it is.
 QString ContactTableModel::occupantText(const model::FeedbackContact& contact) const {
-    const model::Locomotive* locomotive =
-        contact.occupied() ? railway_->locomotive(contact.occupant()) : nullptr;
+    const model::Locomotive* locomotive = railway_->locomotiveOn(contact);
     return locomotive ? locomotive->displayName() : QString();
 }
 

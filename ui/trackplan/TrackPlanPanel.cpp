@@ -318,8 +318,7 @@ QString TrackPlanPanel::toolTipOn(const model::TrackLayout& layout, model::TileR
 
 // The name of the locomotive on an occupied contact, where the simulator or the user said which it is.
 QString TrackPlanPanel::occupantName(const model::FeedbackContact& contact) const {
-    const model::Locomotive* locomotive =
-        contact.occupied() ? m_railway->locomotive(contact.occupant()) : nullptr;
+    const model::Locomotive* locomotive = m_railway->locomotiveOn(contact);
     return locomotive ? locomotive->displayName() : QString();
 }
 
