@@ -133,3 +133,10 @@ reading = bytes([1, 0xFD, 0x30, 0xF0, 0xE0, 0xC0, 0, 0]) + struct.pack(">HHHH", 
 write("status_data", "reading", status_frames(bytes(16) + reading))
 config = bytes([2, 1, 2, 0, 0, 0, 0, 0]) + b"Sprache\0Deutsch\0English\0"
 write("status_data", "config-list", status_frames(config))
+
+# Locomotive pictures: .icon values as stations write them, and a PNG header (240 x 80).
+write("loco_picture", "cs2-name", b"BR 218")
+write("loco_picture", "cs3-path", b"#2Fusr#2Flocal#2Fcs3#2Flokicons#2FmSD3_Logo")
+write("loco_picture", "climbing", b"../../etc/passwd")
+write("loco_picture", "png-header", b"\x89PNG\r\n\x1a\n" + struct.pack(">I", 13) + b"IHDR" +
+      struct.pack(">II", 240, 80) + b"\x08\x06\0\0\0" + bytes(4))

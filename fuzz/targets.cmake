@@ -8,6 +8,7 @@ set(STELLWERK_FUZZ_TARGETS
     cs2_document    # a .cs2 file -> Document and the typed reader its name selects -> write, json
     config_stream   # config-data stream frames -> ConfigStreamReceiver (CRC, inflate, limits)
     status_data     # status-data configuration packets -> device, reading and config channels
+    loco_picture    # a loco's .icon value -> picture file name; picture bytes -> PNG header check
 )
 
 file(GLOB STELLWERK_FUZZED_SOURCES CONFIGURE_DEPENDS

@@ -76,6 +76,9 @@ shared_seeds() {
             ;;
         esac
     done < <(find "$shared/corpus" -name '*.cs2' -print0)
+    if [[ $target == loco_picture ]]; then
+        cp resources/demo-layout/icons/*.png "$folder/"
+    fi
     if [[ $target == frame_text ]]; then
         while IFS= read -r -d '' file; do
             split -l 1 -a 3 "$file" "$folder/$(basename "$file")-"

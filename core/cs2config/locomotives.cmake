@@ -7,6 +7,7 @@ target_sources(stellwerk-cs2config PRIVATE
     cs2config/LocomotiveEditor.cpp
     cs2config/LocomotiveFile.cpp
     cs2config/LocomotiveJson.cpp
+    cs2config/LocomotivePicture.cpp
     cs2config/LocomotiveRecord.cpp
     cs2config/LocomotiveSections.cpp
     cs2config/LocomotiveStateFile.cpp
