@@ -1,7 +1,7 @@
 // A locomotive's `.icon` value and the bytes a station serves as its picture (cs2config::picture).
 // Invariants: a file name is safe to join to a folder and a URL (one segment, valid UTF-8, no control
 // character, backslash, '#' or '?', ends in ".png", bounded); bytes accepted as a picture are at most
-// MaxBytes and their header's size is within MaxSide.
+// MaxBytes, end in the IEND chunk and their header's size is within MaxSide.
 #include "FuzzSupport.h"
 #include "cs2config/LocomotivePicture.h"
 
@@ -33,6 +33,8 @@ void checkBytes(std::string_view bytes) {
     if (picture::problem(bytes, &size))
         return;
     fuzz::check(bytes.size() <= picture::MaxBytes, "a picture over the byte limit accepted");
+    fuzz::check(bytes.ends_with(std::string_view("\0\0\0\0IEND\xAE\x42\x60\x82", 12)),
+                "a picture cut off before its IEND chunk accepted");
     fuzz::check(size.width >= 1 && size.width <= picture::MaxSide && size.height >= 1 &&
                     size.height <= picture::MaxSide,
                 "a picture size outside the limits accepted");

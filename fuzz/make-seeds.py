@@ -139,4 +139,4 @@ write("loco_picture", "cs2-name", b"BR 218")
 write("loco_picture", "cs3-path", b"#2Fusr#2Flocal#2Fcs3#2Flokicons#2FmSD3_Logo")
 write("loco_picture", "climbing", b"../../etc/passwd")
 write("loco_picture", "png-header", b"\x89PNG\r\n\x1a\n" + struct.pack(">I", 13) + b"IHDR" +
-      struct.pack(">II", 240, 80) + b"\x08\x06\0\0\0" + bytes(4))
+      struct.pack(">II", 240, 80) + b"\x08\x06\0\0\0" + bytes(4) + bytes(4) + b"IEND\xae\x42\x60\x82")

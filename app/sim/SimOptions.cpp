@@ -21,8 +21,9 @@ struct Parser {
                                     "15730"};
     QCommandLineOption tcpPort{"tcp-port", "TCP port for 13-byte frame streams (default 15731).", "port",
                                "15731"};
-    QCommandLineOption httpPort{"http-port", "HTTP port serving /config/<file> (default 8080; 0: none).",
-                                "port", "8080"};
+    QCommandLineOption httpPort{
+        "http-port", "HTTP port serving /config/<file> and /icons/<picture>.png (default 8080; 0: none).",
+        "port", "8080"};
     QCommandLineOption can{"can",
                            "Also put the frames on a CAN interface (plugin:interface, e.g. socketcan:can0).",
                            "plugin:interface"};
@@ -85,7 +86,8 @@ std::optional<QString> readCan(const Parser& p, SimOptions& options) {
     const qsizetype colon = text.indexOf(':');
     if (colon <= 0 || colon == text.size() - 1)
         return "--can: '" + text + "' is not plugin:interface (e.g. socketcan:can0)";
-    options.server.canBus = transport::CanBusSettings{text.left(colon), text.mid(colon + 1), std::nullopt, {}};
+    options.server.canBus =
+        transport::CanBusSettings{text.left(colon), text.mid(colon + 1), std::nullopt, {}};
     return std::nullopt;
 }
 

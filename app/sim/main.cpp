@@ -77,7 +77,8 @@ bool start(Simulator& simulator, const simapp::SimOptions& options, sim::Station
     if (options.httpPort != 0) {
         const sim::SimulatedStation* station = simulator.station.get();
         simulator.http = std::make_unique<sim::HttpConfigServer>(
-            [station](std::string_view path) { return station->layout().fileForPath(path); });
+            [station](std::string_view path) { return station->layout().fileForPath(path); },
+            [station](std::string_view name) { return station->layout().pictureFor(name); });
         if (!simulator.http->listen(options.server.listenAddress, options.httpPort)) {
             err() << "stellwerk-sim: HTTP port " << options.httpPort << ": " << simulator.http->errorString()
                   << Qt::endl;

@@ -11,6 +11,7 @@ namespace {
 
 constexpr std::string_view Extension = ".png";
 constexpr std::array<unsigned char, 8> PngSignature = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+constexpr std::string_view IendChunk("\0\0\0\0IEND\xAE\x42\x60\x82", 12);
 
 // The last segment of a path written with '/' or with the CS3's "#2F" escape.
 std::string_view lastSegment(std::string_view icon) {
@@ -69,11 +70,11 @@ std::optional<std::string> problem(std::string_view bytes, Size* size) {
         return std::to_string(bytes.size()) + " bytes, more than the " + std::to_string(MaxBytes) +
                " a locomotive picture may have";
     // Signature, then the IHDR chunk: length 13, "IHDR", width, height (PNG specification 5.2, 11.2.2).
-    if (bytes.size() < 8 + 8 + 13)
-        return std::string("not a PNG picture (too short)");
-    for (std::size_t i = 0; i < PngSignature.size(); ++i)
+    for (std::size_t i = 0; i < PngSignature.size() && i < bytes.size(); ++i)
         if (static_cast<unsigned char>(bytes[i]) != PngSignature[i])
             return std::string("not a PNG picture");
+    if (bytes.size() < 8 + 8 + 13 + 4 + IendChunk.size())
+        return std::string("not a PNG picture (too short)");
     if (bigEndian(bytes, 8) != 13 || bytes.substr(12, 4) != "IHDR")
         return std::string("a damaged PNG picture (no IHDR header)");
     const std::uint32_t width = bigEndian(bytes, 16);
@@ -83,6 +84,9 @@ std::optional<std::string> problem(std::string_view bytes, Size* size) {
     if (width > MaxSide || height > MaxSide)
         return std::to_string(width) + " x " + std::to_string(height) + " pixels, larger than " +
                std::to_string(MaxSide) + " x " + std::to_string(MaxSide);
+    // A transfer cut short keeps a sound header: the IEND chunk (length 0, type, CRC) must close it.
+    if (!bytes.ends_with(IendChunk))
+        return std::string("a cut-off PNG picture (no IEND at its end)");
     if (size)
         *size = {static_cast<int>(width), static_cast<int>(height)};
     return std::nullopt;

@@ -30,7 +30,8 @@ struct Size {
 };
 
 // Why these bytes are not a picture to show ("not a PNG picture", "4000 x 80 pixels, larger than
-// 1024 x 1024"), or nullopt when the header is sound; `size` receives the header's size.
+// 1024 x 1024", "a cut-off PNG picture"), or nullopt when the header is sound and the IEND chunk ends
+// the bytes; `size` receives the header's size. The pixels themselves are the image decoder's business.
 std::optional<std::string> problem(std::string_view bytes, Size* size = nullptr);
 
 } // namespace picture

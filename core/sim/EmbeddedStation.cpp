@@ -2,6 +2,7 @@
 
 #include "cs2/Codec.h"
 #include "cs2/Request.h"
+#include "sim/HttpConfigServer.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
@@ -46,6 +47,7 @@ EmbeddedStation::EmbeddedStation() = default;
 // Trains first (they drive the station), then the server (it forwards the station's frames).
 EmbeddedStation::~EmbeddedStation() {
     trains_.reset();
+    web_.reset();
     server_.reset();
     station_.reset();
 }
@@ -74,11 +76,30 @@ bool EmbeddedStation::start() {
         error_ = server_->errorString();
         return false;
     }
+    if (!startWebServer())
+        return false;
     trains_ = std::make_unique<TrainMovement>(*station_, TrainTrack::demo());
     if (report_)
         QObject::connect(trains_.get(), &TrainMovement::occupantChanged, trains_.get(), report_);
     trains_->start();
     return true;
+}
+
+// The station's web server on a free loopback port: the files below /config/, the pictures below /icons/.
+bool EmbeddedStation::startWebServer() {
+    const SimulatedStation* station = station_.get();
+    web_ = std::make_unique<HttpConfigServer>(
+        [station](std::string_view path) { return station->layout().fileForPath(path); },
+        [station](std::string_view name) { return station->layout().pictureFor(name); });
+    if (!web_->listen(QHostAddress(QHostAddress::LocalHost), 0)) {
+        error_ = web_->errorString();
+        return false;
+    }
+    return true;
+}
+
+QString EmbeddedStation::webAddress() const {
+    return web_ ? QStringLiteral("http://127.0.0.1:%1").arg(web_->port()) : QString();
 }
 
 std::uint16_t EmbeddedStation::tcpPort() const {

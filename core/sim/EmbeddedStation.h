@@ -9,6 +9,7 @@
 
 namespace stellwerk::sim {
 
+class HttpConfigServer;
 class SimulatedStation;
 class StationServer;
 class TrainMovement;
@@ -39,6 +40,8 @@ public:
     std::uint16_t tcpPort() const;
     // The address a TcpTransport connects to: "tcp://127.0.0.1:<port>".
     QString url() const;
+    // Its web server with the files and the locomotive pictures: "http://127.0.0.1:<port>".
+    QString webAddress() const override;
 
     SimulatedStation* station() const { return station_.get(); }
 
@@ -50,8 +53,11 @@ public:
     void reportOccupants(OccupantReport report) { report_ = std::move(report); }
 
 private:
+    bool startWebServer();
+
     std::unique_ptr<SimulatedStation> station_;
     std::unique_ptr<StationServer> server_;
+    std::unique_ptr<HttpConfigServer> web_;
     std::unique_ptr<TrainMovement> trains_;
     OccupantReport report_;
     QString error_;

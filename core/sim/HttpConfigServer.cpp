@@ -10,6 +10,7 @@ namespace stellwerk::sim {
 namespace {
 
 constexpr std::string_view ConfigPrefix = "/config/";
+constexpr std::string_view PicturePrefix = "/icons/";
 
 QByteArray reason(int status) {
     switch (status) {
@@ -60,9 +61,20 @@ bool splitRequestLine(const QByteArray& request, QByteArray& method, QByteArray&
     return true;
 }
 
+// A picture is one file name below /icons/, never a path.
+HttpAnswer answerPicture(std::string_view name, const ConfigFileLookup& pictures, bool head) {
+    if (!pictures || !safeConfigPath(name) || name.find('/') != std::string_view::npos)
+        return problem(404);
+    const std::optional<std::string> picture = pictures(name);
+    if (!picture)
+        return problem(404);
+    return {200, QByteArray::fromStdString(*picture), head, "image/png"};
+}
+
 } // namespace
 
-HttpAnswer answerConfigRequest(const QByteArray& request, const ConfigFileLookup& files) {
+HttpAnswer answerConfigRequest(const QByteArray& request, const ConfigFileLookup& files,
+                               const ConfigFileLookup& pictures) {
     QByteArray method;
     QByteArray target;
     if (!splitRequestLine(request, method, target))
@@ -72,19 +84,22 @@ HttpAnswer answerConfigRequest(const QByteArray& request, const ConfigFileLookup
     const qsizetype query = target.indexOf('?');
     const std::string path =
         QByteArray::fromPercentEncoding(target.left(query < 0 ? target.size() : query)).toStdString();
+    const bool head = method == "HEAD";
+    if (path.starts_with(PicturePrefix))
+        return answerPicture(std::string_view(path).substr(PicturePrefix.size()), pictures, head);
     if (!path.starts_with(ConfigPrefix) ||
         !safeConfigPath(std::string_view(path).substr(ConfigPrefix.size())))
         return problem(404);
     const std::optional<std::string> file = files(std::string_view(path).substr(ConfigPrefix.size()));
     if (!file)
         return problem(404);
-    return {200, QByteArray::fromStdString(*file), method == "HEAD"};
+    return {200, QByteArray::fromStdString(*file), head};
 }
 
 QByteArray formatResponse(const HttpAnswer& answer) {
     QByteArray response =
         "HTTP/1.0 " + QByteArray::number(answer.status) + ' ' + reason(answer.status) + "\r\n";
-    response += "Content-Type: text/plain; charset=utf-8\r\n";
+    response += "Content-Type: " + answer.contentType + "\r\n";
     response += "Content-Length: " + QByteArray::number(answer.body.size()) + "\r\n";
     response += "Connection: close\r\n\r\n";
     if (!answer.headOnly)
@@ -92,8 +107,9 @@ QByteArray formatResponse(const HttpAnswer& answer) {
     return response;
 }
 
-HttpConfigServer::HttpConfigServer(ConfigFileLookup files, QObject* parent)
-    : QObject(parent), files_(std::move(files)), server_(new QTcpServer(this)) {
+HttpConfigServer::HttpConfigServer(ConfigFileLookup files, ConfigFileLookup pictures, QObject* parent)
+    : QObject(parent), files_(std::move(files)), pictures_(std::move(pictures)),
+      server_(new QTcpServer(this)) {
     connect(server_, &QTcpServer::newConnection, this, &HttpConfigServer::accept);
 }
 
@@ -135,7 +151,7 @@ void HttpConfigServer::read(QTcpSocket* socket) {
     request += socket->readAll();
     const bool complete = request.contains("\r\n\r\n") || request.contains("\n\n");
     if (complete)
-        answer(socket, answerConfigRequest(request, files_));
+        answer(socket, answerConfigRequest(request, files_, pictures_));
     else if (request.size() > MaxRequestBytes)
         answer(socket, problem(400));
 }

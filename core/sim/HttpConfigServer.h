@@ -21,18 +21,22 @@ struct HttpAnswer {
     int status = 200;
     QByteArray body;
     bool headOnly = false; // a HEAD request: headers as for GET, no body
+    QByteArray contentType = "text/plain; charset=utf-8";
 };
 
 // Answers one request (everything up to the empty line) with the file `files` gives for the path
-// below /config/: 200 with the file, 404 for unknown files and paths outside /config/, 400 for requests
-// that are not HTTP, 405 for methods other than GET and HEAD. Pure, for tests and the server.
+// below /config/, or the picture `pictures` gives for a file name below /icons/ ("BR 218.png", sent as
+// image/png): 200 with the bytes, 404 for unknown files and other paths, 400 for requests that are not
+// HTTP, 405 for methods other than GET and HEAD. Pure, for tests and the server.
 using ConfigFileLookup = std::function<std::optional<std::string>(std::string_view path)>;
-HttpAnswer answerConfigRequest(const QByteArray& request, const ConfigFileLookup& files);
+HttpAnswer answerConfigRequest(const QByteArray& request, const ConfigFileLookup& files,
+                               const ConfigFileLookup& pictures = {});
 // The whole response: status line, Content-Type, Content-Length, Connection: close, body.
 QByteArray formatResponse(const HttpAnswer& answer);
 
-// The CS2's web server as far as configuration goes: GET /config/lokomotive.cs2 and friends, HTTP/1.0,
-// one request per connection. It never touches the file system; names are looked up in the layout.
+// The CS2's web server as far as Stellwerk uses it: GET /config/lokomotive.cs2 and friends, and the
+// locomotive pictures /icons/<name>.png; HTTP/1.0, one request per connection. It never touches the file
+// system; names are looked up in the layout.
 class HttpConfigServer : public QObject {
     Q_OBJECT
 
@@ -40,7 +44,8 @@ public:
     static constexpr int MaxRequestBytes = 8192;
     static constexpr int IdleTimeoutMs = 10000;
 
-    HttpConfigServer(ConfigFileLookup files, QObject* parent = nullptr);
+    explicit HttpConfigServer(ConfigFileLookup files, ConfigFileLookup pictures = {},
+                              QObject* parent = nullptr);
     ~HttpConfigServer() override;
 
     bool listen(const QHostAddress& address, std::uint16_t port);
@@ -54,6 +59,7 @@ private:
     void answer(QTcpSocket* socket, const HttpAnswer& answer);
 
     ConfigFileLookup files_;
+    ConfigFileLookup pictures_;
     QTcpServer* server_ = nullptr;
     std::map<QTcpSocket*, QByteArray> pending_;
     std::uint64_t answered_ = 0;

@@ -1,6 +1,7 @@
 #include "sim/StationLayout.h"
 
 #include "cs2config/Document.h"
+#include "cs2config/LocomotivePicture.h"
 
 #include <QDirIterator>
 #include <QFile>
@@ -47,6 +48,40 @@ std::optional<std::int64_t> pageNumber(std::string_view key) {
     return number;
 }
 
+// The .png files of a layout's icons folder (none when there is no such folder).
+StationLayout::Files readPictures(const std::filesystem::path& folder, cs2config::Diagnostics& diagnostics) {
+    StationLayout::Files pictures;
+    std::error_code error;
+    if (!std::filesystem::is_directory(folder, error))
+        return pictures;
+    for (std::filesystem::directory_iterator it(folder, error), end; !error && it != end;
+         it.increment(error)) {
+        if (!it->is_regular_file(error) || it->path().extension() != ".png")
+            continue;
+        if (it->file_size(error) > cs2config::picture::MaxBytes) {
+            diagnostics.warning(0, it->path().string() + " is larger than a locomotive picture may be",
+                                "the station does not serve it");
+            continue;
+        }
+        if (auto bytes = readFile(it->path(), diagnostics))
+            pictures.emplace(it->path().filename().string(), std::move(*bytes));
+    }
+    return pictures;
+}
+
+StationLayout::Files resourcePictures() {
+    const QString root =
+        QString::fromUtf8(StationLayout::demoPictures.data(), qsizetype(StationLayout::demoPictures.size()));
+    StationLayout::Files pictures;
+    QDirIterator it(root, {QStringLiteral("*.png")}, QDir::Files);
+    while (it.hasNext()) {
+        QFile file(it.next());
+        if (file.open(QIODevice::ReadOnly))
+            pictures.emplace(file.fileName().mid(root.size()).toStdString(), file.readAll().toStdString());
+    }
+    return pictures;
+}
+
 } // namespace
 
 StationLayout::StationLayout() = default;
@@ -76,6 +111,7 @@ StationLayout StationLayout::load(const std::filesystem::path& configDirectory,
             files.emplace(path, std::move(*bytes));
     }
     StationLayout layout = fromFiles(std::move(files));
+    layout.setPictures(readPictures((configDirectory / ".." / "icons").lexically_normal(), diagnostics));
     for (const std::string& line : layout.diagnostics_)
         diagnostics.warning(0, line, "see the file named in the message");
     return layout;
@@ -91,6 +127,7 @@ StationLayout StationLayout::demo() {
             files.emplace(file.fileName().mid(root.size()).toStdString(), file.readAll().toStdString());
     }
     StationLayout layout = fromFiles(std::move(files));
+    layout.setPictures(resourcePictures());
     if (layout.files_.empty())
         layout.diagnostics_.insert(layout.diagnostics_.begin(),
                                    "the demo layout resource " + std::string(demoResource) +
@@ -174,6 +211,13 @@ std::optional<std::string> StationLayout::pathForKey(std::string_view key) const
 std::optional<std::string> StationLayout::fileForKey(std::string_view key) const {
     const auto path = pathForKey(key);
     return path ? fileForPath(*path) : std::nullopt;
+}
+
+std::optional<std::string> StationLayout::pictureFor(std::string_view fileName) const {
+    const auto picture = pictures_.find(fileName);
+    if (picture == pictures_.end())
+        return std::nullopt;
+    return picture->second;
 }
 
 std::optional<std::string> StationLayout::fileForPath(std::string_view path) const {

@@ -30,6 +30,8 @@ public:
     static constexpr std::string_view trackPlanPath = "gleisbild.cs2";
     // Where the demo layout is embedded (resources/demo-layout/config/ as a Qt resource).
     static constexpr std::string_view demoResource = ":/demo-layout/config/";
+    // Where the demo's locomotive pictures are embedded (resources/demo-layout/icons/).
+    static constexpr std::string_view demoPictures = ":/demo-layout/icons/";
 
     StationLayout();
 
@@ -37,7 +39,8 @@ public:
     // give empty models; every problem is in diagnostics().
     static StationLayout fromFiles(Files files);
     // Reads a CS2 config folder (lokomotive.cs2, magnetartikel.cs2, fahrstrassen.cs2, gleisbild.cs2,
-    // gleisbilder/) into memory. Problems go to `diagnostics` as well as to diagnostics().
+    // gleisbilder/) into memory, and the pictures in the icons folder beside it (../icons/*.png).
+    // Problems go to `diagnostics` as well as to diagnostics().
     static StationLayout load(const std::filesystem::path& configDirectory,
                               cs2config::Diagnostics& diagnostics);
     // The demo layout that ships with Stellwerk. When the resource is not built in, the layout is
@@ -51,6 +54,10 @@ public:
     // The path a key stands for ("loks" -> "lokomotive.cs2", "gbs-1" -> "gleisbilder/<page 1>.cs2").
     std::optional<std::string> pathForKey(std::string_view key) const;
     const Files& files() const { return files_; }
+    // The locomotive pictures by file name ("BR 218.png"), served below /icons/.
+    void setPictures(Files pictures) { pictures_ = std::move(pictures); }
+    const Files& pictures() const { return pictures_; }
+    std::optional<std::string> pictureFor(std::string_view fileName) const;
 
     const cs2config::LocomotiveFile& locomotives() const { return locomotives_; }
     const cs2config::AccessoryFile& accessories() const { return accessories_; }
@@ -67,6 +74,7 @@ private:
     void note(const cs2config::Diagnostics& diagnostics);
 
     Files files_;
+    Files pictures_;
     cs2config::LocomotiveFile locomotives_;
     cs2config::AccessoryFile accessories_;
     cs2config::RouteFile routes_;

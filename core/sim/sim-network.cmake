@@ -1,5 +1,5 @@
 # The simulated CS2's world and network side (core/sim): moving trains, the UDP/TCP/HTTP servers and
-# the demo layout embedded as the Qt resource :/demo-layout/config/.
+# the demo layout embedded as the Qt resources :/demo-layout/config/ and :/demo-layout/icons/.
 target_sources(stellwerk-simulator PRIVATE
     sim/DemoLayoutTrack.cpp
     sim/HttpConfigServer.cpp
@@ -25,4 +25,10 @@ qt_add_resources(stellwerk-simulator demo_layout
         ${demo_layout_dir}/config/gleisbilder/Strecke.cs2
         ${demo_layout_dir}/config/lokomotive.cs2
         ${demo_layout_dir}/config/magnetartikel.cs2
+)
+file(GLOB demo_pictures CONFIGURE_DEPENDS ${demo_layout_dir}/icons/*.png)
+qt_add_resources(stellwerk-simulator demo_pictures
+    PREFIX /demo-layout
+    BASE ${demo_layout_dir}
+    FILES ${demo_pictures}
 )

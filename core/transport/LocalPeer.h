@@ -20,6 +20,9 @@ public:
     virtual QString errorString() const = 0;
     // Where a transport reaches the started peer.
     virtual TransportSettings address() const = 0;
+    // Where the started peer serves files over HTTP like a station's web server ("http://127.0.0.1:8080"),
+    // empty when it serves none.
+    virtual QString webAddress() const { return {}; }
 };
 
 // Makes a new local peer for each connection; empty when the program has none.

@@ -13,6 +13,8 @@ namespace {
 
 namespace pic = cs2config::picture;
 
+const std::string Iend("\0\0\0\0IEND\xAE\x42\x60\x82", 12);
+
 // A PNG header (signature and IHDR) of the given size, followed by `extra` bytes.
 std::string pngHeader(std::uint32_t width, std::uint32_t height, std::size_t extra = 0) {
     std::string bytes("\x89PNG\r\n\x1a\n", 8);
@@ -26,7 +28,7 @@ std::string pngHeader(std::uint32_t width, std::uint32_t height, std::size_t ext
     append32(height);
     bytes += std::string("\x08\x06\x00\x00\x00", 5);
     bytes += std::string(4 + extra, '\0'); // CRC and whatever follows
-    return bytes;
+    return bytes + Iend;
 }
 
 TEST(LocomotivePictureName, ACs2NameIsTheFileNameWithPng) {
@@ -78,6 +80,9 @@ TEST(LocomotivePictureBytes, WhatIsNotAPictureSaysWhy) {
     EXPECT_EQ(pic::problem(pngHeader(0, 80)), "a damaged PNG picture (no pixels)");
     EXPECT_EQ(pic::problem(pngHeader(4000, 80)), "4000 x 80 pixels, larger than 1024 x 1024");
     EXPECT_EQ(pic::problem(pngHeader(240, 0xFFFFFFFF)), "240 x 4294967295 pixels, larger than 1024 x 1024");
+    const std::string cut = pngHeader(240, 80, 500);
+    EXPECT_EQ(pic::problem(cut.substr(0, cut.size() - 1)), "a cut-off PNG picture (no IEND at its end)");
+    EXPECT_EQ(pic::problem(cut.substr(0, 300)), "a cut-off PNG picture (no IEND at its end)");
     EXPECT_EQ(pic::problem(pngHeader(240, 80, pic::MaxBytes)),
               std::to_string(pngHeader(240, 80, pic::MaxBytes).size()) +
                   " bytes, more than the 262144 a locomotive picture may have");

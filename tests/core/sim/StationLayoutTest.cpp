@@ -1,6 +1,7 @@
 // The station's files: in memory, from a folder, from the embedded demo; keys and paths.
 
 #include "SimTestSupport.h"
+#include "cs2config/LocomotivePicture.h"
 
 #include <QTemporaryDir>
 #include <fstream>
@@ -51,6 +52,25 @@ TEST(StationLayout, LoadReadsAFolder) {
     EXPECT_EQ(layout.fileForKey("loks"), std::string(locomotives));
     EXPECT_EQ(layout.fileForKey("gbs-0"), std::string(stationPage));
     EXPECT_EQ(layout.locomotives().locomotives.size(), 4u);
+}
+
+TEST(StationLayout, LoadTakesThePicturesOfTheIconsFolderBesideTheConfig) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const std::filesystem::path root = dir.path().toStdString();
+    std::filesystem::create_directories(root / "config");
+    std::filesystem::create_directories(root / "icons");
+    std::ofstream(root / "config" / "lokomotive.cs2") << locomotives;
+    std::ofstream(root / "icons" / "BR 86.png") << "picture bytes";
+    std::ofstream(root / "icons" / "notes.txt") << "not a picture";
+    std::ofstream(root / "icons" / "huge.png") << std::string(cs2config::picture::MaxBytes + 1, 'x');
+    cs2config::Diagnostics diagnostics;
+    const StationLayout layout = StationLayout::load(root / "config" / "", diagnostics);
+    EXPECT_EQ(layout.pictureFor("BR 86.png"), "picture bytes");
+    EXPECT_EQ(layout.pictures().size(), 1u);
+    EXPECT_NE(diagnostics.formatAll().find("huge.png is larger than a locomotive picture may be"),
+              std::string::npos)
+        << diagnostics.formatAll();
 }
 
 TEST(StationLayout, DemoIsServedOrItsAbsenceSaidClearly) {

@@ -1,9 +1,11 @@
-// The CS2's configuration files over HTTP: GET /config/<file> answers the bytes the station serves,
-// anything else is refused without touching the file system.
+// The CS2's web server: GET /config/<file> answers the bytes the station serves, GET /icons/<name>.png
+// a locomotive picture; anything else is refused without touching the file system.
 
 #include "sim/HttpConfigServer.h"
 
 #include "SimTestSupport.h"
+#include "cs2config/LocomotivePicture.h"
+#include "sim/EmbeddedStation.h"
 #include "sim/StationLayout.h"
 
 #include <QTcpSocket>
@@ -98,7 +100,7 @@ class HttpConfigServerTest : public ::testing::Test {
 protected:
     void SetUp() override { ASSERT_TRUE(server_.listen(QHostAddress::LocalHost, 0)); }
 
-    HttpConfigServer server_{demoFile};
+    HttpConfigServer server_{demoFile, [](std::string_view name) { return demo().pictureFor(name); }};
 };
 
 TEST_F(HttpConfigServerTest, GetLokomotiveCs2ReturnsTheServedBytes) {
@@ -137,6 +139,59 @@ TEST_F(HttpConfigServerTest, UnknownFileAndTraversalAreRefused) {
 TEST_F(HttpConfigServerTest, OverlongRequestIsBadRequest) {
     const QByteArray request = "GET /config/" + QByteArray(HttpConfigServer::MaxRequestBytes + 10, 'a');
     EXPECT_TRUE(exchange(server_.port(), request).startsWith("HTTP/1.0 400 "));
+}
+
+} // namespace
+} // namespace stellwerk::sim
+
+namespace stellwerk::sim {
+namespace {
+
+TEST(DemoPictures, EveryDemoLocomotiveHasASoundPicture) {
+    ASSERT_FALSE(demo().locomotives().locomotives.empty());
+    for (const cs2config::Locomotive& loco : demo().locomotives().locomotives) {
+        const auto name = cs2config::picture::fileName(loco.icon);
+        ASSERT_TRUE(name) << loco.name;
+        const auto picture = demo().pictureFor(*name);
+        ASSERT_TRUE(picture) << *name;
+        cs2config::picture::Size size;
+        EXPECT_EQ(cs2config::picture::problem(*picture, &size), std::nullopt) << *name;
+        EXPECT_EQ(size.width, 240);
+        EXPECT_EQ(size.height, 80);
+    }
+}
+
+TEST_F(HttpConfigServerTest, APictureIsServedAsPng) {
+    const QByteArray response = exchange(server_.port(), "GET /icons/BR%20218.png HTTP/1.0\r\n\r\n");
+    EXPECT_TRUE(headerOf(response).startsWith("HTTP/1.0 200 OK\r\n"));
+    EXPECT_TRUE(headerOf(response).contains("Content-Type: image/png\r\n"));
+    EXPECT_EQ(bodyOf(response).toStdString(), *demo().pictureFor("BR 218.png"));
+}
+
+TEST_F(HttpConfigServerTest, UnknownPicturesAndPathsBelowIconsAreRefused) {
+    for (const QByteArray& target :
+         {QByteArray("/icons/fehlt.png"), QByteArray("/icons/../config/lokomotive.cs2"),
+          QByteArray("/icons/a/BR%20218.png"), QByteArray("/icons/")})
+        EXPECT_TRUE(
+            exchange(server_.port(), "GET " + target + " HTTP/1.0\r\n\r\n").startsWith("HTTP/1.0 404 "))
+            << target.toStdString();
+}
+
+TEST(HttpConfigRequest, WithoutPicturesIconsAreNotFound) {
+    EXPECT_EQ(ask("GET /icons/BR%20218.png HTTP/1.0\r\n\r\n").status, 404);
+}
+
+TEST(EmbeddedStationWeb, ServesTheDemoPicturesOnItsOwnLoopbackPort) {
+    EmbeddedStation station;
+    EXPECT_TRUE(station.webAddress().isEmpty());
+    ASSERT_TRUE(station.start()) << station.errorString().toStdString();
+    const QUrl web(station.webAddress());
+    EXPECT_EQ(web.host(), "127.0.0.1");
+    ASSERT_GT(web.port(), 0);
+    EXPECT_NE(web.port(), station.tcpPort());
+    const QByteArray response =
+        exchange(std::uint16_t(web.port()), "GET /icons/ICE%203.png HTTP/1.0\r\n\r\n");
+    EXPECT_EQ(bodyOf(response).toStdString(), *demo().pictureFor("ICE 3.png"));
 }
 
 } // namespace
