@@ -5,6 +5,8 @@
 #include "transport/TransportAddress.h"
 #include "transport/TransportFactory.h"
 
+#include <QUrl>
+
 namespace stellwerk::connection {
 
 namespace {
@@ -25,6 +27,21 @@ LoadingStep loadingStep(station::StartupSequence::Step step) {
         break;
     }
     return LoadingStep::ReadingStates;
+}
+
+// A CS2 or CS3 reached over the network serves its files and pictures on port 80 of the same host.
+QString webAddressOf(const transport::TransportSettings& settings) {
+    QString host;
+    if (const auto* udp = std::get_if<transport::UdpSettings>(&settings))
+        host = udp->host;
+    else if (const auto* tcp = std::get_if<transport::TcpSettings>(&settings))
+        host = tcp->host;
+    if (host.isEmpty())
+        return {};
+    QUrl url;
+    url.setScheme(QStringLiteral("http"));
+    url.setHost(host);
+    return url.isValid() ? url.toString() : QString();
 }
 
 } // namespace
@@ -50,7 +67,8 @@ StationCounts StationCounts::of(const station::StartupResult& result) {
 }
 
 StationConnection::StationConnection(ConnectionSettings settings, QObject* parent)
-    : QObject(parent), settings_(std::move(settings)) {}
+    : QObject(parent), settings_(std::move(settings)),
+      pictures_(new LocomotivePictures(settings_.pictures, this)) {}
 
 StationConnection::~StationConnection() {
     if (link_)
@@ -90,6 +108,7 @@ Expected<std::unique_ptr<transport::Transport>, QString> StationConnection::stat
         if (!local->start())
             return QStringLiteral("the simulated station cannot start: %1").arg(local->errorString());
         const transport::TransportSettings address = local->address();
+        pictures_->setStation(local->webAddress());
         link_->local = std::move(local);
         return transport::createTransport(address);
     }
@@ -99,6 +118,7 @@ Expected<std::unique_ptr<transport::Transport>, QString> StationConnection::stat
         return QString(settings.error());
     }
     endpoint_ = StationEndpoint::of(settings.value());
+    pictures_->setStation(webAddressOf(settings.value()));
     return transport::createTransport(settings.value());
 }
 
@@ -124,6 +144,7 @@ void StationConnection::disconnectFromStation() {
     }
     address_.clear();
     furtherBuses_.clear();
+    pictures_->setStation({});
     progress_ = {};
     result_ = {};
     failure_.clear();
@@ -302,6 +323,7 @@ void StationConnection::startupReady(const station::StartupResult& result) {
     result_ = result;
     loading_ = false;
     loaded_ = true;
+    pictures_->retryFailed(); // the station answers again: what failed while it was away may be there
     emit configurationLoaded(result_);
     reloadWhenPossible();
     updateState();

@@ -2,6 +2,7 @@
 
 #include "base/Expected.h"
 #include "bus/FrameClassifier.h"
+#include "connection/LocomotivePictures.h"
 #include "connection/StationEndpoint.h"
 #include "station/StartupSequence.h"
 #include "station/StationSession.h"
@@ -58,6 +59,7 @@ struct ConnectionSettings {
     station::StartupOptions startup{};
     transport::LocalPeerFactory localStation{};
     bus::BusProfile furtherBusProfile{};
+    LocomotivePictures::Settings pictures{};
 };
 
 // One bus of the connection, as the monitor shows it.
@@ -123,6 +125,11 @@ public:
     // What the transport of the current connection counted (frames in and out, ...); zeros while there is
     // none.
     transport::TransportCounters transportCounters() const;
+    // The station's web server ("http://192.168.2.5"; the embedded station's own port), empty when the
+    // station is reached over CAN or there is none.
+    QString webAddress() const { return pictures_->station(); }
+    // The locomotives' pictures from that web server (and the open layout's icons folder).
+    LocomotivePictures& pictures() const { return *pictures_; }
 
 signals:
     void stateChanged(stellwerk::connection::StationConnection::State state);
@@ -163,6 +170,7 @@ private:
     State evaluate() const;
 
     ConnectionSettings settings_;
+    LocomotivePictures* pictures_;
     std::unique_ptr<StationLink> link_;
     QString address_;
     QStringList furtherBuses_;
