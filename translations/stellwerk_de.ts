@@ -1296,6 +1296,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>Shows</source>
         <translation>Zeigt</translation>
     </message>
+    <message>
+        <source>Picture:</source>
+        <translation>Bild:</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::LocomotivePanel</name>
@@ -1444,6 +1448,57 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>The locomotive list has changes that are not saved. Save them before %1?</source>
         <translation>Die Lokliste hat Änderungen, die nicht gespeichert sind. Vor %1 speichern?</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::LocomotivePictureBook</name>
+    <message>
+        <source>No picture: no station</source>
+        <translation>Kein Bild: keine Zentrale</translation>
+    </message>
+    <message>
+        <source>This locomotive names no picture</source>
+        <translation>Diese Lok nennt kein Bild</translation>
+    </message>
+    <message>
+        <source>The picture “%1” is damaged</source>
+        <translation>Das Bild „%1“ ist beschädigt</translation>
+    </message>
+    <message>
+        <source>Picture “%1”</source>
+        <translation>Bild „%1“</translation>
+    </message>
+    <message>
+        <source>Loading the picture “%1”…</source>
+        <translation>Bild „%1“ wird geladen …</translation>
+    </message>
+    <message>
+        <source>No picture “%1”: %2</source>
+        <translation>Kein Bild „%1“: %2</translation>
+    </message>
+    <message>
+        <source>not a usable file name</source>
+        <translation>kein brauchbarer Dateiname</translation>
+    </message>
+    <message>
+        <source>no station to ask and no icons folder</source>
+        <translation>keine Zentrale zum Fragen und kein Bilderordner</translation>
+    </message>
+    <message>
+        <source>the station has none</source>
+        <translation>die Zentrale hat keins</translation>
+    </message>
+    <message>
+        <source>the file is not a usable PNG picture</source>
+        <translation>die Datei ist kein brauchbares PNG-Bild</translation>
+    </message>
+    <message>
+        <source>the station did not send it; asked again when it is back</source>
+        <translation>die Zentrale hat es nicht geschickt; neue Anfrage, sobald sie wieder da ist</translation>
+    </message>
+    <message>
+        <source>not known yet</source>
+        <translation>noch nicht bekannt</translation>
     </message>
 </context>
 <context>
@@ -2097,10 +2152,6 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Close this throttle</source>
         <translation>Dieses Fahrpult schließen</translation>
-    </message>
-    <message>
-        <source>%1 · picture “%2”</source>
-        <translation>%1 · Bild „%2“</translation>
     </message>
     <message>
         <source>—</source>

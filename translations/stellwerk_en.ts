@@ -1293,6 +1293,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>Shows</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Picture:</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::LocomotivePanel</name>
@@ -1440,6 +1444,57 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>The locomotive list has changes that are not saved. Save them before %1?</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::LocomotivePictureBook</name>
+    <message>
+        <source>No picture: no station</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This locomotive names no picture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The picture “%1” is damaged</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Picture “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Loading the picture “%1”…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No picture “%1”: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a usable file name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no station to ask and no icons folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the station has none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file is not a usable PNG picture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the station did not send it; asked again when it is back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not known yet</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2093,10 +2148,6 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Close this throttle</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 · picture “%2”</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

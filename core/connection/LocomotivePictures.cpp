@@ -91,14 +91,13 @@ void LocomotivePictures::look(const QString& fileName, Entry& entry) {
     if (readFromFolder(fileName, entry))
         return;
     if (station_.isEmpty()) {
-        entry = {Status::Missing,
-                 {},
-                 QStringLiteral("no icons folder has %1 and no station to ask").arg(fileName),
-                 {},
-                 {}};
+        entry = {};
+        entry.status = Status::Missing;
+        entry.reason = Reason::NoSource;
+        entry.problem = QStringLiteral("no icons folder has %1 and no station to ask").arg(fileName);
         return;
     }
-    entry = {Status::Loading, {}, {}, {}, {}};
+    entry = {Status::Loading, Reason::None, {}, {}, {}, {}};
     waiting_.push_back(fileName);
     startFetches();
 }
@@ -113,6 +112,7 @@ bool LocomotivePictures::readFromFolder(const QString& fileName, Entry& entry) c
     const auto problem = picture::problem(std::string_view(bytes.constData(), std::size_t(bytes.size())));
     entry.source = file.fileName();
     entry.status = problem ? Status::Missing : Status::Present;
+    entry.reason = problem ? Reason::NotAPicture : Reason::None;
     entry.bytes = problem ? QByteArray() : bytes;
     entry.problem =
         problem ? QStringLiteral("%1: %2").arg(file.fileName(), QString::fromStdString(*problem)) : QString();
@@ -152,12 +152,13 @@ void LocomotivePictures::fetched(QNetworkReply* reply, const QString& fileName) 
     const int httpStatus = reply->attribute(QNetworkRequest::HttpStatusCodeAttribute).toInt();
     if (reply->property("tooLarge").toBool())
         settle(
-            fileName, Status::Missing, {},
+            fileName, Status::Missing, Reason::NotAPicture, {},
             QStringLiteral("the station's %1 is larger than %2 bytes").arg(fileName).arg(picture::MaxBytes));
     else if (httpStatus == 404)
-        settle(fileName, Status::Missing, {}, QStringLiteral("the station has no picture %1").arg(fileName));
+        settle(fileName, Status::Missing, Reason::NotThere, {},
+               QStringLiteral("the station has no picture %1").arg(fileName));
     else if (reply->error() != QNetworkReply::NoError || httpStatus != 200)
-        settle(fileName, Status::Failed, {},
+        settle(fileName, Status::Failed, Reason::Unreachable, {},
                QStringLiteral("%1 could not be fetched: %2")
                    .arg(fileName, httpStatus != 0 && reply->error() == QNetworkReply::NoError
                                       ? QStringLiteral("HTTP status %1").arg(httpStatus)
@@ -166,17 +167,19 @@ void LocomotivePictures::fetched(QNetworkReply* reply, const QString& fileName) 
         const QByteArray bytes = reply->readAll();
         const auto problem = picture::problem(std::string_view(bytes.constData(), std::size_t(bytes.size())));
         if (problem)
-            settle(fileName, Status::Missing, {},
+            settle(fileName, Status::Missing, Reason::NotAPicture, {},
                    QStringLiteral("the station's %1 is %2").arg(fileName, QString::fromStdString(*problem)));
         else
-            settle(fileName, Status::Present, bytes, {});
+            settle(fileName, Status::Present, Reason::None, bytes, {});
     }
     startFetches();
 }
 
-void LocomotivePictures::settle(const QString& fileName, Status status, QByteArray bytes, QString problem) {
+void LocomotivePictures::settle(const QString& fileName, Status status, Reason reason, QByteArray bytes,
+                                QString problem) {
     Entry& entry = entries_[fileName];
     entry.status = status;
+    entry.reason = reason;
     entry.bytes = std::move(bytes);
     entry.problem = std::move(problem);
     entry.failedAt = status == Status::Failed ? QDateTime::currentDateTimeUtc() : QDateTime();
@@ -214,6 +217,13 @@ QString LocomotivePictures::problem(const QString& icon) const {
         return unusableName(icon);
     const Entry* entry = entryFor(icon);
     return entry ? entry->problem : QString();
+}
+
+LocomotivePictures::Reason LocomotivePictures::reason(const QString& icon) const {
+    if (!fileNameOf(icon))
+        return Reason::NoName;
+    const Entry* entry = entryFor(icon);
+    return entry ? entry->reason : Reason::None;
 }
 
 QString LocomotivePictures::source(const QString& icon) const {

@@ -26,6 +26,9 @@ class LocomotivePictures final : public QObject {
 public:
     enum class Status { Unknown, Loading, Present, Missing, Failed };
     Q_ENUM(Status)
+    // Why a picture is missing or failed, for a translated text.
+    enum class Reason { None, NoName, NoSource, NotThere, NotAPicture, Unreachable };
+    Q_ENUM(Reason)
 
     struct Settings {
         std::chrono::milliseconds timeout{5000};     // one fetch, from asking to the last byte
@@ -51,6 +54,7 @@ public:
     Status status(const QString& icon) const;
     // Why the picture is missing or failed, in English ("the station has no picture BR 86.png").
     QString problem(const QString& icon) const;
+    Reason reason(const QString& icon) const;
     // Where the picture came from ("http://.../icons/BR%2086.png", a file path), when present.
     QString source(const QString& icon) const;
 
@@ -63,6 +67,7 @@ signals:
 private:
     struct Entry {
         Status status = Status::Unknown;
+        Reason reason = Reason::None;
         QByteArray bytes;
         QString problem;
         QString source;
@@ -75,7 +80,7 @@ private:
     void startFetches();
     void fetch(const QString& fileName);
     void fetched(QNetworkReply* reply, const QString& fileName);
-    void settle(const QString& fileName, Status status, QByteArray bytes, QString problem);
+    void settle(const QString& fileName, Status status, Reason reason, QByteArray bytes, QString problem);
     void forgetAll();
 
     Settings settings_;

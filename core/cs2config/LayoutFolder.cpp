@@ -93,6 +93,10 @@ fs::path LayoutFolder::configDirectoryOf(const fs::path& folder) {
     return folder / "config";
 }
 
+std::filesystem::path LayoutFolder::iconsDirectoryOf(const std::filesystem::path& configDirectory) {
+    return (configDirectory / ".." / "icons").lexically_normal();
+}
+
 LayoutFolder::Content LayoutFolder::open(const fs::path& folder) {
     Content content;
     std::error_code error;

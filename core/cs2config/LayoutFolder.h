@@ -33,6 +33,8 @@ public:
     // The `config` folder inside `folder`, or `folder` itself when it holds gleisbild.cs2.
     static std::filesystem::path configDirectoryOf(const std::filesystem::path& folder);
     static Content open(const std::filesystem::path& folder);
+    // Where the locomotive pictures of a layout are: the icons folder beside its config folder.
+    static std::filesystem::path iconsDirectoryOf(const std::filesystem::path& configDirectory);
 
     // The files in `configDirectory` that a CS2 keeps and that are there: gleisbild.cs2, the page files
     // of `layout` and the companion files, each by its path inside the folder ("gleisbilder/x.cs2").

@@ -1,6 +1,7 @@
 #include "sim/StationLayout.h"
 
 #include "cs2config/Document.h"
+#include "cs2config/LayoutFolder.h"
 #include "cs2config/LocomotivePicture.h"
 
 #include <QDirIterator>
@@ -111,7 +112,7 @@ StationLayout StationLayout::load(const std::filesystem::path& configDirectory,
             files.emplace(path, std::move(*bytes));
     }
     StationLayout layout = fromFiles(std::move(files));
-    layout.setPictures(readPictures((configDirectory / ".." / "icons").lexically_normal(), diagnostics));
+    layout.setPictures(readPictures(cs2config::LayoutFolder::iconsDirectoryOf(configDirectory), diagnostics));
     for (const std::string& line : layout.diagnostics_)
         diagnostics.warning(0, line, "see the file named in the message");
     return layout;

@@ -5,6 +5,7 @@
 target_sources(stellwerk-ui PRIVATE
     common/FunctionIcons.cpp common/FunctionIcons.h
     common/LayoutStateBanner.cpp common/LayoutStateBanner.h
+    common/LocomotivePictureBook.cpp common/LocomotivePictureBook.h
     common/LocomotiveTableModel.cpp common/LocomotiveTableModel.h
     common/NotReported.cpp common/NotReported.h
     common/PowerStatus.cpp common/PowerStatus.h

@@ -1,5 +1,7 @@
 #include "locomotives/LocomotiveFileModel.h"
 
+#include "common/LocomotivePictureBook.h"
+
 #include <algorithm>
 
 namespace stellwerk::ui {
@@ -17,6 +19,20 @@ void LocomotiveFileModel::show(const cs2config::LocomotiveEditor* editor) {
             if (!m_editor->locomotives()[i].isEmpty())
                 m_rows.push_back(i);
     endResetModel();
+}
+
+void LocomotiveFileModel::setPictures(LocomotivePictureBook* pictures) {
+    if (m_pictures)
+        m_pictures->disconnect(this);
+    m_pictures = pictures;
+    auto repaint = [this] {
+        if (rowCount() > 0)
+            emit dataChanged(index(0, Icon), index(rowCount() - 1, Icon),
+                             {Qt::DecorationRole, Qt::ToolTipRole});
+    };
+    if (m_pictures)
+        connect(m_pictures, &LocomotivePictureBook::changed, this, repaint);
+    repaint();
 }
 
 std::optional<int> LocomotiveFileModel::rowOf(std::size_t fileIndex) const {
@@ -46,6 +62,10 @@ QVariant LocomotiveFileModel::data(const QModelIndex& index, int role) const {
     const cs2config::Locomotive& locomotive = m_editor->locomotives()[fileIndex(index.row())];
     if (role == Qt::DisplayRole)
         return text(locomotive, index.column());
+    if (m_pictures && index.column() == Icon && role == Qt::DecorationRole)
+        return m_pictures->picture(QString::fromStdString(locomotive.icon), PictureBox);
+    if (m_pictures && index.column() == Icon && role == Qt::ToolTipRole)
+        return m_pictures->describe(QString::fromStdString(locomotive.icon));
     if (role == Qt::TextAlignmentRole && index.column() == Functions)
         return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
     return {};

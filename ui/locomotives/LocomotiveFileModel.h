@@ -3,6 +3,8 @@
 #include "cs2config/LocomotiveEditor.h"
 
 #include <QAbstractTableModel>
+#include <QPointer>
+#include <QSize>
 #include <optional>
 #include <vector>
 
@@ -10,6 +12,8 @@ namespace stellwerk::ui {
 
 // The locomotives of lokomotive.cs2 as the editor holds them, one row per named record: what the
 // locomotive list of the Locomotives page shows (name, address, decoder, icon, keys with an icon).
+class LocomotivePictureBook;
+
 class LocomotiveFileModel final : public QAbstractTableModel {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(LocomotiveFileModel)
@@ -21,6 +25,9 @@ public:
 
     // Shows the editor's locomotives again (after a load or an edit); null: no rows.
     void show(const cs2config::LocomotiveEditor* editor);
+    // Where the Picture column's small pictures come from (null: names only).
+    void setPictures(LocomotivePictureBook* pictures);
+    static constexpr QSize PictureBox{60, 20};
     // The record index in the file of a row, and the row of a record index.
     std::size_t fileIndex(int row) const { return m_rows[std::size_t(row)]; }
     std::optional<int> rowOf(std::size_t fileIndex) const;
@@ -40,6 +47,7 @@ private:
     QString text(const cs2config::Locomotive& locomotive, int column) const;
 
     const cs2config::LocomotiveEditor* m_editor = nullptr;
+    QPointer<LocomotivePictureBook> m_pictures;
     std::vector<std::size_t> m_rows;
 };
 

@@ -1,6 +1,7 @@
 #include "locomotives/LocomotiveForm.h"
 
 #include "common/FunctionIcons.h"
+#include "common/LocomotivePictureBook.h"
 #include "locomotives/LocomotiveFileModel.h"
 
 #include <QComboBox>
@@ -29,13 +30,15 @@ constexpr FunctionTrigger Triggers[] = {FunctionTrigger::Latching, FunctionTrigg
 // The CS2's icon number, then what it shows (our drawing and its name), the trigger and the time.
 enum FunctionColumn { IconColumn, PictureColumn, TriggerColumn, DurationColumn, FunctionColumns };
 constexpr int PictureSize = 20;
+constexpr QSize LocomotivePictureBox(180, 60);
 
 } // namespace
 
 LocomotiveForm::LocomotiveForm(QWidget* parent)
     : QWidget(parent), m_form(new QFormLayout), m_name(new QLineEdit(this)), m_decoder(new QComboBox(this)),
       m_address(new QSpinBox(this)), m_addressRange(new QLabel(this)), m_nameLabel(new QLabel(this)),
-      m_decoderLabel(new QLabel(this)), m_addressLabel(new QLabel(this)),
+      m_decoderLabel(new QLabel(this)), m_addressLabel(new QLabel(this)), m_pictureLabel(new QLabel(this)),
+      m_picture(new QLabel(this)), m_pictureName(new QLabel(this)),
       m_functions(new QTableWidget(cs2config::LocomotiveEditor::MaxFunctions, FunctionColumns, this)) {
     setObjectName(QStringLiteral("locomotiveForm"));
     m_name->setObjectName(QStringLiteral("locomotiveName"));
@@ -53,6 +56,13 @@ LocomotiveForm::LocomotiveForm(QWidget* parent)
     m_form->addRow(m_nameLabel, m_name);
     m_form->addRow(m_decoderLabel, m_decoder);
     m_form->addRow(m_addressLabel, address);
+    m_picture->setObjectName(QStringLiteral("locomotivePicture"));
+    m_picture->setFixedSize(LocomotivePictureBox);
+    m_pictureName->setEnabled(false);
+    auto* picture = new QHBoxLayout;
+    picture->addWidget(m_picture);
+    picture->addWidget(m_pictureName, 1);
+    m_form->addRow(m_pictureLabel, picture);
     buildFunctionRows();
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -65,6 +75,31 @@ LocomotiveForm::LocomotiveForm(QWidget* parent)
     });
     connect(m_address, &QSpinBox::valueChanged, this, &LocomotiveForm::edited);
     retranslate();
+}
+
+void LocomotiveForm::setPictures(LocomotivePictureBook* pictures) {
+    if (m_pictures)
+        m_pictures->disconnect(this);
+    m_pictures = pictures;
+    if (m_pictures)
+        connect(m_pictures, &LocomotivePictureBook::changed, this, &LocomotiveForm::showLocomotivePicture);
+    showLocomotivePicture();
+}
+
+void LocomotiveForm::setIcon(const QString& icon) {
+    m_icon = icon;
+    showLocomotivePicture();
+}
+
+// The picture the station or the layout has for this locomotive, else the placeholder; its name beside.
+void LocomotiveForm::showLocomotivePicture() {
+    const qreal ratio = devicePixelRatioF();
+    m_picture->setPixmap(m_pictures ? m_pictures->picture(m_icon, LocomotivePictureBox, ratio)
+                                    : LocomotivePictureBook::placeholder(LocomotivePictureBox, ratio));
+    const QString about = m_pictures ? m_pictures->describe(m_icon) : QString();
+    m_picture->setToolTip(about);
+    m_pictureName->setText(m_icon.isEmpty() ? tr("none") : m_icon);
+    m_pictureName->setToolTip(about);
 }
 
 void LocomotiveForm::buildFunctionRows() {
@@ -185,6 +220,8 @@ void LocomotiveForm::retranslate() {
     m_nameLabel->setText(tr("Name:"));
     m_decoderLabel->setText(tr("Decoder:"));
     m_addressLabel->setText(tr("Address:"));
+    m_pictureLabel->setText(tr("Picture:"));
+    showLocomotivePicture();
     for (int i = 0; i < m_decoder->count(); ++i)
         m_decoder->setItemText(
             i, LocomotiveFileModel::decoderText(LocomotiveDecoder(m_decoder->itemData(i).toInt())));

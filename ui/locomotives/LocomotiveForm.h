@@ -2,6 +2,7 @@
 
 #include "cs2config/LocomotiveEditor.h"
 
+#include <QPointer>
 #include <QWidget>
 
 class QComboBox;
@@ -16,6 +17,8 @@ namespace stellwerk::ui {
 // The fields of one locomotive on the Locomotives page: name, decoder, address (with the range the
 // decoder allows) and every function key's icon number and trigger. It only edits values; checking
 // and applying them is the editor's job.
+class LocomotivePictureBook;
+
 class LocomotiveForm final : public QWidget {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(LocomotiveForm)
@@ -24,6 +27,11 @@ public:
     explicit LocomotiveForm(QWidget* parent = nullptr);
 
     void setSettings(const cs2config::LocomotiveSettings& settings);
+    // The locomotive's picture (its `.icon`; empty for none) and where pictures come from.
+    void setIcon(const QString& icon);
+    void setPictures(LocomotivePictureBook* pictures);
+    QLabel* picture() const { return m_picture; }
+    QLabel* pictureName() const { return m_pictureName; }
     // What the fields hold now; every function key F0..F31 is listed.
     cs2config::LocomotiveSettings settings() const;
 
@@ -48,6 +56,7 @@ private:
     void showAddressRange();
     void updateDuration(int function);
     void showPicture(int function);
+    void showLocomotivePicture();
 
     QFormLayout* m_form;
     QLineEdit* m_name;
@@ -57,6 +66,11 @@ private:
     QLabel* m_nameLabel;
     QLabel* m_decoderLabel;
     QLabel* m_addressLabel;
+    QLabel* m_pictureLabel;
+    QLabel* m_picture;
+    QLabel* m_pictureName;
+    QPointer<LocomotivePictureBook> m_pictures;
+    QString m_icon;
     QTableWidget* m_functions;
 };
 

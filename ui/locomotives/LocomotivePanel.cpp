@@ -205,6 +205,11 @@ bool LocomotivePanel::selectLocomotive(const QString& name) {
     return false;
 }
 
+void LocomotivePanel::setPictures(LocomotivePictureBook* pictures) {
+    m_model->setPictures(pictures);
+    m_form->setPictures(pictures);
+}
+
 void LocomotivePanel::selectionChanged() {
     m_adding = false;
     showSelected();
@@ -213,8 +218,10 @@ void LocomotivePanel::selectionChanged() {
 // The form shows the selected locomotive as the file holds it (Revert does the same).
 void LocomotivePanel::showSelected() {
     const std::optional<std::size_t> index = selectedIndex();
-    if (index && !m_adding)
+    if (index && !m_adding) {
         m_form->setSettings(cs2config::LocomotiveSettings::of(m_editor.locomotives()[*index]));
+        m_form->setIcon(QString::fromStdString(m_editor.locomotives()[*index].icon));
+    }
     if (!m_adding)
         m_message->clear();
     m_apply->setEnabled(false);
@@ -235,6 +242,7 @@ void LocomotivePanel::startNewLocomotive() {
     settings.decoder = cs2config::LocomotiveDecoder::Dcc;
     settings.functions = {{0, 1, cs2config::FunctionTrigger::Latching, 0}};
     m_form->setSettings(settings);
+    m_form->setIcon({});
     showMessage(tr("Enter the new locomotive and press Add."), false);
     m_apply->setEnabled(true);
     updateButtons();

@@ -18,6 +18,7 @@ namespace stellwerk::ui {
 
 class LocomotiveFileModel;
 class LocomotiveForm;
+class LocomotivePictureBook;
 
 // The Locomotives page: the station's locomotives from lokomotive.cs2 in a list, an editor for the
 // selected one (name, decoder, address, function keys) that refuses bad values with a reason, new and
@@ -32,6 +33,8 @@ public:
 
     // The railway whose lokomotive.cs2 the page edits (null: none).
     void setRailway(model::Railway* railway);
+    // The locomotives' pictures for the list and the form.
+    void setPictures(LocomotivePictureBook* pictures);
 
     const cs2config::LocomotiveEditor& editor() const { return m_editor; }
     LocomotiveFileModel* model() const { return m_model; }

@@ -1,5 +1,6 @@
 #include "shell/MainWindow.h"
 
+#include "common/LocomotivePictureBook.h"
 #include "common/PowerStatus.h"
 #include "common/ToolIcons.h"
 #include "connect/ConnectDialog.h"
@@ -191,6 +192,10 @@ void MainWindow::setConnection(connection::StationConnection* station) {
     if (m_connection)
         disconnect(m_connection, nullptr, this, nullptr);
     m_connection = station;
+    delete m_pictures;
+    m_pictures = station ? new LocomotivePictureBook(&station->pictures(), this) : nullptr;
+    m_throttlePanel->setPictures(m_pictures);
+    m_locomotivePanel->setPictures(m_pictures);
     m_stationStatus->setConnection(station);
     m_startupProgress->setConnection(station);
     m_traffic->setConnection(station);

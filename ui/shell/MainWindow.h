@@ -3,6 +3,7 @@
 #include "shell/Language.h"
 
 #include <QMainWindow>
+#include <QPointer>
 
 class QToolBar;
 
@@ -23,6 +24,7 @@ class LanguageMenu;
 class LayoutFileActions;
 class LayoutOverview;
 class LocomotivePanel;
+class LocomotivePictureBook;
 class PowerStatus;
 class ProgrammingPanel;
 class StartupProgress;
@@ -128,6 +130,7 @@ private:
     TrafficStatus* m_traffic = nullptr;
     PowerStatus* m_power = nullptr;
     connection::StationConnection* m_connection = nullptr;
+    QPointer<LocomotivePictureBook> m_pictures;
     bool m_shownBefore = false;
 };
 

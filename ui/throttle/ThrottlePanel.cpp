@@ -1,6 +1,7 @@
 #include "throttle/ThrottlePanel.h"
 
 #include "common/LayoutStateBanner.h"
+#include "common/LocomotivePictureBook.h"
 #include "common/ToolIcons.h"
 #include "common/WrappingGrid.h"
 #include "model/Railway.h"
@@ -92,11 +93,18 @@ void ThrottlePanel::setRailway(model::Railway* railway) {
     updateEmptyState();
 }
 
+void ThrottlePanel::setPictures(LocomotivePictureBook* pictures) {
+    m_pictures = pictures;
+    for (ThrottleWidget* throttle : m_throttles)
+        throttle->setPictures(pictures);
+}
+
 ThrottleWidget* ThrottlePanel::addThrottle(std::uint32_t loco) {
     if (m_throttles.size() >= ThrottleSettings::MaximumThrottles)
         return nullptr;
     auto* throttle = new ThrottleWidget(m_rack);
     throttle->setRailway(m_railway);
+    throttle->setPictures(m_pictures);
     throttle->setLocomotive(loco);
     connect(throttle, &ThrottleWidget::locomotiveChosen, this, &ThrottlePanel::save);
     connect(throttle, &ThrottleWidget::closeRequested, this, [this, throttle] { removeThrottle(throttle); });

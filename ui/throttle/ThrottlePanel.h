@@ -17,6 +17,7 @@ class Railway;
 namespace stellwerk::ui {
 
 class LayoutStateBanner;
+class LocomotivePictureBook;
 class WrappingGrid;
 class ThrottleWidget;
 
@@ -35,6 +36,8 @@ public:
 
     // The railway whose locomotives the throttles drive (null: none).
     void setRailway(model::Railway* railway);
+    // The locomotives' pictures every throttle shows.
+    void setPictures(LocomotivePictureBook* pictures);
 
     // A new throttle after the others, driving `loco` (0: the user picks one); null when all nine are open.
     ThrottleWidget* addThrottle(std::uint32_t loco = 0);
@@ -64,6 +67,7 @@ private:
     void retranslate();
 
     QPointer<model::Railway> m_railway;
+    QPointer<LocomotivePictureBook> m_pictures;
     QList<ThrottleWidget*> m_throttles;
     QPushButton* m_add;
     QLabel* m_keysHint;

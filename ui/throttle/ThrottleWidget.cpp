@@ -1,5 +1,6 @@
 #include "throttle/ThrottleWidget.h"
 
+#include "common/LocomotivePictureBook.h"
 #include "common/LocomotiveTableModel.h"
 #include "common/NotReported.h"
 #include "throttle/FunctionPad.h"
@@ -25,6 +26,8 @@ namespace {
 constexpr int SpeedUnitsPerPercent = model::Locomotive::MaxSpeed / 100;
 // A dragged slider sends at most one speed command per this many milliseconds.
 constexpr int SendIntervalMs = 40;
+// The locomotive's picture in the header, 3:1 like the stations' pictures.
+constexpr QSize PictureBox(132, 44);
 
 const char* const UnacknowledgedProperty = "unacknowledged";
 
@@ -104,10 +107,17 @@ QWidget* ThrottleWidget::createHeader() {
     m_details = new QLabel(header);
     m_details->setObjectName(QStringLiteral("locomotiveDetails"));
     m_details->setEnabled(false);
+    m_picture = new QLabel(header);
+    m_picture->setObjectName(QStringLiteral("locomotivePicture"));
+    m_picture->setFixedSize(PictureBox);
+    m_picture->setAlignment(Qt::AlignCenter);
+    auto* about = new QHBoxLayout;
+    about->addWidget(m_picture);
+    about->addWidget(m_details, 1);
     layout->addWidget(m_numberLabel, 0, 0);
     layout->addWidget(m_choice, 0, 1);
     layout->addWidget(m_close, 0, 2);
-    layout->addWidget(m_details, 1, 1, 1, 2);
+    layout->addLayout(about, 1, 1, 1, 2);
     layout->setColumnStretch(1, 1);
     return header;
 }
@@ -201,8 +211,30 @@ void ThrottleWidget::choose(int index) {
     setFocus(); // back to the slider: keys drive, and Space stays the window's STOP
 }
 
+void ThrottleWidget::setPictures(LocomotivePictureBook* pictures) {
+    if (m_pictures)
+        m_pictures->disconnect(this);
+    m_pictures = pictures;
+    if (m_pictures)
+        connect(m_pictures, &LocomotivePictureBook::changed, this, &ThrottleWidget::showPicture);
+    showPicture();
+}
+
+void ThrottleWidget::showPicture() {
+    const model::Locomotive* loco = m_railway && m_loco ? m_railway->locomotive(m_loco) : nullptr;
+    m_picture->setVisible(loco != nullptr);
+    if (!loco)
+        return;
+    const QString icon = loco->iconName();
+    m_picture->setPixmap(m_pictures ? m_pictures->picture(icon, PictureBox, devicePixelRatioF())
+                                    : LocomotivePictureBook::placeholder(PictureBox, devicePixelRatioF()));
+    m_picture->setToolTip(m_pictures ? m_pictures->describe(icon) : QString());
+    m_picture->setProperty("placeholder", !m_pictures || !m_pictures->hasPicture(icon));
+}
+
 void ThrottleWidget::showLocomotive() {
     fillChoice();
+    showPicture();
     m_functions->setLocomotive(m_railway, m_loco);
     const model::Locomotive* loco = m_railway && m_loco ? m_railway->locomotive(m_loco) : nullptr;
     m_scale->setTachoMax(loco ? loco->tachoMax() : 0);
@@ -420,11 +452,9 @@ void ThrottleWidget::retranslate() {
     if (m_choice->count() > 0 && m_choice->itemData(0).toUInt() == 0)
         m_choice->setItemText(0, tr("Choose a locomotive…"));
     const model::Locomotive* loco = m_railway && m_loco ? m_railway->locomotive(m_loco) : nullptr;
-    m_details->setText(
-        !loco ? QString()
-        : loco->iconName().isEmpty()
-            ? LocomotiveTableModel::addressText(*loco)
-            : tr("%1 · picture “%2”").arg(LocomotiveTableModel::addressText(*loco), loco->iconName()));
+    m_details->setText(loco ? LocomotiveTableModel::addressText(*loco) : QString());
+    if (loco && m_pictures)
+        m_picture->setToolTip(m_pictures->describe(loco->iconName()));
     const int percent = m_slider->value();
     m_speedText->setText(!loco                  ? tr("—")
                          : loco->tachoMax() > 0 ? tr("%1 km/h").arg(percent * loco->tachoMax() / 100)

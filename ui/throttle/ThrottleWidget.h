@@ -18,6 +18,7 @@ class QToolButton;
 namespace stellwerk::ui {
 
 class FunctionPad;
+class LocomotivePictureBook;
 class SpeedScale;
 
 // One throttle: drives one locomotive chosen from the station's list with a speed slider (0-100 %, the
@@ -45,6 +46,8 @@ public:
     std::uint32_t locomotive() const { return m_loco; }
     // The number shown in the header, for the Alt+<number> focus key (0: none).
     void setNumber(int number);
+    // Where the locomotive's picture comes from (null: the placeholder only).
+    void setPictures(LocomotivePictureBook* pictures);
 
     // True while the control's last command was not acknowledged (function: its number, else ignored).
     bool isUnacknowledged(Control control, int function = -1) const;
@@ -57,6 +60,7 @@ public:
     QPushButton* emergencyStopButton() const { return m_stop; }
     QToolButton* closeButton() const { return m_close; }
     FunctionPad* functions() const { return m_functions; }
+    QLabel* picture() const { return m_picture; }
 
 signals:
     void locomotiveChosen(quint32 loco);
@@ -74,6 +78,7 @@ private:
     void fillChoice();
     void choose(int index);
     void showLocomotive();
+    void showPicture();
     void showState();
     void locomotivesChanged(const QList<quint32>& ids);
     void sliderMoved(int percent);
@@ -93,6 +98,8 @@ private:
     int m_number = 0;
     QComboBox* m_choice;
     QLabel* m_details;
+    QLabel* m_picture;
+    QPointer<LocomotivePictureBook> m_pictures;
     QLabel* m_numberLabel;
     QToolButton* m_close;
     QFrame* m_speedFrame;

@@ -139,6 +139,9 @@ bool TrackPlanPanel::openFolder(const QString& folder) {
             m_folderNames[accessory.id] = QString::fromStdString(accessory.name);
     m_folderLayout = model::TrackLayout(downloadedPages(content.layout));
     const QString findings = findingsText(content.findings);
+    if (m_connection) // the pictures of the folder's locomotives, in its icons folder
+        m_connection->pictures().setFolder(QString::fromStdString(
+            cs2config::LayoutFolder::iconsDirectoryOf(content.configDirectory).string()));
     m_folder = std::move(content);
     showProblem(findings);
     rebuild();
@@ -166,6 +169,8 @@ QString TrackPlanPanel::findingsText(const std::vector<cs2config::LayoutFinding>
 
 void TrackPlanPanel::showStationPlan() {
     m_folder.reset();
+    if (m_connection)
+        m_connection->pictures().setFolder({});
     m_folderLayout = {};
     m_folderNames.clear();
     showProblem(QString());

@@ -20,6 +20,7 @@ namespace stellwerk::connection::test {
 namespace {
 
 using Status = LocomotivePictures::Status;
+using support::FakeWebServer;
 using namespace std::chrono_literals;
 
 constexpr int WaitMs = 10000;
@@ -79,6 +80,7 @@ TEST_F(PicturesFromAStation, APictureTheStationLacksIsMissingAndNotAskedForAgain
     ASSERT_TRUE(settled(pictures_, "BR 86"));
     EXPECT_EQ(pictures_.status("BR 86"), Status::Missing);
     EXPECT_EQ(pictures_.problem("BR 86"), "the station has no picture BR 86.png");
+    EXPECT_EQ(pictures_.reason("BR 86"), LocomotivePictures::Reason::NotThere);
     pictures_.retryFailed();
     EXPECT_EQ(pictures_.picture("BR 86"), std::nullopt);
     EXPECT_EQ(pictures_.status("BR 86"), Status::Missing);
@@ -96,6 +98,7 @@ TEST_F(PicturesFromAStation, ANameThatCouldLeaveTheFolderIsNeverAskedFor) {
     EXPECT_EQ(pictures_.status("../../etc/passwd#"), Status::Missing);
     EXPECT_EQ(pictures_.problem("../../etc/passwd#"), "\"../../etc/passwd#\" names no usable picture file");
     EXPECT_EQ(pictures_.problem(""), "the locomotive names no picture");
+    EXPECT_EQ(pictures_.reason(""), LocomotivePictures::Reason::NoName);
     QTest::qWait(100);
     EXPECT_EQ(web_.requests(), 0);
 }
@@ -105,6 +108,7 @@ TEST_F(PicturesFromAStation, GarbageFromTheStationIsNoPictureAndSaysSo) {
     ASSERT_TRUE(settled(pictures_, "BR 218"));
     EXPECT_EQ(pictures_.status("BR 218"), Status::Missing);
     EXPECT_EQ(pictures_.problem("BR 218"), "the station's BR 218.png is not a PNG picture");
+    EXPECT_EQ(pictures_.reason("BR 218"), LocomotivePictures::Reason::NotAPicture);
 
     web_.setMode(FakeWebServer::Mode::Garbage);
     ASSERT_TRUE(settled(pictures_, "ICE 3"));
@@ -112,6 +116,7 @@ TEST_F(PicturesFromAStation, GarbageFromTheStationIsNoPictureAndSaysSo) {
     EXPECT_TRUE(pictures_.problem("ICE 3").startsWith("ICE 3.png could not be fetched: "))
         << pictures_.problem("ICE 3").toStdString();
     EXPECT_EQ(pictures_.picture("ICE 3"), std::nullopt);
+    EXPECT_EQ(pictures_.reason("ICE 3"), LocomotivePictures::Reason::Unreachable);
 }
 
 TEST_F(PicturesFromAStation, AHugeAnswerIsCutOffAtTheLimit) {
@@ -238,6 +243,7 @@ TEST(LocomotivePictures, WithoutFolderOrStationAPictureIsMissing) {
     EXPECT_EQ(pictures.picture("BR 218"), std::nullopt);
     EXPECT_EQ(pictures.status("BR 218"), Status::Missing);
     EXPECT_EQ(pictures.problem("BR 218"), "no icons folder has BR 218.png and no station to ask");
+    EXPECT_EQ(pictures.reason("BR 218"), LocomotivePictures::Reason::NoSource);
 }
 
 TEST(StationConnectionPictures, TheWebAddressFollowsTheStation) {

@@ -7,7 +7,7 @@
 #include <QTimer>
 #include <map>
 
-namespace stellwerk::connection::test {
+namespace stellwerk::support {
 
 // A station's web server under the test's control, on a free loopback port: it serves pictures, or
 // breaks the way a station on a layout does (gone mid-picture, garbage, silent, a huge answer, away).
@@ -108,4 +108,4 @@ private:
     int mostAtOnce_ = 0;
 };
 
-} // namespace stellwerk::connection::test
+} // namespace stellwerk::support
