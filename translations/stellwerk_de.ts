@@ -1296,10 +1296,6 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>Shows</source>
         <translation>Zeigt</translation>
     </message>
-    <message>
-        <source>Picture:</source>
-        <translation>Bild:</translation>
-    </message>
 </context>
 <context>
     <name>stellwerk::ui::LocomotivePanel</name>

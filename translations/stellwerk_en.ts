@@ -1293,10 +1293,6 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>Shows</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
-        <source>Picture:</source>
-        <translation type="unfinished"></translation>
-    </message>
 </context>
 <context>
     <name>stellwerk::ui::LocomotivePanel</name>

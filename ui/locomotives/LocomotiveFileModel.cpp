@@ -60,12 +60,15 @@ QVariant LocomotiveFileModel::data(const QModelIndex& index, int role) const {
     if (!m_editor || !index.isValid() || index.row() >= rowCount())
         return {};
     const cs2config::Locomotive& locomotive = m_editor->locomotives()[fileIndex(index.row())];
-    if (role == Qt::DisplayRole)
+    // With pictures, the Icon column shows the picture and names it in the tooltip: the names need the room.
+    if (role == Qt::DisplayRole && !(m_pictures && index.column() == Icon))
         return text(locomotive, index.column());
     if (m_pictures && index.column() == Icon && role == Qt::DecorationRole)
         return m_pictures->picture(QString::fromStdString(locomotive.icon), PictureBox);
     if (m_pictures && index.column() == Icon && role == Qt::ToolTipRole)
         return m_pictures->describe(QString::fromStdString(locomotive.icon));
+    if (m_pictures && index.column() == Icon && role == Qt::AccessibleTextRole)
+        return text(locomotive, index.column());
     if (role == Qt::TextAlignmentRole && index.column() == Functions)
         return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
     return {};

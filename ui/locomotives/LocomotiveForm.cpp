@@ -30,15 +30,15 @@ constexpr FunctionTrigger Triggers[] = {FunctionTrigger::Latching, FunctionTrigg
 // The CS2's icon number, then what it shows (our drawing and its name), the trigger and the time.
 enum FunctionColumn { IconColumn, PictureColumn, TriggerColumn, DurationColumn, FunctionColumns };
 constexpr int PictureSize = 20;
-constexpr QSize LocomotivePictureBox(180, 60);
+constexpr QSize LocomotivePictureBox(132, 44);
 
 } // namespace
 
 LocomotiveForm::LocomotiveForm(QWidget* parent)
     : QWidget(parent), m_form(new QFormLayout), m_name(new QLineEdit(this)), m_decoder(new QComboBox(this)),
       m_address(new QSpinBox(this)), m_addressRange(new QLabel(this)), m_nameLabel(new QLabel(this)),
-      m_decoderLabel(new QLabel(this)), m_addressLabel(new QLabel(this)), m_pictureLabel(new QLabel(this)),
-      m_picture(new QLabel(this)), m_pictureName(new QLabel(this)),
+      m_decoderLabel(new QLabel(this)), m_addressLabel(new QLabel(this)), m_picture(new QLabel(this)),
+      m_pictureName(new QLabel(this)),
       m_functions(new QTableWidget(cs2config::LocomotiveEditor::MaxFunctions, FunctionColumns, this)) {
     setObjectName(QStringLiteral("locomotiveForm"));
     m_name->setObjectName(QStringLiteral("locomotiveName"));
@@ -58,15 +58,22 @@ LocomotiveForm::LocomotiveForm(QWidget* parent)
     m_form->addRow(m_addressLabel, address);
     m_picture->setObjectName(QStringLiteral("locomotivePicture"));
     m_picture->setFixedSize(LocomotivePictureBox);
+    m_picture->setAlignment(Qt::AlignCenter);
     m_pictureName->setEnabled(false);
-    auto* picture = new QHBoxLayout;
-    picture->addWidget(m_picture);
-    picture->addWidget(m_pictureName, 1);
-    m_form->addRow(m_pictureLabel, picture);
+    m_pictureName->setAlignment(Qt::AlignHCenter | Qt::AlignTop);
+    m_pictureName->setMaximumWidth(LocomotivePictureBox.width());
     buildFunctionRows();
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addLayout(m_form);
+    // The picture beside the fields, its name below it: no extra row in a short window.
+    auto* picture = new QVBoxLayout;
+    picture->addWidget(m_picture);
+    picture->addWidget(m_pictureName);
+    picture->addStretch(1);
+    auto* top = new QHBoxLayout;
+    top->addLayout(m_form, 1);
+    top->addLayout(picture);
+    layout->addLayout(top);
     layout->addWidget(m_functions, 1);
     connect(m_name, &QLineEdit::textEdited, this, &LocomotiveForm::edited);
     connect(m_decoder, &QComboBox::currentIndexChanged, this, [this] {
@@ -220,7 +227,6 @@ void LocomotiveForm::retranslate() {
     m_nameLabel->setText(tr("Name:"));
     m_decoderLabel->setText(tr("Decoder:"));
     m_addressLabel->setText(tr("Address:"));
-    m_pictureLabel->setText(tr("Picture:"));
     showLocomotivePicture();
     for (int i = 0; i < m_decoder->count(); ++i)
         m_decoder->setItemText(

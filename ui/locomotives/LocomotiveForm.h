@@ -66,7 +66,6 @@ private:
     QLabel* m_nameLabel;
     QLabel* m_decoderLabel;
     QLabel* m_addressLabel;
-    QLabel* m_pictureLabel;
     QLabel* m_picture;
     QLabel* m_pictureName;
     QPointer<LocomotivePictureBook> m_pictures;

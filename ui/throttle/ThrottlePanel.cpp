@@ -21,6 +21,12 @@
 #include <algorithm>
 
 namespace stellwerk::ui {
+namespace {
+
+// The picture on an offer to drive a locomotive.
+constexpr QSize OfferPicture(54, 18);
+
+} // namespace
 
 ThrottlePanel::ThrottlePanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("throttlePanel"));
@@ -94,9 +100,14 @@ void ThrottlePanel::setRailway(model::Railway* railway) {
 }
 
 void ThrottlePanel::setPictures(LocomotivePictureBook* pictures) {
+    if (m_pictures)
+        m_pictures->disconnect(this);
     m_pictures = pictures;
+    if (m_pictures)
+        connect(m_pictures, &LocomotivePictureBook::changed, this, &ThrottlePanel::updateOffers);
     for (ThrottleWidget* throttle : m_throttles)
         throttle->setPictures(pictures);
+    updateOffers();
 }
 
 ThrottleWidget* ThrottlePanel::addThrottle(std::uint32_t loco) {
@@ -207,6 +218,11 @@ void ThrottlePanel::offer(QPushButton* button, const model::Locomotive& loco) {
     const quint32 uid = loco.id().value();
     button->setText(loco.speed() > 0 ? tr("Drive %1 (running)").arg(loco.displayName())
                                      : tr("Drive %1").arg(loco.displayName()));
+    // The locomotive's picture, so that a newcomer recognises the train on the plan and the layout.
+    button->setIconSize(OfferPicture);
+    button->setIcon(m_pictures
+                        ? QIcon(m_pictures->picture(loco.iconName(), OfferPicture, devicePixelRatioF()))
+                        : QIcon());
     button->disconnect(this);
     connect(button, &QPushButton::clicked, this, [this, uid] {
         if (ThrottleWidget* throttle = addThrottle(uid))

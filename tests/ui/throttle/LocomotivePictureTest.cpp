@@ -157,7 +157,7 @@ TEST_F(DeskPictures, TheLocoEditorAndListShowThePicture) {
     form.show();
     EXPECT_EQ(form.pictureName()->text(), "ICE 3");
     ASSERT_TRUE(QTest::qWaitFor([&] { return book.hasPicture("ICE 3"); }, WaitMs));
-    EXPECT_EQ(form.picture()->pixmap().size(), QSize(180, 60));
+    EXPECT_EQ(form.picture()->pixmap().size(), QSize(132, 44));
     EXPECT_EQ(form.picture()->toolTip(), "Picture “ICE 3”");
     form.setIcon({});
     EXPECT_EQ(form.pictureName()->text(), "none");
@@ -181,4 +181,6 @@ TEST_F(DeskPictures, TheLocoEditorAndListShowThePicture) {
                   .scaled(LocomotiveFileModel::PictureBox, Qt::KeepAspectRatio, Qt::SmoothTransformation)
                   .convertToFormat(QImage::Format_ARGB32));
     EXPECT_EQ(model.data(icon, Qt::ToolTipRole).toString(), "Picture “ICE 3”");
+    EXPECT_EQ(model.data(icon, Qt::DisplayRole).toString(), "") << "the picture takes the name's room";
+    EXPECT_EQ(model.data(icon, Qt::AccessibleTextRole).toString(), "ICE 3");
 }
