@@ -4,6 +4,7 @@
 #include "programming/ProgrammingPanel.h"
 
 #include "EmbeddedStationSupport.h"
+#include "common/LocomotivePictureBook.h"
 #include "locomotives/LocomotiveFileModel.h"
 #include "locomotives/LocomotivePanel.h"
 #include "model/Railway.h"
@@ -160,9 +161,14 @@ TEST_F(ProgrammingPanelTest, SavesTheDocumentationScreenshotsWhenAsked) {
         QApplication::setPalette(palette);
     }
     const QString suffix = dark ? QStringLiteral("-dark.png") : QStringLiteral(".png");
+    LocomotivePictureBook pictures(&station.pictures()); // the embedded station's web server
+    locomotives.setPictures(&pictures);
     locomotives.resize(1100, 640);
     ASSERT_TRUE(locomotives.selectLocomotive(QStringLiteral("ICE 3 Velaro")));
     locomotives.show();
+    for (const char* icon : {"BR 218", "V 100", "ICE 3", "Koef III", "BR 01", "E 44", "BR 212", "Taurus",
+                             "BR 89", "VT 98", "Re 460", "BR 103"})
+        ASSERT_TRUE(QTest::qWaitFor([&] { return pictures.hasPicture(icon); }, AnswerMs)) << icon;
     QTest::qWait(100);
     EXPECT_TRUE(locomotives.grab().save(folder + QStringLiteral("/locomotives") + suffix));
 

@@ -4,6 +4,7 @@
 
 #include "EmbeddedStationSupport.h"
 #include "common/FunctionIcons.h"
+#include "common/LocomotivePictureBook.h"
 #include "model/Railway.h"
 #include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
@@ -15,6 +16,7 @@
 
 #include <QApplication>
 #include <QComboBox>
+#include <QLabel>
 #include <QPalette>
 #include <QPushButton>
 #include <QSettings>
@@ -360,7 +362,12 @@ QPalette darkPalette() {
 // Three throttles side by side, each wide enough for its keys and texts. With STELLWERK_SCREENSHOT_DIR
 // set, the page is saved as throttles.png (and throttles-dark.png) there for docs/screenshots.
 TEST_F(ThrottlePanelTest, ThreeThrottlesStandSideBySideUnclipped) {
+    // The station here has no web server: the pictures come from an icons folder, as from an opened layout.
+    connection::LocomotivePictures pictures;
+    pictures.setFolder(QStringLiteral(STELLWERK_DEMO_ICONS_DIR));
+    LocomotivePictureBook book(&pictures);
     ThrottlePanel panel;
+    panel.setPictures(&book);
     panel.setRailway(railways.railway());
     constexpr quint32 Ice3 = 0x4002;
     for (const quint32 loco : {Br218, Ice3, V100})
@@ -382,6 +389,7 @@ TEST_F(ThrottlePanelTest, ThreeThrottlesStandSideBySideUnclipped) {
     for (qsizetype i = 0; i < panel.throttles().size(); ++i) {
         ThrottleWidget* throttle = panel.throttles()[i];
         EXPECT_TRUE(throttle->isVisible());
+        EXPECT_FALSE(throttle->picture()->property("placeholder").toBool()) << "the folder's picture";
         EXPECT_GE(throttle->width(), throttle->minimumSizeHint().width());
         if (i > 0) {
             EXPECT_GE(throttle->x(), panel.throttles()[i - 1]->geometry().right()) << "side by side";
