@@ -4,6 +4,7 @@
 #include "trackplan/TrackColors.h"
 
 #include <QFontMetrics>
+#include <QHash>
 #include <QPainter>
 #include <QRawFont>
 #include <algorithm>
@@ -30,15 +31,54 @@ bool carriesName(Category category) {
     }
 }
 
-// The glyph tables of the tags' font; every tag of a zoom shares one font, so one is kept.
-const QRawFont& rawFontOf(const QFont& font) {
-    static QFont kept;
-    static QRawFont raw;
-    if (!raw.isValid() || kept != font) {
-        kept = font;
-        raw = QRawFont::fromFont(font);
+// One character of a tag: its glyph in the tags' font and how far it moves the pen.
+struct Glyph {
+    quint32 index = 0;
+    QPointF advance;
+};
+
+// The glyph tables of the tags' font, with each character looked up once: every tag of a zoom shares one
+// font, so one is kept, and the names of a page share a few dozen characters between them.
+class GlyphTable {
+public:
+    const QRawFont& font(const QFont& font) {
+        if (!m_raw.isValid() || m_font != font) {
+            m_font = font;
+            m_raw = QRawFont::fromFont(font);
+            m_glyphs.clear();
+            m_lineHeight = QFontMetrics(font).height();
+        }
+        return m_raw;
     }
-    return raw;
+    // The character's glyph; index 0 when the font lacks it or it is half of a surrogate pair.
+    Glyph glyph(QChar character) {
+        const auto known = m_glyphs.constFind(character.unicode());
+        if (known != m_glyphs.cend())
+            return *known;
+        Glyph glyph;
+        if (!character.isSurrogate()) {
+            const QList<quint32> indexes = m_raw.glyphIndexesForString(QString(character));
+            if (indexes.size() == 1 && indexes[0] != 0) {
+                glyph.index = indexes[0];
+                glyph.advance = m_raw.advancesForGlyphIndexes(indexes).value(0);
+            }
+        }
+        return *m_glyphs.insert(character.unicode(), glyph);
+    }
+
+    // QFontMetrics::height() of the font last given to font().
+    int lineHeight() const { return m_lineHeight; }
+
+private:
+    QFont m_font;
+    QRawFont m_raw;
+    int m_lineHeight = 0;
+    QHash<char16_t, Glyph> m_glyphs;
+};
+
+GlyphTable& glyphTable() {
+    static GlyphTable table;
+    return table;
 }
 
 } // namespace
@@ -74,34 +114,42 @@ void TileTag::place(const QString& name, QPoint corner, int room) {
         m_text = QFontMetrics(m_font).elidedText(name, Qt::ElideRight, room - 4);
         advance = laidOut(m_text);
     }
-    m_rect = QRect(corner, QSize(advance + 4, QFontMetrics(m_font).height()));
+    glyphTable().font(m_font);
+    m_rect = QRect(corner, QSize(advance + 4, glyphTable().lineHeight()));
 }
 
 // Places the text's glyphs once, straight from the font's tables: a repaint then only blits them. Names on
 // a plan are short words in Latin script, which need no shaping (2,000 names: 2 ms instead of 12 ms).
 // A character the font lacks falls back to Qt's text layout, which finds another font for it.
 int TileTag::laidOut(const QString& text) {
-    const QRawFont& font = rawFontOf(m_font);
-    const QList<quint32> glyphs = font.glyphIndexesForString(text);
-    if (!font.isValid() || glyphs.contains(0u) || glyphs.size() != text.size()) {
-        m_glyphs = QGlyphRun();
-        m_shaped.setText(text);
-        m_shaped.setTextFormat(Qt::PlainText);
-        m_shaped.prepare(QTransform(), m_font);
-        return int(std::ceil(m_shaped.size().width()));
-    }
-    const QList<QPointF> advances = font.advancesForGlyphIndexes(glyphs);
+    GlyphTable& table = glyphTable();
+    const QRawFont& font = table.font(m_font);
+    QList<quint32> glyphs;
     QList<QPointF> positions;
-    positions.reserve(glyphs.size());
+    glyphs.reserve(text.size());
+    positions.reserve(text.size());
     QPointF pen(2, font.ascent());
-    for (const QPointF& advance : advances) {
+    for (const QChar character : text) {
+        const Glyph glyph = table.glyph(character);
+        if (!font.isValid() || glyph.index == 0)
+            return laidOutByQt(text);
+        glyphs.append(glyph.index);
         positions.append(pen);
-        pen += advance;
+        pen += glyph.advance;
     }
     m_glyphs.setRawFont(font);
     m_glyphs.setGlyphIndexes(glyphs);
     m_glyphs.setPositions(positions);
     return int(std::ceil(pen.x() - 2));
+}
+
+// Qt's own text layout, which finds another font for a character the tags' font lacks.
+int TileTag::laidOutByQt(const QString& text) {
+    m_glyphs = QGlyphRun();
+    m_shaped.emplace(text);
+    m_shaped->setTextFormat(Qt::PlainText);
+    m_shaped->prepare(QTransform(), m_font);
+    return int(std::ceil(m_shaped->size().width()));
 }
 
 QFont TileTag::tagFont(const QFont& font, int tileSize) {
@@ -118,10 +166,10 @@ void TileTag::paint(QPainter& painter, const TrackColors& colors) const {
     painter.fillRect(m_rect, backing);
     painter.setPen(m_occupant ? (colors.occupied.lightness() < 150 ? QColor(Qt::white) : QColor(Qt::black))
                               : colors.text);
-    if (m_glyphs.isEmpty())
-        painter.drawStaticText(m_rect.topLeft() + QPoint(2, 0), m_shaped);
-    else
+    if (!m_glyphs.isEmpty())
         painter.drawGlyphRun(m_rect.topLeft(), m_glyphs);
+    else if (m_shaped)
+        painter.drawStaticText(m_rect.topLeft() + QPoint(2, 0), *m_shaped);
 }
 
 } // namespace stellwerk::ui

@@ -50,14 +50,17 @@ public:
 private:
     explicit TileTag(const QFont& font) : m_font(font) {}
     int laidOut(const QString& text);
+    int laidOutByQt(const QString& text);
     void place(const QString& name, QPoint corner, int room);
 
     QFont m_font;
     QString m_text;
     QRect m_rect;
     bool m_occupant = false;
-    QGlyphRun m_glyphs;   // m_text's glyphs placed in m_font, from the rect's top left
-    QStaticText m_shaped; // m_text laid out by Qt, when m_font lacks one of its characters
+    QGlyphRun m_glyphs; // m_text's glyphs placed in m_font, from the rect's top left
+    // m_text laid out by Qt, when m_font lacks one of its characters (made only then: 2,000 tags would
+    // otherwise touch a megabyte of new memory for nothing)
+    std::optional<QStaticText> m_shaped;
 };
 
 // The tags of one page laid out once per zoom: a repaint draws each tag's known text at its known place

@@ -4,13 +4,28 @@
 
 #include <QImage>
 #include <QPainter>
+#include <QSemaphore>
 #include <QSet>
+#include <QThreadPool>
 #include <algorithm>
 #include <cmath>
-#include <future>
 #include <thread>
 
 namespace stellwerk::ui {
+namespace {
+
+// The threads that help the GUI thread draw pictures ahead. They are kept, not started per paint: a new
+// thread also starts with new memory, and touching new memory is what a first paint spends most on.
+QThreadPool& helpers(int count) {
+    static QThreadPool pool;
+    if (pool.maxThreadCount() != count) {
+        pool.setMaxThreadCount(count);
+        pool.setExpiryTimeout(-1);
+    }
+    return pool;
+}
+
+} // namespace
 
 void TrackTileCache::prepare(int tileSize, qreal devicePixelRatio, const TrackColors& colors,
                              const QFont& font) {
@@ -37,10 +52,13 @@ void TrackTileCache::paint(QPainter& painter, QPoint cell, const TrackTileLook& 
 
 TrackTileCache::Key TrackTileCache::keyOf(const TrackTileLook& look) {
     const bool label = look.category == cs2config::TrackCategory::Text;
-    return {look.type,          label ? look.text : QString(),
+    Key key{look.type,          label ? look.text : QString(),
             int(look.category), look.rotation,
             look.position,      look.occupied,
             look.running,       look.onRoute};
+    key.hash = qHashMulti(0, key.type, key.text, key.category, key.rotation, key.position, key.occupied,
+                          key.running, key.onRoute);
+    return key;
 }
 
 const TrackTileCache::Picture& TrackTileCache::pictureOf(const TrackTileLook& look) {
@@ -81,10 +99,13 @@ void TrackTileCache::drawAhead(const std::vector<TrackTileLook>& looks) {
         seen.insert(key);
         const bool turning = (look.rotation & 3) != 0 && turnsExactly(look);
         (turning ? turns : uprights).push_back(look);
+        if (!turning)
+            continue;
         TrackTileLook upright = look;
         upright.rotation = 0;
-        if (turning && !m_pictures.contains(keyOf(upright)) && !seen.contains(keyOf(upright))) {
-            seen.insert(keyOf(upright));
+        if (const Key uprightKey = keyOf(upright);
+            !m_pictures.contains(uprightKey) && !seen.contains(uprightKey)) {
+            seen.insert(uprightKey);
             uprights.push_back(upright);
         }
     }
@@ -110,12 +131,16 @@ std::vector<TrackTileCache::Picture> TrackTileCache::onAllCores(std::size_t coun
     };
     const std::size_t threads =
         std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, MaximumThreads);
-    std::vector<std::future<void>> helpers;
-    for (std::size_t t = 1; t < threads && t < count; ++t)
-        helpers.push_back(std::async(std::launch::async, range, t, threads));
+    QThreadPool& pool = helpers(int(threads) - 1);
+    QSemaphore done;
+    int started = 0;
+    for (std::size_t t = 1; t < threads && t < count; ++t, ++started)
+        pool.start([&range, &done, t, threads] {
+            range(t, threads);
+            done.release();
+        });
     range(0, threads);
-    for (std::future<void>& helper : helpers)
-        helper.get();
+    done.acquire(started);
     return pictures;
 }
 
@@ -125,7 +150,12 @@ void TrackTileCache::insert(const std::vector<TrackTileLook>& looks, std::vector
 }
 
 QImage TrackTileCache::drawn(const TrackTileLook& look, const QRect& pixels) const {
-    QImage image((QSizeF(pixels.size()) * m_devicePixelRatio).toSize(), QImage::Format_ARGB32_Premultiplied);
+    // Drawn into one image per thread, kept from picture to picture: the picture keeps a cropped copy, and
+    // a new image per picture would touch new memory each time.
+    const QSize size = (QSizeF(pixels.size()) * m_devicePixelRatio).toSize();
+    thread_local QImage image;
+    if (image.size() != size)
+        image = QImage(size, QImage::Format_ARGB32_Premultiplied);
     image.setDevicePixelRatio(m_devicePixelRatio);
     image.fill(Qt::transparent);
     QPainter painter(&image);

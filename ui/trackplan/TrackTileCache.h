@@ -43,11 +43,9 @@ private:
         bool occupied = false;
         bool running = false;
         bool onRoute = false;
+        size_t hash = 0; // of the fields above, made once: a page's paint looks up thousands of keys
         bool operator==(const Key&) const = default;
-        friend size_t qHash(const Key& key, size_t seed = 0) {
-            return qHashMulti(seed, key.type, key.text, key.category, key.rotation, key.position,
-                              key.occupied, key.running);
-        }
+        friend size_t qHash(const Key& key, size_t seed = 0) { return key.hash ^ seed; }
     };
     struct Picture {
         QImage image;  // not a QPixmap: on the raster engine both are blitted alike, and images need no
