@@ -1,0 +1,44 @@
+#pragma once
+
+#include "can/CanFrame.h"
+#include "handhelds/Handheld.h"
+#include "mcan/HandleRoles.h"
+
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <vector>
+
+namespace stellwerk::handhelds {
+
+// The handhelds of another master (a CS2, CS1 or ECoS on the same bus), as the frames between them show:
+// which MS1 logged in at which node, its name, the locomotive it took and how it drives it, and whether it
+// still polls. Stellwerk only watches them; it never answers.
+class HandheldWatcher {
+public:
+    using Clock = std::chrono::steady_clock;
+
+    explicit HandheldWatcher(std::chrono::milliseconds silentAfter) : silentAfter_(silentAfter) {}
+
+    // Reads one M-CAN frame; true when something shown changed.
+    bool observe(const can::CanFrame& frame, Clock::time_point now);
+    // Marks handhelds silent or offline that stopped polling; true when something shown changed.
+    bool tick(Clock::time_point now);
+    std::vector<Handheld> handhelds() const;
+    void clear();
+
+private:
+    struct Watched {
+        Handheld handheld;
+        Clock::time_point lastHeard;
+    };
+
+    bool observeSlave(Watched& watched, const mcan::Message& message);
+    bool observeLoco(Watched& watched, const mcan::Message& message);
+
+    std::chrono::milliseconds silentAfter_;
+    mcan::HandleRoles roles_;
+    std::map<std::uint8_t, Watched> watched_; // by slave node
+};
+
+} // namespace stellwerk::handhelds
