@@ -107,6 +107,7 @@ void HandheldMaster::otherMasterSpoke(const can::CanFrame& frame) {
         live.session->releaseAll();
     sessions_.clear();
     holders_.clear();
+    afterAnswer_.clear();
     tell({HandheldEvent::Kind::AnotherMaster, 0, standDownReason_});
     emit handheldsChanged();
     if (wasMaster)
@@ -125,12 +126,16 @@ bool HandheldMaster::isEcho(const can::CanFrame& frame) {
     return true;
 }
 
+// Sends the messages, then whatever was waiting to be told after an answer.
 void HandheldMaster::send(const std::vector<mcan::Message>& messages) {
-    if (messages.empty() || !isMaster())
+    std::vector<mcan::Message> all = messages;
+    all.insert(all.end(), afterAnswer_.begin(), afterAnswer_.end());
+    afterAnswer_.clear();
+    if (all.empty() || !isMaster())
         return;
     std::vector<can::CanFrame> frames;
     const Clock::time_point now = Clock::now();
-    for (const mcan::Message& message : messages) {
+    for (const mcan::Message& message : all) {
         frames.push_back(mcan::encode(message));
         sent_.emplace_back(frames.back(), now);
         if (sent_.size() > EchoMemory)
@@ -138,6 +143,11 @@ void HandheldMaster::send(const std::vector<mcan::Message>& messages) {
     }
     counters_.answers += frames.size();
     send_(frames);
+}
+
+// What one handheld's request makes the master tell the others goes out after the answer to the request.
+void HandheldMaster::sendAfterAnswer(const std::vector<mcan::Message>& messages) {
+    afterAnswer_.insert(afterAnswer_.end(), messages.begin(), messages.end());
 }
 
 void HandheldMaster::receiveLogin(const mcan::Message& message, const can::CanFrame&, Clock::time_point now) {
@@ -247,6 +257,7 @@ void HandheldMaster::setActive(bool active) {
             live.session->releaseAll();
         sessions_.clear();
         holders_.clear();
+        afterAnswer_.clear();
         emit handheldsChanged();
     }
     if (wasMaster != isMaster())

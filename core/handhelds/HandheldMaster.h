@@ -125,6 +125,7 @@ private:
     bool spokeAsMaster(const mcan::Message& message, const can::CanFrame& frame) const;
     void otherMasterSpoke(const can::CanFrame& frame);
     void send(const std::vector<mcan::Message>& messages);
+    void sendAfterAnswer(const std::vector<mcan::Message>& messages);
     void tick();
     void checkLiveness(Live& live, Clock::time_point now);
     void drop(std::uint8_t slaveNode);
@@ -145,6 +146,7 @@ private:
     std::map<std::uint32_t, Handheld> offline_;      // by UID: dropped, or in the boot loader
     std::map<std::uint32_t, std::uint32_t> holders_; // Loc-ID -> UID of the handheld that drives it
     std::vector<HandheldLoco> locos_;                // the railway's, as the handhelds show them
+    std::vector<mcan::Message> afterAnswer_;         // told to others once a handheld's request is answered
     std::deque<std::pair<can::CanFrame, Clock::time_point>> sent_; // our own frames, to know their echoes
     bool active_ = true;
     bool otherMaster_ = false;

@@ -37,7 +37,7 @@ bool HandheldMaster::take(SlaveSession& session, std::uint32_t locId) {
     session.handheld().locoName = known ? QString::fromStdString(handheldName(known->name)) : QString();
     for (auto& [node, live] : sessions_)
         if (live.session.get() != &session && settings_.exclusive)
-            send(live.session->holderChanged(locId, true));
+            sendAfterAnswer(live.session->holderChanged(locId, true));
     tell({HandheldEvent::Kind::LocoTaken, uid, session.handheld().name, locId});
     return true;
 }
@@ -49,7 +49,7 @@ void HandheldMaster::release(SlaveSession& session, std::uint32_t locId) {
     holders_.erase(holder);
     for (auto& [node, live] : sessions_)
         if (live.session.get() != &session && settings_.exclusive)
-            send(live.session->holderChanged(locId, false));
+            sendAfterAnswer(live.session->holderChanged(locId, false));
     tell({HandheldEvent::Kind::LocoReleased, session.handheld().uid, session.handheld().name, locId});
 }
 
@@ -99,7 +99,7 @@ void HandheldMaster::stopKey(SlaveSession& session, bool stop) {
     if (railway_)
         railway_->setPower(!stop);
     for (auto& [node, live] : sessions_) // every handheld shows it at once (7.4)
-        send(live.session->status(stop, false));
+        sendAfterAnswer(live.session->status(stop, false));
 }
 
 void HandheldMaster::changed(SlaveSession& session) {
@@ -178,6 +178,7 @@ void HandheldMaster::tick() {
     }
     for (const std::uint8_t node : lost)
         drop(node);
+    send({}); // what the dropped handhelds' locomotives mean to the others
 }
 
 // 7.2.2: silent for the silence time, the master polls every second, at most masterPolls times, then ends it.

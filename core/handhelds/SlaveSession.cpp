@@ -192,7 +192,8 @@ std::vector<mcan::Message> SlaveSession::answerLoco(const mcan::Message& message
             mcan::Throttle{from(handle), 0, std::uint16_t(host_.heldByOther(*this, locId) ? 0xFFFF : 0), 1}};
     if (const auto* request = as<mcan::Throttle>(message))
         return answerThrottle(*request, locId);
-    if (const auto* request = as<mcan::NameRequest>(message))
+    if (const auto* request = as<mcan::NameRequest>(message);
+        request && request->offset <= 12 && request->offset % 4 == 0)
         return answerName(*request, locId);
     if (const auto* change = as<mcan::FunctionValue>(message);
         change && change->function <= LastFunctionKey) {
@@ -257,7 +258,7 @@ std::vector<mcan::Message> SlaveSession::answerThrottle(const mcan::Throttle& re
         }
         handheld_.loco = locId;
         handheld_.locoRefused = false;
-        shown_.clear();
+        rememberShown(locId);
         const LocoDrive drive = host_.drive(locId);
         handheld_.speed = handheldSpeed(drive.speed);
         handheld_.forward = drive.forward;
@@ -308,6 +309,14 @@ std::vector<mcan::Message> SlaveSession::nextInStack(const mcan::LocoListQuery& 
 std::vector<mcan::Message> SlaveSession::status(bool stopped, bool shortCircuit) const {
     return {mcan::StatusValue{from(SyHandle, mcan::prio::Status), 1, std::uint8_t(stopped ? 1 : 0)},
             mcan::StatusValue{from(SyHandle, mcan::prio::Status), 2, std::uint8_t(shortCircuit ? 1 : 0)}};
+}
+
+// The handheld shows the values it read during the upgrade: from now on, only changes are told.
+void SlaveSession::rememberShown(std::uint32_t locId) {
+    shown_.clear();
+    const HandheldLoco* loco = host_.loco(locId);
+    for (std::uint8_t function = 1; function <= (loco ? lastKey(*loco) : 1); ++function)
+        shown_.emplace_back(function, functionValue(function, locId));
 }
 
 std::vector<mcan::Message> SlaveSession::driveChanged(std::uint32_t locId, const LocoDrive& drive) {

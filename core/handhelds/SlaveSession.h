@@ -90,6 +90,7 @@ private:
     std::vector<mcan::Message> nextInStack(const mcan::LocoListQuery& query) const;
     void learnName(const mcan::NameSegment& segment);
     std::uint8_t functionValue(std::uint8_t function, std::uint32_t locId) const;
+    void rememberShown(std::uint32_t locId);
 
     Handheld handheld_;
     std::uint32_t masterUid_;
