@@ -13,6 +13,8 @@ target_sources(stellwerk-model PRIVATE
     model/Programmer.h
     model/Railway.cpp
     model/Railway.h
+    model/RailwayHandhelds.cpp
+    model/RailwayHandhelds.h
     model/RailwayRoutes.cpp
     model/RailwayState.cpp
     model/ReadingPoller.cpp
@@ -22,4 +24,4 @@ target_sources(stellwerk-model PRIVATE
     model/RoutePlan.cpp
     model/TrackLayout.cpp
 )
-target_link_libraries(stellwerk-model PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-station Qt6::Core)
+target_link_libraries(stellwerk-model PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-station stellwerk-handhelds Qt6::Core)

@@ -1,0 +1,116 @@
+#include "model/RailwayHandhelds.h"
+
+#include "handhelds/HandheldMaster.h"
+#include "model/Railway.h"
+
+namespace stellwerk::model {
+namespace {
+
+handhelds::RailFormat formatOf(cs2::Protocol protocol) {
+    switch (protocol) {
+    case cs2::Protocol::Mfx:
+        return handhelds::RailFormat::Mfx;
+    case cs2::Protocol::Dcc:
+        return handhelds::RailFormat::Dcc;
+    case cs2::Protocol::Mm2:
+        return handhelds::RailFormat::Motorola;
+    default:
+        break;
+    }
+    return handhelds::RailFormat::Unknown;
+}
+
+} // namespace
+
+RailwayHandhelds::RailwayHandhelds(Railway& railway, handhelds::HandheldMaster& master, QObject* parent)
+    : QObject(parent), railway_(railway), master_(master) {
+    connect(&railway_, &Railway::loaded, this, [this] { master_.locomotivesChanged(); });
+    connect(&railway_, &Railway::locomotivesChanged, this, [this](const QList<quint32>& ids) {
+        for (const quint32 id : ids)
+            master_.locoChanged(id);
+    });
+    connect(&railway_, &Railway::powerChanged, this, [this] { master_.powerChanged(); });
+    connect(&railway_, &Railway::stateReportedChanged, this, [this] { master_.powerChanged(); });
+    master_.setRailway(this);
+}
+
+RailwayHandhelds::~RailwayHandhelds() {
+    master_.setRailway(nullptr);
+}
+
+// lokomotive.cs2 keeps the MS1's symbol (`.symbol`: 0 electric, 1 diesel, 2 steam, 3 none).
+handhelds::LocoKind RailwayHandhelds::kindOf(std::uint32_t locId) const {
+    const cs2config::LocomotiveFile* file = railway_.locomotiveFile();
+    if (!file)
+        return handhelds::LocoKind::None;
+    for (const cs2config::Locomotive& record : file->locomotives)
+        if (record.uid == locId)
+            switch (record.symbol) {
+            case 0:
+                return handhelds::LocoKind::Electric;
+            case 1:
+                return handhelds::LocoKind::Diesel;
+            case 2:
+                return handhelds::LocoKind::Steam;
+            default:
+                return handhelds::LocoKind::None;
+            }
+    return handhelds::LocoKind::None;
+}
+
+std::vector<handhelds::HandheldLoco> RailwayHandhelds::locomotives() const {
+    std::vector<handhelds::HandheldLoco> locos;
+    for (const Locomotive& loco : railway_.state().locomotives().items()) {
+        if (!loco.inLayout())
+            continue; // seen on the bus, not in lokomotive.cs2: another controller's
+        handhelds::HandheldLoco shown{loco.id().value(),
+                                      loco.displayName().toStdString(),
+                                      kindOf(loco.id().value()),
+                                      formatOf(loco.protocol()),
+                                      {}};
+        for (const LocomotiveFunction& function : loco.functions())
+            shown.functions.push_back(
+                {function.number, function.trigger == cs2config::FunctionTrigger::Momentary});
+        locos.push_back(std::move(shown));
+    }
+    return locos;
+}
+
+std::optional<handhelds::LocoDrive> RailwayHandhelds::drive(std::uint32_t locId) const {
+    const Locomotive* loco = railway_.locomotive(locId);
+    if (!loco)
+        return std::nullopt;
+    handhelds::LocoDrive drive{loco->speed(), loco->direction() != cs2::Direction::Backward, 0};
+    for (int number = 0; number < Locomotive::MaxFunctions; ++number)
+        if (loco->functionOn(number))
+            drive.functions |= 1u << number;
+    return drive;
+}
+
+std::optional<bool> RailwayHandhelds::powerOn() const {
+    const std::optional<station::PowerState> power = railway_.power();
+    if (!power)
+        return std::nullopt;
+    return *power != station::PowerState::Stopped;
+}
+
+void RailwayHandhelds::setSpeed(std::uint32_t locId, int speed) {
+    railway_.setSpeed(locId, speed);
+}
+
+void RailwayHandhelds::setDirection(std::uint32_t locId, bool forward) {
+    railway_.setDirection(locId, forward ? cs2::Direction::Forward : cs2::Direction::Backward);
+}
+
+void RailwayHandhelds::setFunction(std::uint32_t locId, int function, bool on) {
+    railway_.setFunction(locId, function, on);
+}
+
+void RailwayHandhelds::setPower(bool on) {
+    if (on)
+        railway_.go();
+    else
+        railway_.stop();
+}
+
+} // namespace stellwerk::model
