@@ -191,6 +191,17 @@ station::StationSession* StationConnection::session() const {
     return link_ ? link_->session.get() : nullptr;
 }
 
+handhelds::HandheldMaster* StationConnection::handhelds() const {
+    return link_ && link_->handhelds ? &link_->handhelds->master() : nullptr;
+}
+
+void StationConnection::setHandheldRole(HandheldRole role) {
+    settings_.handhelds.role = role;
+    if (link_ && link_->handhelds)
+        link_->handhelds->setRole(role,
+                                  loaded_ ? result_.devices : std::vector<station::DeviceDescription>{});
+}
+
 void StationConnection::open(std::unique_ptr<transport::Transport> station,
                              const std::vector<transport::TransportSettings>& further) {
     link_->addBus(std::move(station), bus::BusProfile::centralStation(), endpoint_.place);
@@ -198,6 +209,7 @@ void StationConnection::open(std::unique_ptr<transport::Transport> station,
         link_->addBus(transport::createTransport(settings), settings_.furtherBusProfile,
                       StationEndpoint::of(settings).place);
     link_->session = std::make_unique<station::StationSession>(link_->stationBus(), settings_.session);
+    link_->handhelds = std::make_unique<HandheldConnection>(link_->stationBus(), settings_.handhelds);
     watchTransport();
     watchBuses();
     updateState();
@@ -323,6 +335,7 @@ void StationConnection::startupReady(const station::StartupResult& result) {
     result_ = result;
     loading_ = false;
     loaded_ = true;
+    link_->handhelds->devicesListed(result_.devices);
     pictures_->retryFailed(); // the station answers again: what failed while it was away may be there
     emit configurationLoaded(result_);
     reloadWhenPossible();

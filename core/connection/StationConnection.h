@@ -2,6 +2,7 @@
 
 #include "base/Expected.h"
 #include "bus/FrameClassifier.h"
+#include "connection/HandheldConnection.h"
 #include "connection/LocomotivePictures.h"
 #include "connection/StationEndpoint.h"
 #include "station/StartupSequence.h"
@@ -60,6 +61,7 @@ struct ConnectionSettings {
     transport::LocalPeerFactory localStation{};
     bus::BusProfile furtherBusProfile{};
     LocomotivePictures::Settings pictures{};
+    HandheldSettings handhelds{};
 };
 
 // One bus of the connection, as the monitor shows it.
@@ -116,6 +118,12 @@ public:
     const station::StartupResult& startupResult() const { return result_; }
     // The session while connected (also during the start-up), else null.
     station::StationSession* session() const;
+    // The MS1 handhelds' master on the station's bus while connected (watching only when it may not be the
+    // master), else null. Made with the session, gone with it.
+    handhelds::HandheldMaster* handhelds() const;
+    // Whether Stellwerk answers the handhelds, from now on and for later connections.
+    void setHandheldRole(HandheldRole role);
+    HandheldRole handheldRole() const { return settings_.handhelds.role; }
     // Why the connection failed (state Failed), in English.
     QString failureReason() const { return failure_; }
     // The last problem reported (connection refused, a file that could not be read, ...).

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "buses/Bus.h"
+#include "connection/HandheldConnection.h"
 #include "station/StartupSequence.h"
 #include "station/StationSession.h"
 #include "transport/LocalPeer.h"
@@ -20,6 +21,7 @@ public:
     ~StationLink() override {
         startup.reset();
         session.reset();
+        handhelds.reset();
         buses.clear();
         transports.clear();
         local.reset();
@@ -45,12 +47,15 @@ public:
             QObject::disconnect(startup.get(), nullptr, receiver, nullptr);
         if (session)
             QObject::disconnect(&session->liveness(), nullptr, receiver, nullptr);
+        if (handhelds)
+            QObject::disconnect(&handhelds->master(), nullptr, receiver, nullptr);
     }
 
     std::unique_ptr<transport::LocalPeer> local;
     std::vector<std::unique_ptr<transport::Transport>> transports;
     std::vector<std::unique_ptr<buses::Bus>> buses;
     std::unique_ptr<station::StationSession> session;
+    std::unique_ptr<HandheldConnection> handhelds; // Stellwerk's part in the MS1 handhelds' conversation
     std::unique_ptr<station::StartupSequence> startup;
 };
 

@@ -2,6 +2,8 @@
 # user terms. The simulated CS2 reaches it only as a local peer from a factory (transport/LocalPeer.h).
 stellwerk_core_library(connection)
 target_sources(stellwerk-connection PRIVATE
+    connection/HandheldConnection.cpp
+    connection/HandheldConnection.h
     connection/LocomotivePictures.cpp
     connection/LocomotivePictures.h
     connection/StationAddress.cpp
@@ -12,5 +14,5 @@ target_sources(stellwerk-connection PRIVATE
     connection/StationEndpoint.h
     connection/StationLink.h
 )
-target_link_libraries(stellwerk-connection PUBLIC stellwerk-buses stellwerk-station stellwerk-transport Qt6::Core
+target_link_libraries(stellwerk-connection PUBLIC stellwerk-buses stellwerk-handhelds stellwerk-station stellwerk-transport Qt6::Core
     Qt6::Network)

@@ -22,7 +22,7 @@ void MemoryHandheldBook::save(std::uint32_t uid, const SavedHandheld& handheld) 
 }
 
 std::optional<SavedHandheld> SettingsHandheldBook::load(std::uint32_t uid) const {
-    QSettings settings;
+    QSettings settings(organization_, application_);
     settings.beginGroup(groupOf(uid));
     if (!settings.contains(QStringLiteral("stack")))
         return std::nullopt;
@@ -37,7 +37,7 @@ std::optional<SavedHandheld> SettingsHandheldBook::load(std::uint32_t uid) const
 }
 
 void SettingsHandheldBook::save(std::uint32_t uid, const SavedHandheld& handheld) {
-    QSettings settings;
+    QSettings settings(organization_, application_);
     settings.beginGroup(groupOf(uid));
     settings.setValue(QStringLiteral("name"), handheld.name);
     QStringList stack;

@@ -34,11 +34,18 @@ private:
     std::map<std::uint32_t, SavedHandheld> saved_;
 };
 
-// A book in the program's settings (QSettings), group "handhelds/<UID in hex>": kept across runs.
+// A book in the program's settings (QSettings of the organisation and application given), group
+// "handhelds/<UID in hex>": kept across runs.
 class SettingsHandheldBook final : public HandheldBook {
 public:
+    SettingsHandheldBook(QString organization, QString application)
+        : organization_(std::move(organization)), application_(std::move(application)) {}
     std::optional<SavedHandheld> load(std::uint32_t uid) const override;
     void save(std::uint32_t uid, const SavedHandheld& handheld) override;
+
+private:
+    QString organization_;
+    QString application_;
 };
 
 } // namespace stellwerk::handhelds

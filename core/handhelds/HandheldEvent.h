@@ -9,21 +9,22 @@ namespace stellwerk::handhelds {
 // Something a handheld did or that happened to it, one line of `stellwerk-cli handhelds`.
 struct HandheldEvent {
     enum class Kind : std::uint8_t {
-        LoggedIn,      // login stage 7 answered: it has its node
-        UpgradeDone,   // its first poll: it has read its stack and locomotives
-        LocoTaken,     // value: Loc-ID
-        LocoRefused,   // somebody else holds it; value: Loc-ID
-        LocoReleased,  // value: Loc-ID
-        Speed,         // value: 0..127, forward
-        Function,      // function: index (f0 = 0), on
-        Stop,          // its STOP key
-        Go,            // its GO key
-        Silent,        // no poll for the silence time: the master polls it
-        Back,          // heard again while silent
-        Lost,          // dropped after the master's polls went unanswered
-        FlashMode,     // it sits in its boot loader
-        AnotherMaster, // another M-CAN master answers on the bus: Stellwerk only watches
-        Renamed,       // it now calls itself `name`
+        LoggedIn,     // login stage 7 answered: it has its node
+        UpgradeDone,  // its first poll: it has read its stack and locomotives
+        LocoTaken,    // value: Loc-ID
+        LocoRefused,  // somebody else holds it; value: Loc-ID
+        LocoReleased, // value: Loc-ID
+        Speed,        // value: 0..127, forward
+        Function,     // function: index (f0 = 0), on
+        Stop,         // its STOP key
+        Go,           // its GO key
+        Silent,       // no poll for the silence time: the master polls it
+        Back,         // heard again while silent
+        Lost,         // dropped after the master's polls went unanswered
+        FlashMode,    // it sits in its boot loader
+        Watching,     // Stellwerk only watches from now on; value: why (handhelds::Watching), function: the
+                      // other master's node when another master answered
+        Renamed,      // it now calls itself `name`
     };
 
     Kind kind = Kind::LoggedIn;

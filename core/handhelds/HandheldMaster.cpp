@@ -99,19 +99,16 @@ bool HandheldMaster::spokeAsMaster(const mcan::Message& message, const can::CanF
 void HandheldMaster::otherMasterSpoke(const can::CanFrame& frame) {
     if (otherMaster_)
         return;
-    const bool wasMaster = isMaster();
     otherMaster_ = true;
-    standDownReason_ =
-        QStringLiteral("another M-CAN master answers on the bus (node %1)").arg(frame.id & 0x7F);
+    otherMasterNode_ = std::uint8_t(frame.id & 0x7F);
     for (auto& [node, live] : sessions_)
         live.session->releaseAll();
     sessions_.clear();
     holders_.clear();
     afterAnswer_.clear();
-    tell({HandheldEvent::Kind::AnotherMaster, 0, standDownReason_});
+    tell({HandheldEvent::Kind::Watching, 0, {}, 0, int(Watching::AnotherMaster), otherMasterNode_});
     emit handheldsChanged();
-    if (wasMaster)
-        emit masterChanged(false);
+    emit masterChanged(false); // also when it was only waiting: the reason to watch changed
 }
 
 bool HandheldMaster::isEcho(const can::CanFrame& frame) {
@@ -264,12 +261,22 @@ void HandheldMaster::setActive(bool active) {
         emit masterChanged(isMaster());
 }
 
-void HandheldMaster::standDown(const QString& reason) {
-    const bool wasMaster = isMaster();
-    standDownReason_ = reason;
+void HandheldMaster::standDown(Watching why) {
+    const bool changed = why != why_ || active_;
+    why_ = why;
     setActive(false);
-    if (wasMaster)
-        tell({HandheldEvent::Kind::AnotherMaster, 0, reason});
+    if (!changed)
+        return;
+    tell({HandheldEvent::Kind::Watching, 0, {}, 0, int(why)});
+    emit masterChanged(isMaster());
+}
+
+Watching HandheldMaster::watching() const {
+    if (otherMaster_)
+        return Watching::AnotherMaster;
+    if (!active_)
+        return why_ == Watching::No ? Watching::Asked : why_;
+    return Watching::No;
 }
 
 std::vector<Handheld> HandheldMaster::handhelds() const {

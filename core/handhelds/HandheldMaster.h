@@ -34,6 +34,15 @@ struct MasterSettings {
     std::chrono::milliseconds tick{100};
 };
 
+// Why Stellwerk only watches the handhelds instead of answering them.
+enum class Watching : std::uint8_t {
+    No,                // it is their master
+    UntilDevicesKnown, // it waits for the start-up to list the devices on the bus
+    CentralStation,    // a Central Station is on the bus: it is the handhelds' master itself
+    AnotherMaster,     // another master answered on the bus
+    Asked,             // a person chose to watch only
+};
+
 // What the master has seen since it started, for the monitor, the panel and tests.
 struct MasterCounters {
     std::uint64_t framesIn = 0;   // M-CAN frames received
@@ -70,9 +79,12 @@ public:
     // Whether Stellwerk answers the handhelds: false once another master spoke, or when told not to.
     bool isMaster() const { return active_ && !otherMaster_; }
     void setActive(bool active);
-    // Stops answering at once and only watches, with the reason shown to people.
-    void standDown(const QString& reason);
-    const QString& standDownReason() const { return standDownReason_; }
+    // Stops answering at once and only watches, for the reason given.
+    void standDown(Watching why);
+    // Why it only watches (No while it is the master).
+    Watching watching() const;
+    // The node of the other master that answered, when that is why it watches.
+    std::uint8_t otherMasterNode() const { return otherMasterNode_; }
 
     // Every handheld known on the bus: those logged in here, those watched at another master, and those
     // that went offline or sit in their boot loader.
@@ -150,7 +162,8 @@ private:
     std::deque<std::pair<can::CanFrame, Clock::time_point>> sent_; // our own frames, to know their echoes
     bool active_ = true;
     bool otherMaster_ = false;
-    QString standDownReason_;
+    Watching why_ = Watching::No; // why it is not active (when active_ is false)
+    std::uint8_t otherMasterNode_ = 0;
     MasterCounters counters_;
     QTimer ticker_;
 };

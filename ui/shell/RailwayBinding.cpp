@@ -2,6 +2,7 @@
 
 #include "connection/StationConnection.h"
 #include "model/Railway.h"
+#include "model/RailwayHandhelds.h"
 
 namespace stellwerk::ui {
 
@@ -23,8 +24,12 @@ RailwayBinding::~RailwayBinding() {
     delete railway_;
 }
 
+// The railway of the session, and the handhelds on the station's bus driving it.
 void RailwayBinding::sessionStarted(station::StationSession* session) {
-    replace(new model::Railway(*session));
+    auto* railway = new model::Railway(*session);
+    if (handhelds::HandheldMaster* master = connection_.handhelds())
+        new model::RailwayHandhelds(*railway, *master, railway);
+    replace(railway);
 }
 
 void RailwayBinding::configurationLoaded(const station::StartupResult& result) {

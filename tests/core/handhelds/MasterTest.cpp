@@ -296,7 +296,8 @@ TEST(HandheldMaster, AnotherMasterMakesItFallSilentAndOnlyWatch) {
     EXPECT_FALSE(table.master.isMaster());
     ASSERT_EQ(master.count(), 1);
     EXPECT_FALSE(master.at(0).at(0).toBool());
-    EXPECT_FALSE(table.master.standDownReason().isEmpty());
+    EXPECT_EQ(table.master.watching(), handhelds::Watching::AnotherMaster);
+    EXPECT_EQ(table.master.otherMasterNode(), mcan::LoginNode);
     // Its handheld logs in there: Stellwerk says nothing, and shows it.
     table.sent.clear();
     table.tell(mcan::LoginRequest{0, 0x00, 0});
