@@ -1029,6 +1029,185 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::HandheldDetails</name>
+    <message>
+        <source>Selected handheld</source>
+        <translation>Gewähltes Handgerät</translation>
+    </message>
+    <message>
+        <source>Name, up to 16 characters</source>
+        <translation>Name, bis zu 16 Zeichen</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Umbenennen</translation>
+    </message>
+    <message>
+        <source>Send the name to the handheld; it shows it from now on</source>
+        <translation>Den Namen an das Handgerät senden; es zeigt ihn von nun an</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>Hoch</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>Runter</translation>
+    </message>
+    <message>
+        <source>The locomotives the handheld offers, in its order; remembered for this handheld</source>
+        <translation>Die Loks, die das Handgerät anbietet, in seiner Reihenfolge; für dieses Handgerät gemerkt</translation>
+    </message>
+    <message>
+        <source>Loc-ID 0x%1</source>
+        <translation>Loc-ID 0x%1</translation>
+    </message>
+    <message>
+        <source>The stack is full (%1 locomotives)</source>
+        <translation>Der Lokstapel ist voll (%1 Loks)</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::HandheldTableModel</name>
+    <message>
+        <source>logging in (stage %1 of 7)</source>
+        <translation>meldet sich an (Stufe %1 von 7)</translation>
+    </message>
+    <message>
+        <source>reading its locomotives</source>
+        <translation>liest seine Loks</translation>
+    </message>
+    <message>
+        <source>online</source>
+        <translation>angemeldet</translation>
+    </message>
+    <message>
+        <source>online at another master</source>
+        <translation>an einem anderen Master angemeldet</translation>
+    </message>
+    <message numerus="yes">
+        <source>silent: %n poll(s) left</source>
+        <translation>
+            <numerusform>still: noch %n Abfrage</numerusform>
+            <numerusform>still: noch %n Abfragen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>silent</source>
+        <translation>still</translation>
+    </message>
+    <message>
+        <source>offline</source>
+        <translation>abgemeldet</translation>
+    </message>
+    <message>
+        <source>in its boot loader</source>
+        <translation>im Bootloader</translation>
+    </message>
+    <message>
+        <source>refused: somebody else drives it</source>
+        <translation>abgelehnt: jemand anderes fährt sie</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n locomotive(s)</source>
+        <translation>
+            <numerusform>%n Lok</numerusform>
+            <numerusform>%n Loks</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>UID %1</source>
+        <translation>UID %1</translation>
+    </message>
+    <message>
+        <source>Node %1; its master&apos;s node is %2</source>
+        <translation>Knoten %1; der Knoten seines Masters ist %2</translation>
+    </message>
+    <message>
+        <source>Handheld</source>
+        <translation>Handgerät</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Locomotive</source>
+        <translation>Lok</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Fahrstufe</translation>
+    </message>
+    <message>
+        <source>Functions</source>
+        <translation>Funktionen</translation>
+    </message>
+    <message>
+        <source>Stack</source>
+        <translation>Lokstapel</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::HandheldsPanel</name>
+    <message>
+        <source>Not connected: no handhelds to show.</source>
+        <translation>Nicht verbunden: keine Handgeräte.</translation>
+    </message>
+    <message>
+        <source>Stellwerk is the master of the MS1 handhelds on this bus: plug one in to drive with it.</source>
+        <translation>Stellwerk ist der Master der MS1-Handgeräte an diesem Bus: eine MS1 anstecken und damit fahren.</translation>
+    </message>
+    <message>
+        <source>Stellwerk waits until it knows the devices on the bus before it answers any handheld.</source>
+        <translation>Stellwerk antwortet Handgeräten erst, wenn es die Geräte am Bus kennt.</translation>
+    </message>
+    <message>
+        <source>Stellwerk only watches the handhelds: the Central Station is their master.</source>
+        <translation>Stellwerk beobachtet die Handgeräte nur: die Central Station ist ihr Master.</translation>
+    </message>
+    <message>
+        <source>Stellwerk only watches the handhelds: another master (node %1) answers them.</source>
+        <translation>Stellwerk beobachtet die Handgeräte nur: ein anderer Master (Knoten %1) antwortet ihnen.</translation>
+    </message>
+    <message>
+        <source>Stellwerk only watches the handhelds, as chosen.</source>
+        <translation>Stellwerk beobachtet die Handgeräte nur, wie eingestellt.</translation>
+    </message>
+    <message>
+        <source>The handheld %1 sits in its boot loader: only a CS1 or an ECoS can flash it back to life. Stellwerk never sends it there and never flashes it.</source>
+        <translation>Das Handgerät %1 steckt im Bootloader: nur eine CS1 oder ECoS kann es neu flashen. Stellwerk schickt es nie dorthin und flasht es nie.</translation>
+    </message>
+    <message>
+        <source>Act as master for MS1 handhelds</source>
+        <translation>Master für MS1-Handgeräte sein</translation>
+    </message>
+    <message>
+        <source>Answer MS1 handhelds on the station&apos;s bus, unless a Central Station or another master does; off: only watch them</source>
+        <translation>MS1-Handgeräten am Bus der Zentrale antworten, außer eine Central Station oder ein anderer Master tut es; aus: nur beobachten</translation>
+    </message>
+    <message>
+        <source>Make it quiet</source>
+        <translation>Zum Schweigen bringen</translation>
+    </message>
+    <message>
+        <source>Tell it to stop sending; it stays in its boot loader</source>
+        <translation>Es soll aufhören zu senden; es bleibt im Bootloader</translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::KeyList</name>
     <message>
         <source>Keys</source>
@@ -1673,6 +1852,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Every key the desk answers to</source>
         <translation>Alle Tasten, auf die das Stellpult reagiert</translation>
+    </message>
+    <message>
+        <source>Handhelds</source>
+        <translation>Handgeräte</translation>
     </message>
 </context>
 <context>

@@ -1026,6 +1026,185 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::HandheldDetails</name>
+    <message>
+        <source>Selected handheld</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name, up to 16 characters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Send the name to the handheld; it shows it from now on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The locomotives the handheld offers, in its order; remembered for this handheld</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Loc-ID 0x%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The stack is full (%1 locomotives)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::HandheldTableModel</name>
+    <message>
+        <source>logging in (stage %1 of 7)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading its locomotives</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>online</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>online at another master</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>silent: %n poll(s) left</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>silent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>offline</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>in its boot loader</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>refused: somebody else drives it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n locomotive(s)</source>
+        <translation type="unfinished">
+            <numerusform>%n locomotive</numerusform>
+            <numerusform>%n locomotives</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>UID %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Node %1; its master&apos;s node is %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Handheld</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Locomotive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Functions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stack</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::HandheldsPanel</name>
+    <message>
+        <source>Not connected: no handhelds to show.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stellwerk is the master of the MS1 handhelds on this bus: plug one in to drive with it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stellwerk waits until it knows the devices on the bus before it answers any handheld.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stellwerk only watches the handhelds: the Central Station is their master.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stellwerk only watches the handhelds: another master (node %1) answers them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stellwerk only watches the handhelds, as chosen.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The handheld %1 sits in its boot loader: only a CS1 or an ECoS can flash it back to life. Stellwerk never sends it there and never flashes it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Act as master for MS1 handhelds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Answer MS1 handhelds on the station&apos;s bus, unless a Central Station or another master does; off: only watch them</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Make it quiet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tell it to stop sending; it stays in its boot loader</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::KeyList</name>
     <message>
         <source>Keys</source>
@@ -1669,6 +1848,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Every key the desk answers to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Handhelds</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -9,6 +9,7 @@
 #include "connect/StationUrlSettings.h"
 #include "connect/TrafficStatus.h"
 #include "connection/StationConnection.h"
+#include "handheldpanel/HandheldsPanel.h"
 #include "keyboard/TurnoutPanel.h"
 #include "layout/LayoutOverview.h"
 #include "locomotives/LocomotivePanel.h"
@@ -132,6 +133,8 @@ void MainWindow::createPanels() {
     m_workspace->addPanel(m_busMonitor, Qt::BottomDockWidgetArea, m_layoutOverview);
     m_frameDecoder = new FrameDecoderPanel(this);
     m_workspace->addPanel(m_frameDecoder, Qt::BottomDockWidgetArea, m_layoutOverview);
+    m_handhelds = new HandheldsPanel(this);
+    m_workspace->addPanel(m_handhelds, Qt::BottomDockWidgetArea, m_layoutOverview);
     for (QWidget* front : {static_cast<QWidget*>(m_turnoutPanel), static_cast<QWidget*>(m_throttlePanel),
                            static_cast<QWidget*>(m_layoutOverview)})
         m_workspace->showPanel(front);
@@ -201,6 +204,7 @@ void MainWindow::setConnection(connection::StationConnection* station) {
     m_traffic->setConnection(station);
     m_busMonitor->setConnection(station);
     m_trackPlan->setConnection(station);
+    m_handhelds->setConnection(station);
     if (m_connection) {
         connect(m_connection, &connection::StationConnection::problem, this,
                 [this](const QString& message) { showStationProblem(message); });
@@ -218,6 +222,7 @@ void MainWindow::setRailway(model::Railway* railway) {
     m_trackPlan->setRailway(railway);
     m_locomotivePanel->setRailway(railway);
     m_programmingPanel->setRailway(railway);
+    m_handhelds->setRailway(railway);
     m_stopGo->setRailway(railway);
     m_power->setRailway(railway);
 }
@@ -343,6 +348,7 @@ void MainWindow::retranslateDocks() {
     title(m_layoutOverview, tr("Overview"));
     title(m_busMonitor, tr("Bus monitor"));
     title(m_frameDecoder, tr("Frame decoder"));
+    title(m_handhelds, tr("Handhelds"));
 }
 
 void MainWindow::chooseLanguage(Language language) {

@@ -20,6 +20,7 @@ class BusMonitorPanel;
 class ConnectionStatus;
 class EmergencyStopKeys;
 class FrameDecoderPanel;
+class HandheldsPanel;
 class LanguageMenu;
 class LayoutFileActions;
 class LayoutOverview;
@@ -52,6 +53,7 @@ public:
 
     Workspace* workspace() const { return m_workspace; }
     FrameDecoderPanel* frameDecoder() const { return m_frameDecoder; }
+    HandheldsPanel* handhelds() const { return m_handhelds; }
     LayoutOverview* layoutOverview() const { return m_layoutOverview; }
     StatusPanel* statusPanel() const { return m_statusPanel; }
     BusMonitorPanel* busMonitor() const { return m_busMonitor; }
@@ -99,6 +101,7 @@ private:
     Translations& m_translations;
     Workspace* m_workspace = nullptr;
     LayoutOverview* m_layoutOverview = nullptr;
+    HandheldsPanel* m_handhelds = nullptr;
     FrameDecoderPanel* m_frameDecoder = nullptr;
     StatusPanel* m_statusPanel = nullptr;
     BusMonitorPanel* m_busMonitor = nullptr;

@@ -1,0 +1,218 @@
+#include "handheldpanel/HandheldsPanel.h"
+
+#include "common/SideBySide.h"
+#include "common/StellwerkSettings.h"
+#include "connection/StationConnection.h"
+#include "handheldpanel/HandheldDetails.h"
+#include "handheldpanel/HandheldTableModel.h"
+#include "handhelds/HandheldMaster.h"
+#include "model/Railway.h"
+
+#include <QCheckBox>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTableView>
+#include <QVBoxLayout>
+
+namespace stellwerk::ui {
+namespace {
+
+const QString ActAsMasterKey = QStringLiteral("handhelds/actAsMaster");
+
+const handhelds::Handheld* inBootLoader(const HandheldTableModel& model) {
+    for (const handhelds::Handheld& handheld : model.handhelds())
+        if (handheld.state == handhelds::HandheldState::FlashMode)
+            return &handheld;
+    return nullptr;
+}
+
+} // namespace
+
+HandheldsPanel::HandheldsPanel(QWidget* parent)
+    : QWidget(parent), m_role(new QLabel(this)), m_actAsMaster(new QCheckBox(this)),
+      m_bootLoader(new QLabel(this)), m_silence(new QPushButton(this)), m_view(new QTableView(this)),
+      m_model(new HandheldTableModel(this)), m_details(new HandheldDetails(this)) {
+    setObjectName(QStringLiteral("handheldsPanel"));
+    m_role->setObjectName(QStringLiteral("handheldRole"));
+    m_role->setWordWrap(true);
+    m_actAsMaster->setObjectName(QStringLiteral("actAsMaster"));
+    m_actAsMaster->setChecked(stellwerkSettings().value(ActAsMasterKey, true).toBool());
+    m_bootLoader->setObjectName(QStringLiteral("bootLoaderWarning"));
+    m_bootLoader->setWordWrap(true);
+    m_silence->setObjectName(QStringLiteral("silenceBootLoader"));
+    m_view->setObjectName(QStringLiteral("handheldTable"));
+    m_view->setModel(m_model);
+    m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_view->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_view->verticalHeader()->hide();
+    m_view->horizontalHeader()->setStretchLastSection(true);
+    m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    auto* top = new QHBoxLayout;
+    top->addWidget(m_role, 1);
+    top->addWidget(m_actAsMaster);
+    auto* warning = new QHBoxLayout;
+    warning->addWidget(m_bootLoader, 1);
+    warning->addWidget(m_silence);
+    auto* parts = new QSplitter(this);
+    parts->addWidget(m_view);
+    parts->addWidget(m_details);
+    parts->setStretchFactor(0, 3);
+    parts->setStretchFactor(1, 2);
+    parts->setChildrenCollapsible(false);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(top);
+    layout->addLayout(warning);
+    layout->addWidget(parts, 1);
+    SideBySide::arrange(this, parts, 720);
+    connect(m_actAsMaster, &QCheckBox::toggled, this, &HandheldsPanel::chooseRole);
+    connect(m_model, &QAbstractItemModel::modelReset, this, &HandheldsPanel::updateDetails);
+    connect(m_model, &QAbstractItemModel::dataChanged, this, &HandheldsPanel::updateDetails);
+    connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &HandheldsPanel::updateDetails);
+    connect(m_details, &HandheldDetails::renameRequested, this, [this](quint32 uid, const QString& name) {
+        if (m_master && !name.isEmpty())
+            m_master->rename(uid, name);
+    });
+    connect(m_details, &HandheldDetails::stackChanged, this,
+            [this](quint32 uid, const std::vector<std::uint32_t>& stack) {
+                if (m_master)
+                    m_master->setStack(uid, stack);
+            });
+    connect(m_silence, &QPushButton::clicked, this, [this] {
+        if (const handhelds::Handheld* handheld = inBootLoader(*m_model); handheld && m_master)
+            m_master->silenceBootLoader(handheld->uid);
+    });
+    m_model->setLocoName([this](std::uint32_t locId) {
+        const model::Locomotive* loco = m_railway ? m_railway->locomotive(locId) : nullptr;
+        return loco ? loco->displayName() : QString();
+    });
+    retranslate();
+}
+
+HandheldsPanel::~HandheldsPanel() = default;
+
+void HandheldsPanel::setConnection(connection::StationConnection* connection) {
+    if (m_connection)
+        disconnect(m_connection, nullptr, this, nullptr);
+    m_connection = connection;
+    if (m_connection) {
+        m_connection->setHandheldRole(m_actAsMaster->isChecked() ? connection::HandheldRole::Automatic
+                                                                 : connection::HandheldRole::Watch);
+        connect(m_connection, &connection::StationConnection::sessionStarted, this,
+                &HandheldsPanel::attachMaster);
+        connect(m_connection, &connection::StationConnection::stateChanged, this,
+                &HandheldsPanel::attachMaster);
+    }
+    attachMaster();
+}
+
+// The master lives as long as one connection's session: a new one comes with each connection.
+void HandheldsPanel::attachMaster() {
+    handhelds::HandheldMaster* master = m_connection ? m_connection->handhelds() : nullptr;
+    if (master != m_master) {
+        if (m_master)
+            disconnect(m_master, nullptr, this, nullptr);
+        m_master = master;
+        if (m_master) {
+            connect(m_master, &handhelds::HandheldMaster::handheldsChanged, this, &HandheldsPanel::refresh);
+            connect(m_master, &handhelds::HandheldMaster::masterChanged, this, &HandheldsPanel::updateRole);
+        }
+    }
+    refresh();
+}
+
+void HandheldsPanel::setRailway(model::Railway* railway) {
+    if (m_railway)
+        disconnect(m_railway, nullptr, this, nullptr);
+    m_railway = railway;
+    if (m_railway) {
+        connect(m_railway, &model::Railway::loaded, this, &HandheldsPanel::updateChoices);
+        connect(m_railway, &QObject::destroyed, this, [this] { setRailway(nullptr); });
+    }
+    updateChoices();
+}
+
+void HandheldsPanel::refresh() {
+    m_model->show(m_master ? m_master->handhelds() : std::vector<handhelds::Handheld>{});
+    updateRole();
+}
+
+QString HandheldsPanel::roleText() const {
+    if (!m_master)
+        return tr("Not connected: no handhelds to show.");
+    if (m_master->isMaster())
+        return tr("Stellwerk is the master of the MS1 handhelds on this bus: plug one in to drive with it.");
+    switch (m_master->watching()) {
+    case handhelds::Watching::UntilDevicesKnown:
+        return tr("Stellwerk waits until it knows the devices on the bus before it answers any handheld.");
+    case handhelds::Watching::CentralStation:
+        return tr("Stellwerk only watches the handhelds: the Central Station is their master.");
+    case handhelds::Watching::AnotherMaster:
+        return tr("Stellwerk only watches the handhelds: another master (node %1) answers them.")
+            .arg(m_master->otherMasterNode());
+    case handhelds::Watching::Asked:
+    case handhelds::Watching::No:
+        break;
+    }
+    return tr("Stellwerk only watches the handhelds, as chosen.");
+}
+
+void HandheldsPanel::updateRole() {
+    m_role->setText(roleText());
+    const handhelds::Handheld* flashing = inBootLoader(*m_model);
+    m_bootLoader->setVisible(flashing != nullptr);
+    m_silence->setVisible(flashing != nullptr && m_master && m_master->isMaster());
+    if (flashing)
+        m_bootLoader->setText(
+            tr("The handheld %1 sits in its boot loader: only a CS1 or an ECoS can flash it back to life. "
+               "Stellwerk never sends it there and never flashes it.")
+                .arg(flashing->uid, 8, 16, QLatin1Char('0')));
+}
+
+void HandheldsPanel::updateDetails() {
+    const QModelIndexList rows = m_view->selectionModel()->selectedRows();
+    const handhelds::Handheld* selected = rows.isEmpty() ? nullptr : m_model->handheld(rows.first().row());
+    m_details->show(selected, m_master && m_master->isMaster());
+    updateRole();
+}
+
+void HandheldsPanel::updateChoices() {
+    std::vector<HandheldDetails::Choice> choices;
+    if (m_railway)
+        for (const model::Locomotive& loco : m_railway->state().locomotives().items())
+            if (loco.inLayout())
+                choices.push_back({loco.id().value(), loco.displayName()});
+    m_details->setChoices(std::move(choices));
+}
+
+void HandheldsPanel::chooseRole(bool master) {
+    stellwerkSettings().setValue(ActAsMasterKey, master);
+    if (m_connection)
+        m_connection->setHandheldRole(master ? connection::HandheldRole::Automatic
+                                             : connection::HandheldRole::Watch);
+    refresh();
+}
+
+void HandheldsPanel::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void HandheldsPanel::retranslate() {
+    m_actAsMaster->setText(tr("Act as master for MS1 handhelds"));
+    m_actAsMaster->setToolTip(
+        tr("Answer MS1 handhelds on the station's bus, unless a Central Station or another "
+           "master does; off: only watch them"));
+    m_silence->setText(tr("Make it quiet"));
+    m_silence->setToolTip(tr("Tell it to stop sending; it stays in its boot loader"));
+    m_details->retranslate();
+    updateRole();
+}
+
+} // namespace stellwerk::ui

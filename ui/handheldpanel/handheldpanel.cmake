@@ -1,0 +1,6 @@
+# The Handhelds page: the MS1 handhelds on the station's bus, their state, locomotive, name and stack.
+target_sources(stellwerk-ui PRIVATE
+    handheldpanel/HandheldDetails.cpp handheldpanel/HandheldDetails.h
+    handheldpanel/HandheldTableModel.cpp handheldpanel/HandheldTableModel.h
+    handheldpanel/HandheldsPanel.cpp handheldpanel/HandheldsPanel.h
+)
