@@ -25,6 +25,7 @@ StationClient::StationClient(std::ostream& err, ClientSettings settings, QObject
 // A command that was not acknowledged may still sit in the connection: the connection is reset rather
 // than closed, so that the station never gets it after we gave up.
 StationClient::~StationClient() {
+    qDeleteAll(children()); // what a command made lives on the session: it goes first
     session_.reset();
     if (!transport_)
         return;

@@ -54,6 +54,7 @@ public:
     void finishOnInterrupt(int status);
 
     station::StationSession& session() { return *session_; }
+    buses::Bus& bus() { return *bus_; }
     transport::Transport& transport() { return *transport_; }
     const ClientSettings& settings() const { return settings_; }
 

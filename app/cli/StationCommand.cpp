@@ -2,6 +2,7 @@
 
 #include "DeviceCommands.h"
 #include "DriveCommands.h"
+#include "HandheldCommand.h"
 #include "StationClient.h"
 #include "TransferCommands.h"
 
@@ -18,6 +19,8 @@ ParsedJob parseCommand(const std::vector<std::string>& arguments, std::ostream& 
     if (auto job = parseDeviceCommand(command, rest, out, err))
         return std::move(*job);
     if (auto job = parseTransferCommand(command, rest, out, err))
+        return std::move(*job);
+    if (auto job = parseHandheldCommand(command, rest, out, err))
         return std::move(*job);
     return "unknown station command '" + command + "'";
 }
@@ -45,7 +48,16 @@ const char* stationUsage() {
            "                                       UID, devices with no status data (PC programs) are\n"
            "                                       named and skipped: exit 0 when every device with status\n"
            "                                       data was read, 1 when a reading failed or none had any\n"
-           "    monitor [--json] [--count N]       print every frame until N frames or Ctrl-C\n";
+           "    monitor [--json] [--count N]       print every frame until N frames or Ctrl-C\n"
+           "    handhelds [--json] [--master|--watch] [--seconds N]\n"
+           "                                       be the M-CAN master of the MS1 handhelds on the bus (not\n"
+           "                                       beside a Central Station, which is their master; "
+           "--master:\n"
+           "                                       always; --watch: only watch) and print one line per "
+           "event\n"
+           "                                       (login, upgrade-done, loco-taken/released, speed, "
+           "function,\n"
+           "                                       stop, go, silent, lost) until Ctrl-C or N seconds\n";
 }
 
 int runStation(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {
