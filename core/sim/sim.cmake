@@ -10,6 +10,8 @@ target_sources(stellwerk-simulator PRIVATE
     sim/FeedbackService.cpp
     sim/LocoCommands.cpp
     sim/MfxRegistry.cpp
+    sim/SimulatedBus.cpp
+    sim/SimulatedBus.h
     sim/SimulatedStation.cpp
     sim/SimulatedStation.h
     sim/StationLayout.cpp
