@@ -31,13 +31,18 @@ struct Parser {
     QCommandLineOption gleisbox{"gleisbox", "Also answer as a Gleisbox on the bus."};
     QCommandLineOption noTrains{"no-trains", "Locomotives do not move (no S88 events)."};
     QCommandLineOption tick{"tick", "Train movement step in milliseconds (default 100).", "ms", "100"};
+    QCommandLineOption ms1{
+        "ms1",
+        "Also put N simulated MS1 handhelds (M-CAN) on the station's bus, \"MS1 1\" to \"MS1 N\", "
+        "which log in to the bus's M-CAN master and drive now and then (default 0, at most 31).",
+        "N", "0"};
 
     Parser() {
         parser.setApplicationDescription(
             "A simulated Märklin Central Station 2 on UDP, TCP, HTTP and optionally CAN.");
         parser.addHelpOption();
         parser.addOptions({listen, udpPort, udpReplyHost, udpReplyPort, tcpPort, httpPort, can, layout,
-                           gleisbox, noTrains, tick});
+                           gleisbox, noTrains, tick, ms1});
     }
 };
 
@@ -111,6 +116,11 @@ ParsedOptions parseSimOptions(const QStringList& arguments) {
     if (!ok || tick < 1 || tick > 10000)
         return failure("--tick: '" + p.parser.value(p.tick) + "' is not 1..10000 milliseconds");
     options.tick = std::chrono::milliseconds(tick);
+    const int handhelds = p.parser.value(p.ms1).toInt(&ok);
+    if (!ok || handhelds < 0 || handhelds > MaximumHandhelds)
+        return failure("--ms1: '" + p.parser.value(p.ms1) + "' is not 0.." +
+                       QString::number(MaximumHandhelds));
+    options.handhelds = handhelds;
     options.layoutDirectory = p.parser.value(p.layout);
     options.gleisbox = p.parser.isSet(p.gleisbox);
     options.trains = !p.parser.isSet(p.noTrains);

@@ -12,6 +12,8 @@
 namespace stellwerk::simapp {
 
 // Everything stellwerk-sim is told on its command line.
+inline constexpr int MaximumHandhelds = 31; // M-CAN logins that may run at once (document 6.2)
+
 struct SimOptions {
     sim::StationServerSettings server;
     std::uint16_t httpPort = 8080; // 0 = no HTTP server
@@ -19,6 +21,7 @@ struct SimOptions {
     bool gleisbox = false;
     bool trains = true;
     std::chrono::milliseconds tick{100};
+    int handhelds = 0; // simulated MS1s on the station's bus (--ms1)
 };
 
 // The result of reading the command line: options, or a message for the user (and whether it is an error).

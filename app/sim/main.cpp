@@ -1,9 +1,11 @@
 // stellwerk-sim: the simulated CS2 as a process, for other programs (and Stellwerk itself) to talk to
-// over UDP, TCP, HTTP and optionally a CAN interface.
+// over UDP, TCP, HTTP and optionally a CAN interface; with --ms1 N, MS1 handhelds share its bus.
 
 #include "ShutdownSignal.h"
 #include "SimOptions.h"
 #include "sim/HttpConfigServer.h"
+#include "sim/SimulatedBus.h"
+#include "sim/SimulatedMs1.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
@@ -14,6 +16,8 @@
 #include <QTextStream>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -53,19 +57,67 @@ sim::TrainTrack trackFor(const simapp::SimOptions& options, const sim::StationLa
     return sim::TrainTrack::loopOfContacts(layout.trackPlan(), locIds);
 }
 
-// Everything the running simulator owns, torn down in reverse order when the event loop ends.
+// Everything the running simulator owns, torn down in reverse order when the event loop ends. The bus
+// exists only with handhelds: without them the station is alone behind its server, as before.
 struct Simulator {
+    std::unique_ptr<sim::SimulatedBus> bus;
     std::unique_ptr<sim::SimulatedStation> station;
+    std::vector<std::unique_ptr<sim::SimulatedMs1>> handhelds;
     std::unique_ptr<sim::StationServer> server;
     std::unique_ptr<sim::HttpConfigServer> http;
     std::unique_ptr<sim::TrainMovement> trains;
 };
 
+// The first has the chapter-11 trace's UID; the others follow it, so that their UIDs begin alike, as two MS1s
+// of one production run do.
+constexpr std::uint32_t FirstHandheldUid = 0x000204B3;
+
+void reportHandheld(const sim::SimulatedMs1& ms1) {
+    const QString name = QString::fromStdString(ms1.identity().name);
+    QObject::connect(&ms1, &sim::SimulatedMs1::loggedIn, &ms1,
+                     [name](int node) { out() << name << ": logged in as node " << node << Qt::endl; });
+    QObject::connect(&ms1, &sim::SimulatedMs1::locoTaken, &ms1, [name, &ms1](int index) {
+        out() << name << ": drives " << QString::fromStdString(ms1.memory().stack[std::size_t(index)].name)
+              << Qt::endl;
+    });
+    QObject::connect(&ms1, &sim::SimulatedMs1::masterLost, &ms1,
+                     [name] { out() << name << ": no master" << Qt::endl; });
+    QObject::connect(&ms1, &sim::SimulatedMs1::flashModeEntered, &ms1,
+                     [name] { out() << name << ": told to flash; in its boot loader now" << Qt::endl; });
+}
+
+// The handhelds and the station on one bus, which the server puts on the network.
+void addHandhelds(Simulator& simulator, const simapp::SimOptions& options) {
+    simulator.bus = std::make_unique<sim::SimulatedBus>();
+    simulator.bus->attach(*simulator.station);
+    for (int i = 0; i < options.handhelds; ++i) {
+        sim::SimulatedMs1::Options handheld;
+        handheld.identity.uid = FirstHandheldUid + std::uint32_t(i);
+        handheld.identity.name = "MS1 " + std::to_string(i + 1);
+        handheld.drivesNowAndThen = true;
+        auto& ms1 = simulator.handhelds.emplace_back(std::make_unique<sim::SimulatedMs1>(handheld));
+        simulator.bus->attach(*ms1);
+        reportHandheld(*ms1);
+    }
+    simulator.server =
+        std::make_unique<sim::StationServer>(*simulator.station, *simulator.bus, options.server);
+}
+
+void plugInHandhelds(const Simulator& simulator) {
+    for (const auto& ms1 : simulator.handhelds)
+        ms1->plugIn();
+    if (!simulator.handhelds.empty())
+        out() << "handhelds: " << simulator.handhelds.size() << " MS1 on the bus, logging in" << Qt::endl;
+}
+
 bool start(Simulator& simulator, const simapp::SimOptions& options, sim::StationLayout layout) {
     sim::SimulatedStation::Options stationOptions;
     stationOptions.gleisbox = options.gleisbox;
     simulator.station = std::make_unique<sim::SimulatedStation>(std::move(layout), stationOptions);
-    simulator.server = std::make_unique<sim::StationServer>(*simulator.station, options.server);
+    if (options.handhelds > 0)
+        addHandhelds(simulator, options);
+    else
+        simulator.server = std::make_unique<sim::StationServer>(*simulator.station, options.server);
     QObject::connect(simulator.server.get(), &sim::StationServer::problem,
                      [](const QString& message) { err() << "stellwerk-sim: " << message << Qt::endl; });
     if (!simulator.server->listen()) {
@@ -74,6 +126,7 @@ bool start(Simulator& simulator, const simapp::SimOptions& options, sim::Station
     }
     for (const QString& listener : simulator.server->listeners())
         out() << "listening: " << listener << Qt::endl;
+    plugInHandhelds(simulator);
     if (options.httpPort != 0) {
         const sim::SimulatedStation* station = simulator.station.get();
         simulator.http = std::make_unique<sim::HttpConfigServer>(

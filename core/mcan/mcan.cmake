@@ -14,6 +14,8 @@ target_sources(stellwerk-mcan PRIVATE
     mcan/ListCodec.cpp
     mcan/LoginCodec.cpp
     mcan/Messages.h
+    mcan/NameSegments.cpp
+    mcan/NameSegments.h
     mcan/SessionCodec.cpp
 )
 target_link_libraries(stellwerk-mcan PUBLIC stellwerk-can)

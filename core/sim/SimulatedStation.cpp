@@ -2,6 +2,7 @@
 
 #include "cs2/Codec.h"
 #include "cs2/Hash.h"
+#include "mcan/Codec.h"
 #include "sim/AccessoryCommands.h"
 #include "sim/ConfigDataService.h"
 #include "sim/DeviceService.h"
@@ -97,6 +98,8 @@ SimulatedStation::~SimulatedStation() = default;
 
 void SimulatedStation::receive(const can::CanFrame& frame) {
     emit frameReceived(frame);
+    if (mcan::isMcan(frame))
+        return; // an MS1's or its master's: the CS2 reads those as M-CAN, never as CS2 commands
     const auto decoded = cs2::decode(frame);
     if (!decoded)
         return; // a real station drops frames it cannot read

@@ -37,7 +37,8 @@ public:
     SimulatedStation(StationLayout layout, Options options, QObject* parent = nullptr);
     ~SimulatedStation() override;
 
-    // A frame from the bus (any sender; responses, including our own echoes, are not commands).
+    // A frame from the bus (any sender; responses, including our own echoes, are not commands; M-CAN
+    // frames, which MS1 handhelds and their master send, are not CS2 frames).
     // The answer goes out in one framesEmitted before this returns.
     void receive(const can::CanFrame& frame);
 

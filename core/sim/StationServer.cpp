@@ -1,5 +1,6 @@
 #include "sim/StationServer.h"
 
+#include "sim/SimulatedBus.h"
 #include "sim/SimulatedStation.h"
 #include "transport/CanBusTransport.h"
 #include "transport/NetworkFraming.h"
@@ -30,6 +31,15 @@ StationServer::StationServer(SimulatedStation& station, StationServerSettings se
                 counters_.framesOut += frames.size();
                 broadcast(frames, std::nullopt);
             });
+}
+
+StationServer::StationServer(SimulatedStation& station, SimulatedBus& bus, StationServerSettings settings,
+                             QObject* parent)
+    : QObject(parent), station_(station), bus_(&bus), settings_(std::move(settings)) {
+    connect(&bus, &SimulatedBus::framesCarried, this, [this](const std::vector<can::CanFrame>& frames) {
+        counters_.framesOut += frames.size();
+        broadcast(frames, std::nullopt);
+    });
 }
 
 StationServer::~StationServer() {
@@ -147,6 +157,10 @@ void StationServer::received(const std::vector<can::CanFrame>& frames, Origin or
         return;
     counters_.framesIn += frames.size();
     broadcast(frames, origin);
+    if (bus_) {
+        bus_->putFromOutside(frames);
+        return;
+    }
     for (const can::CanFrame& frame : frames)
         station_.receive(frame);
 }

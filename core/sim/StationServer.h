@@ -25,6 +25,7 @@ class CanBusTransport;
 
 namespace stellwerk::sim {
 
+class SimulatedBus;
 class SimulatedStation;
 
 // Where the simulated station listens and answers, as a CS2 does: UDP in on 15731 and out to 15730,
@@ -45,7 +46,7 @@ struct StationServerSettings {
 // What the server has seen since it started listening.
 struct StationServerCounters {
     std::uint64_t framesIn = 0;           // frames given to the station, from any listener
-    std::uint64_t framesOut = 0;          // frames the station emitted
+    std::uint64_t framesOut = 0;          // frames the station (and the other peers of its bus) emitted
     std::uint64_t malformedDatagrams = 0; // UDP datagrams that were not n x 13 bytes (dropped)
     std::uint64_t malformedFrames = 0;    // frames with a DLC above 8 (dropped)
     std::uint64_t tcpConnections = 0;     // TCP clients accepted
@@ -54,11 +55,16 @@ struct StationServerCounters {
 // The network side of the simulated CS2: every frame the station emits reaches every TCP client, the UDP
 // reply address and the CAN interface. A frame received from one listener goes to the station and, as
 // the CS2's gateway puts it on its CAN bus, to every other listener too (never back to its sender).
+// When the station shares a SimulatedBus with other devices (MS1 handhelds), the listeners are that bus's
+// outside: they see every frame any of its peers sends, and what they send reaches every peer.
 class StationServer : public QObject {
     Q_OBJECT
 
 public:
     StationServer(SimulatedStation& station, StationServerSettings settings, QObject* parent = nullptr);
+    // The station is one peer of `bus` (attached by the caller); the server listens for the whole bus.
+    StationServer(SimulatedStation& station, SimulatedBus& bus, StationServerSettings settings,
+                  QObject* parent = nullptr);
     ~StationServer() override;
 
     // Opens the configured listeners; false (with errorString()) when a port cannot be bound.
@@ -96,6 +102,7 @@ private:
     void sendUdp(std::span<const can::CanFrame> frames);
 
     SimulatedStation& station_;
+    SimulatedBus* bus_ = nullptr;
     StationServerSettings settings_;
     QUdpSocket* udp_ = nullptr;
     QTcpServer* tcp_ = nullptr;

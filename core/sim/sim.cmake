@@ -1,5 +1,6 @@
-# simulated station (core/sim): a CS2 that answers like the real one (the embedded default peer). Linked by the
-# programs and tests that run one; never by stellwerk-ui or the model.
+# simulated station (core/sim): a CS2 that answers like the real one (the embedded default peer), MS1
+# handhelds (M-CAN slaves, hence the M-CAN codec) and the bus they share. Linked by the programs and tests
+# that run one; never by stellwerk-ui or the model.
 stellwerk_core_library(simulator)
 target_sources(stellwerk-simulator PRIVATE
     sim/AccessoryCommands.cpp
@@ -10,6 +11,24 @@ target_sources(stellwerk-simulator PRIVATE
     sim/FeedbackService.cpp
     sim/LocoCommands.cpp
     sim/MfxRegistry.cpp
+    sim/Ms1Driver.cpp
+    sim/Ms1Driver.h
+    sim/Ms1Keys.cpp
+    sim/Ms1Keys.h
+    sim/Ms1LocoInquiry.cpp
+    sim/Ms1LocoInquiry.h
+    sim/Ms1Login.cpp
+    sim/Ms1Login.h
+    sim/Ms1MasterFrames.cpp
+    sim/Ms1MasterFrames.h
+    sim/Ms1Memory.cpp
+    sim/Ms1Memory.h
+    sim/Ms1Upgrade.cpp
+    sim/Ms1Upgrade.h
+    sim/SimulatedBus.cpp
+    sim/SimulatedBus.h
+    sim/SimulatedMs1.cpp
+    sim/SimulatedMs1.h
     sim/SimulatedStation.cpp
     sim/SimulatedStation.h
     sim/StationLayout.cpp
@@ -18,4 +37,4 @@ target_sources(stellwerk-simulator PRIVATE
     sim/StatusChannels.cpp
     sim/SystemCommands.cpp
 )
-target_link_libraries(stellwerk-simulator PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-transport Qt6::Core Qt6::Network)
+target_link_libraries(stellwerk-simulator PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-mcan stellwerk-transport Qt6::Core Qt6::Network)

@@ -1,0 +1,98 @@
+// The real stellwerk-sim with --ms1 N: the option is listed and checked, and its handhelds log in over the
+// station's TCP port to a master on the network side (the test's), each with its own UID, name and node.
+
+#include "Ms1TestSupport.h"
+#include "TestMaster.h"
+#include "transport/FrameAssembler.h"
+#include "transport/NetworkFraming.h"
+
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTcpSocket>
+
+namespace stellwerk::sim::test {
+namespace {
+
+// stellwerk-sim on free loopback ports, without trains; its output collected.
+class SimProgram {
+public:
+    explicit SimProgram(const QStringList& arguments) {
+        process_.setProcessChannelMode(QProcess::MergedChannels);
+        process_.start(QStringLiteral(STELLWERK_SIM), arguments);
+    }
+    ~SimProgram() {
+        if (process_.state() != QProcess::NotRunning) {
+            process_.terminate();
+            process_.waitForFinished(WaitMs);
+        }
+    }
+
+    QString output() {
+        out_ += QString::fromUtf8(process_.readAll());
+        return out_;
+    }
+    bool printed(const QString& text) {
+        return waitFor([&] { return output().contains(text); }, 15000);
+    }
+    int exitCode() {
+        process_.waitForFinished(WaitMs);
+        output();
+        return process_.exitCode();
+    }
+    std::uint16_t tcpPort() {
+        const QRegularExpression listening(QStringLiteral("listening: tcp 127\\.0\\.0\\.1:(\\d+)"));
+        QRegularExpressionMatch match;
+        waitFor([&] { return (match = listening.match(output())).hasMatch(); });
+        return match.hasMatch() ? std::uint16_t(match.captured(1).toUInt()) : 0;
+    }
+
+private:
+    QProcess process_;
+    QString out_;
+};
+
+const QStringList Quiet = {"--listen",   "127.0.0.1", "--udp-port",  "0", "--udp-reply-host", "127.0.0.1",
+                           "--tcp-port", "0",         "--http-port", "0", "--no-trains"};
+
+TEST(SimProgram, HelpListsTheMs1Option) {
+    SimProgram sim({"--help"});
+    EXPECT_EQ(sim.exitCode(), 0);
+    EXPECT_TRUE(sim.output().contains("--ms1 <N>")) << sim.output().toStdString();
+}
+
+TEST(SimProgram, MoreHandheldsThanLoginsAtOnceAreRefused) {
+    SimProgram sim({"--ms1", "32"});
+    EXPECT_EQ(sim.exitCode(), 2);
+    EXPECT_TRUE(sim.output().contains("--ms1: '32' is not 0..31")) << sim.output().toStdString();
+}
+
+// The handhelds start before anyone listens; they try again after the login wait (5 s), share the merged
+// frames of their first three UID bytes, and the second retries once more after losing stage 3.
+TEST(SimProgram, TwoHandheldsLogInToAMasterOverTcp) {
+    SimProgram sim(QStringList{"--ms1", "2"} + Quiet);
+    const std::uint16_t port = sim.tcpPort();
+    ASSERT_NE(port, 0) << sim.output().toStdString();
+    QTcpSocket socket;
+    socket.connectToHost(QHostAddress::LocalHost, port);
+    ASSERT_TRUE(socket.waitForConnected(WaitMs));
+    TestMaster master;
+    transport::FrameAssembler assembler;
+    QObject::connect(&socket, &QTcpSocket::readyRead, &socket, [&] {
+        std::vector<CanFrame> frames;
+        assembler.feed(transport::asBytes(socket.readAll()), frames);
+        for (const CanFrame& f : frames)
+            master.receive(f);
+    });
+    QObject::connect(&master, &TestMaster::framesEmitted, &socket, [&](const std::vector<CanFrame>& frames) {
+        socket.write(transport::encodeFrames(frames));
+    });
+
+    EXPECT_TRUE(sim.printed("MS1 1: logged in as node 43")) << sim.output().toStdString();
+    EXPECT_TRUE(sim.printed("MS1 1: drives 003 131-0")) << sim.output().toStdString();
+    EXPECT_TRUE(sim.printed("MS1 2: logged in as node 45")) << sim.output().toStdString();
+    EXPECT_EQ(master.nodeOf(0x000204B3), 43);
+    EXPECT_EQ(master.nodeOf(0x000204B4), 45);
+}
+
+} // namespace
+} // namespace stellwerk::sim::test
