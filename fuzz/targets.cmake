@@ -15,6 +15,7 @@ file(GLOB STELLWERK_FUZZED_SOURCES CONFIGURE_DEPENDS
     ${STELLWERK_ROOT}/core/can/*.cpp
     ${STELLWERK_ROOT}/core/bus/*.cpp
     ${STELLWERK_ROOT}/core/cs2/*.cpp
+    ${STELLWERK_ROOT}/core/mcan/*.cpp
     ${STELLWERK_ROOT}/core/cs2config/*.cpp)
 list(APPEND STELLWERK_FUZZED_SOURCES
     ${STELLWERK_ROOT}/core/transport/FrameAssembler.cpp

@@ -48,11 +48,12 @@ TEST(CliDecode, JsonLinesCarryTheAgreedKeys) {
                        "\"protocol\":\"dcc\",\"address\":3,\"speed\":288}}\n");
 }
 
-// Standard (11-bit) frames belong to no protocol of a CS2 bus: shown as foreign, with their id in 3 digits.
+// Standard (11-bit) frames belong to no protocol of a station's bus (CS2, M-CAN): shown as foreign, with
+// their id in 3 digits.
 TEST(CliDecode, StandardFramesAreShownAsForeign) {
     const auto text = decode({"123#0102"});
     EXPECT_EQ(text.status, 0);
-    EXPECT_EQ(text.out, "123 2 01 02  foreign 11-bit frame (no protocol of a CS2 bus)\n");
+    EXPECT_EQ(text.out, "123 2 01 02  foreign 11-bit frame (no protocol of a CS2/M-CAN bus)\n");
     const auto json = decode({"--json", "can0  7FF   [1]  AB"});
     EXPECT_EQ(json.out,
               "{\"protocol\":\"foreign\",\"id\":\"7FF\",\"extended\":false,\"dlc\":1,\"data\":\"AB\"}\n");
