@@ -9,6 +9,7 @@ set(STELLWERK_FUZZ_TARGETS
     config_stream   # config-data stream frames -> ConfigStreamReceiver (CRC, inflate, limits)
     status_data     # status-data configuration packets -> device, reading and config channels
     loco_picture    # a loco's .icon value -> picture file name; picture bytes -> PNG header check
+    mcan_frame      # 13-byte M-CAN frames in bus order -> decode (every role), encode, FrameReport, HandleRoles
 )
 
 file(GLOB STELLWERK_FUZZED_SOURCES CONFIGURE_DEPENDS

@@ -4,6 +4,7 @@
 #include "bus/BusContext.h"
 
 #include "../mcan/SeedTrace.h"
+#include "mcan/HandleRoles.h"
 
 #include <gtest/gtest.h>
 #include <string>
@@ -86,6 +87,19 @@ TEST(BusContext, ACs2FrameTeachesNothingAboutHandles) {
     const FrameDescription onHandle9 = context.read(CanFrame::extendedFrame(0x1400242B, take), Station);
     EXPECT_EQ(onHandle9.name(), "mcan.throttle");
     EXPECT_EQ(onHandle9.detailText().find("object="), std::string::npos) << onHandle9.detailText();
+}
+
+// A master that hands out ever new loco handles (or a bus of garbage) cannot make the context grow without
+// bound: it keeps at most 4096 handles.
+TEST(BusContext, StaysBoundedWhateverTheBusCarries) {
+    BusContext context;
+    for (unsigned handle = 0; handle < 5000; ++handle) {
+        const std::uint8_t stackAdd[] = {
+            0x80, 0x00, 0xFF, 0xFF, std::uint8_t(handle >> 8), std::uint8_t(handle),
+            0x00, 0x03}; // notes B§2.2 L5, on the SY handle 3 from master node 42
+        context.observe(CanFrame::extendedFrame(0x18000E2A, stackAdd));
+    }
+    EXPECT_EQ(context.handleRoles().size(), 4096u);
 }
 
 TEST_F(BusContextTrace, ClearForgetsWhatWasLearnt) {
