@@ -371,7 +371,7 @@
     </message>
     <message>
         <source>the handheld is not understood; write its node, e.g. 43, or its name</source>
-        <translation>der Handregler ist nicht verständlich; seinen Knoten, z. B. 43, oder seinen Namen schreiben</translation>
+        <translation>das Handgerät ist nicht verständlich; seinen Knoten, z. B. 43, oder seinen Namen schreiben</translation>
     </message>
     <message>
         <source>Find text, e.g. speed=0</source>
@@ -399,11 +399,11 @@
     </message>
     <message>
         <source>Handheld</source>
-        <translation>Handregler</translation>
+        <translation>Handgerät</translation>
     </message>
     <message>
         <source>Show only the M-CAN frames of one MS1 handheld: its node (43, or its master&apos;s 42) or the name it sent</source>
-        <translation>Nur die M-CAN-Telegramme eines MS1-Handreglers zeigen: sein Knoten (43, oder der seines Masters, 42) oder der Name, den er gesendet hat</translation>
+        <translation>Nur die M-CAN-Telegramme eines MS1-Handgeräts zeigen: sein Knoten (43, oder der seines Masters, 42) oder der Name, den es gesendet hat</translation>
     </message>
     <message>
         <source>All commands</source>
@@ -992,7 +992,7 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     </message>
     <message>
         <source>Paste CAN frames of the CS2 or of MS1 handhelds (M-CAN), one per line, as written in the Märklin documents (00004711 5 00 00 00 00 00), by candump (00004711#0000000000) or as 13-byte network frames in hex. Lines starting with # are ignored; the lines are read in order, as one bus.</source>
-        <translation>CAN-Telegramme der CS2 oder von MS1-Handreglern (M-CAN) zeilenweise einfügen: wie in den Märklin-Dokumenten (00004711 5 00 00 00 00 00), wie von candump (00004711#0000000000) oder als 13-Byte-Netzwerktelegramm in Hex. Zeilen, die mit # beginnen, werden übergangen; die Zeilen werden der Reihe nach als ein Bus gelesen.</translation>
+        <translation>CAN-Telegramme der CS2 oder von MS1-Handgeräten (M-CAN) zeilenweise einfügen: wie in den Märklin-Dokumenten (00004711 5 00 00 00 00 00), wie von candump (00004711#0000000000) oder als 13-Byte-Netzwerktelegramm in Hex. Zeilen, die mit # beginnen, werden übergangen; die Zeilen werden der Reihe nach als ein Bus gelesen.</translation>
     </message>
 </context>
 <context>
