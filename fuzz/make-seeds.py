@@ -140,3 +140,57 @@ write("loco_picture", "cs3-path", b"#2Fusr#2Flocal#2Fcs3#2Flokicons#2FmSD3_Logo"
 write("loco_picture", "climbing", b"../../etc/passwd")
 write("loco_picture", "png-header", b"\x89PNG\r\n\x1a\n" + struct.pack(">I", 13) + b"IHDR" +
       struct.pack(">II", 240, 80) + b"\x08\x06\0\0\0" + bytes(4) + bytes(4) + b"IEND\xae\x42\x60\x82")
+
+# mcan_frame: M-CAN frames in bus order (13-byte network form). The chapter-11 trace of the M-CAN document
+# (an MS1 logging into an ECoS; ../shared/docs/mcan-notes.md B§4.2, frames #3-34, #45-50, #60-65, #76-83,
+# #92-93) and the forms the trace lacks.
+def mcan(can_id, data_hex=""):
+    data = bytes.fromhex(data_hex)
+    return struct.pack(">IB", int(can_id, 16), len(data)) + data + bytes(8 - len(data))
+
+
+MCAN_LOGIN = [
+    ("1C00007E", ""), ("1C0030FE", "000484D300010001"), ("1C08B07E", ""), ("1C08B0FE", "0000009700000103"),
+    ("1C11307E", ""), ("1C1130FE", "0113000500000000"), ("1ECDB07E", ""), ("1ECDB0FE", "0000000103000001"),
+    ("1C02307E", "000204B300020003"), ("1C02B07E", "0000009701004010"), ("1C03307E", "0100006700004010"),
+    ("1C03B07E", "0000401001080010"), ("0C0007AA", "0000002B000204B3"), ("1C03B0FE", "000204B30002AB00"),
+]
+MCAN_UPGRADE = [
+    ("18000A2B", "402B"), ("18000A2A", "402B000000080001"), ("180020AA", "41000000"), ("180020AA", "02000000"),
+    ("180020AA", "02000004"), ("180020AA", "02000008"), ("180020AB", "41000000000A"),
+    ("180020AB", "020000004B53204D"), ("180020AB", "02000004533100"), ("180020AB", "0200000800"),
+    ("180009AB", "0300"), ("180020AA", "0200000C"), ("180020AB", "0200000C00"), ("180009AA", "0300000000030001"),
+    ("18000D2B", "0101"), ("18000D2A", "010101"), ("18000D2B", "0100"), ("10000D2A", "010000"),
+]
+MCAN_LOCO = [
+    ("180009AB", "80020000"), ("180009AA", "8002000000090001"), ("180009AB", "80020009"), ("180024AB", "40030000"),
+    ("180009AA", "80020009"), ("180024AA", "400300000003"), ("1800252B", "0101"), ("1800252A", "01010101"),
+    ("1800252B", "0100"), ("1800252A", "010000"), ("1800252B", "0201"), ("1800252A", "0201"),
+    ("180024AB", "02000000"), ("180024AA", "0200000030303320"), ("180024AB", "02000004"),
+    ("180024AA", "020000043133312D"), ("180024AB", "02000008"), ("180024AA", "0200000830000000"),
+    ("0C0007AB", "0000002A"), ("0C0007AA", "0000002A000484D3"), ("1400242B", "030000080001"),
+    ("1400242A", "030000080001"),
+]
+
+
+def mcan_frames(frames):
+    return b"".join(mcan(*f) for f in frames)
+
+
+write("mcan_frame", "trace-login", mcan_frames(MCAN_LOGIN))
+write("mcan_frame", "trace-upgrade", mcan_frames(MCAN_LOGIN + MCAN_UPGRADE))
+write("mcan_frame", "trace-loco", mcan_frames(MCAN_LOGIN + MCAN_UPGRADE + MCAN_LOCO))
+write("mcan_frame", "relogin", mcan_frames(MCAN_LOGIN + MCAN_UPGRADE + MCAN_LOGIN[-1:] + MCAN_UPGRADE[-4:]))
+write("mcan_frame", "bus-busy", mcan("00000380", "0000000000000000"))
+write("mcan_frame", "stack-add-delete", mcan_frames(MCAN_LOGIN + MCAN_UPGRADE + [
+    ("18000E2A", "8000FFFF00090003"), ("1800252B", "0101"), ("18000EAA", "8000000000090001")]))
+write("mcan_frame", "flash", mcan_frames([
+    ("1C02807F", "00029C03"), ("1C08047F", "00029C03"), ("1C08047F", "00029C0300000097"),
+    ("1C08007F", "00029C03"), ("1C0800FF", "0000000000000226"), ("1C08017F", "0000000011223344"),
+    ("1C08017F", "000002241122"), ("1C0801FF", "00029C03"), ("1C00007F", "00029C03")]))
+write("mcan_frame", "ecan-and-cs2", mcan_frames([
+    ("00000201", "00"), ("10000281", "0000"), ("01000106", "03067166"), ("00084711", "0000C0030120"),
+    ("00080201", "0000000000")]))
+write("mcan_frame", "hostile-name", mcan_frames(MCAN_LOGIN + MCAN_UPGRADE[:2] + [
+    ("180020AB", "020000001B5B324A"), ("180020AB", "02000004FF07005C")]))
+write("mcan_frame", "dlc-above-eight", struct.pack(">IB", 0x0C0007AB, 12) + bytes(8))

@@ -9,12 +9,14 @@ set(STELLWERK_FUZZ_TARGETS
     config_stream   # config-data stream frames -> ConfigStreamReceiver (CRC, inflate, limits)
     status_data     # status-data configuration packets -> device, reading and config channels
     loco_picture    # a loco's .icon value -> picture file name; picture bytes -> PNG header check
+    mcan_frame      # 13-byte M-CAN frames in bus order -> decode (every role), encode, FrameReport, HandleRoles
 )
 
 file(GLOB STELLWERK_FUZZED_SOURCES CONFIGURE_DEPENDS
     ${STELLWERK_ROOT}/core/can/*.cpp
     ${STELLWERK_ROOT}/core/bus/*.cpp
     ${STELLWERK_ROOT}/core/cs2/*.cpp
+    ${STELLWERK_ROOT}/core/mcan/*.cpp
     ${STELLWERK_ROOT}/core/cs2config/*.cpp)
 list(APPEND STELLWERK_FUZZED_SOURCES
     ${STELLWERK_ROOT}/core/transport/FrameAssembler.cpp

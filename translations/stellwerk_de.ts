@@ -364,6 +364,65 @@
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::BusMonitorFilterBar</name>
+    <message>
+        <source>the Loc-ID is not understood; write e.g. 0xC003, 49155 or dcc 3</source>
+        <translation>die Loc-ID ist nicht verständlich; z. B. 0xC003, 49155 oder dcc 3 schreiben</translation>
+    </message>
+    <message>
+        <source>the handheld is not understood; write its node, e.g. 43, or its name</source>
+        <translation>das Handgerät ist nicht verständlich; seinen Knoten, z. B. 43, oder seinen Namen schreiben</translation>
+    </message>
+    <message>
+        <source>Find text, e.g. speed=0</source>
+        <translation>Text suchen, z. B. speed=0</translation>
+    </message>
+    <message>
+        <source>All protocols</source>
+        <translation>Alle Protokolle</translation>
+    </message>
+    <message>
+        <source>CS2</source>
+        <translation>CS2</translation>
+    </message>
+    <message>
+        <source>M-CAN</source>
+        <translation>M-CAN</translation>
+    </message>
+    <message>
+        <source>Foreign</source>
+        <translation>Fremd</translation>
+    </message>
+    <message>
+        <source>Show only frames of one protocol; foreign frames belong to none that is expected on their bus</source>
+        <translation>Nur Frames eines Protokolls zeigen; fremde Frames gehören zu keinem, das auf ihrem Bus erwartet wird</translation>
+    </message>
+    <message>
+        <source>Handheld</source>
+        <translation>Handgerät</translation>
+    </message>
+    <message>
+        <source>Show only the M-CAN frames of one MS1 handheld: its node (43, or its master&apos;s 42) or the name it sent</source>
+        <translation>Nur die M-CAN-Telegramme eines MS1-Handgeräts zeigen: sein Knoten (43, oder der seines Masters, 42) oder der Name, den es gesendet hat</translation>
+    </message>
+    <message>
+        <source>All commands</source>
+        <translation>Alle Befehle</translation>
+    </message>
+    <message>
+        <source>Show only frames of one command</source>
+        <translation>Nur Telegramme eines Befehls zeigen</translation>
+    </message>
+    <message>
+        <source>Loc-ID</source>
+        <translation>Loc-ID</translation>
+    </message>
+    <message>
+        <source>Show only frames for one Loc-ID: 0xC003, 49155 or a protocol and address such as dcc 3, mfx 5, mm2 80</source>
+        <translation>Nur Telegramme einer Loc-ID zeigen: 0xC003, 49155 oder Protokoll und Adresse wie dcc 3, mfx 5, mm2 80</translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::BusMonitorModel</name>
     <message>
         <source>Time</source>
@@ -505,36 +564,12 @@
         <source>filtering, %1 % done</source>
         <translation>wird gefiltert, %1 % erledigt</translation>
     </message>
-    <message>
-        <source>the Loc-ID is not understood; write e.g. 0xC003, 49155 or dcc 3</source>
-        <translation>die Loc-ID ist nicht verständlich; z. B. 0xC003, 49155 oder dcc 3 schreiben</translation>
-    </message>
     <message numerus="yes">
         <source>%Ln line(s) skipped; %1</source>
         <translation>
             <numerusform>%Ln Zeile übersprungen; %1</numerusform>
             <numerusform>%Ln Zeilen übersprungen; %1</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Find text, e.g. speed=0</source>
-        <translation>Text suchen, z. B. speed=0</translation>
-    </message>
-    <message>
-        <source>All commands</source>
-        <translation>Alle Befehle</translation>
-    </message>
-    <message>
-        <source>Show only frames of one command</source>
-        <translation>Nur Telegramme eines Befehls zeigen</translation>
-    </message>
-    <message>
-        <source>Loc-ID</source>
-        <translation>Loc-ID</translation>
-    </message>
-    <message>
-        <source>Show only frames for one Loc-ID: 0xC003, 49155 or a protocol and address such as dcc 3, mfx 5, mm2 80</source>
-        <translation>Nur Telegramme einer Loc-ID zeigen: 0xC003, 49155 oder Protokoll und Adresse wie dcc 3, mfx 5, mm2 80</translation>
     </message>
     <message>
         <source>Stop re&amp;cording</source>
@@ -595,22 +630,6 @@
     <message>
         <source>station</source>
         <translation>Zentrale</translation>
-    </message>
-    <message>
-        <source>All protocols</source>
-        <translation>Alle Protokolle</translation>
-    </message>
-    <message>
-        <source>CS2</source>
-        <translation>CS2</translation>
-    </message>
-    <message>
-        <source>Foreign</source>
-        <translation>Fremd</translation>
-    </message>
-    <message>
-        <source>Show only frames of one protocol; foreign frames belong to none that is expected on their bus</source>
-        <translation>Nur Frames eines Protokolls zeigen; fremde Frames gehören zu keinem, das auf ihrem Bus erwartet wird</translation>
     </message>
 </context>
 <context>
@@ -926,10 +945,6 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <translation>%1 ist größer als %2 MB; bitte einen kürzeren Ausschnitt öffnen.</translation>
     </message>
     <message>
-        <source>Paste CAN frames, one per line, as written in the Märklin document (00004711 5 00 00 00 00 00), by candump (00004711#0000000000) or as 13-byte network frames in hex. Lines starting with # are ignored.</source>
-        <translation>CAN-Telegramme zeilenweise einfügen: wie im Märklin-Dokument (00004711 5 00 00 00 00 00), wie von candump (00004711#0000000000) oder als 13-Byte-Netzwerktelegramm in Hex. Zeilen, die mit # beginnen, werden übergangen.</translation>
-    </message>
-    <message>
         <source>00084711 6 00 00 C0 03 01 20</source>
         <translation>00084711 6 00 00 C0 03 01 20</translation>
     </message>
@@ -974,6 +989,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>%1 (response)</source>
         <translation>%1 (Antwort)</translation>
+    </message>
+    <message>
+        <source>Paste CAN frames of the CS2 or of MS1 handhelds (M-CAN), one per line, as written in the Märklin documents (00004711 5 00 00 00 00 00), by candump (00004711#0000000000) or as 13-byte network frames in hex. Lines starting with # are ignored; the lines are read in order, as one bus.</source>
+        <translation>CAN-Telegramme der CS2 oder von MS1-Handgeräten (M-CAN) zeilenweise einfügen: wie in den Märklin-Dokumenten (00004711 5 00 00 00 00 00), wie von candump (00004711#0000000000) oder als 13-Byte-Netzwerktelegramm in Hex. Zeilen, die mit # beginnen, werden übergangen; die Zeilen werden der Reihe nach als ein Bus gelesen.</translation>
     </message>
 </context>
 <context>

@@ -364,6 +364,65 @@
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::BusMonitorFilterBar</name>
+    <message>
+        <source>the Loc-ID is not understood; write e.g. 0xC003, 49155 or dcc 3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the handheld is not understood; write its node, e.g. 43, or its name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Find text, e.g. speed=0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All protocols</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CS2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>M-CAN</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Foreign</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show only frames of one protocol; foreign frames belong to none that is expected on their bus</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Handheld</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show only the M-CAN frames of one MS1 handheld: its node (43, or its master&apos;s 42) or the name it sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All commands</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show only frames of one command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Loc-ID</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show only frames for one Loc-ID: 0xC003, 49155 or a protocol and address such as dcc 3, mfx 5, mm2 80</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::BusMonitorModel</name>
     <message>
         <source>Time</source>
@@ -505,36 +564,12 @@
         <source>filtering, %1 % done</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
-        <source>the Loc-ID is not understood; write e.g. 0xC003, 49155 or dcc 3</source>
-        <translation type="unfinished"></translation>
-    </message>
     <message numerus="yes">
         <source>%Ln line(s) skipped; %1</source>
         <translation>
             <numerusform>%Ln line skipped; %1</numerusform>
             <numerusform>%Ln lines skipped; %1</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Find text, e.g. speed=0</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>All commands</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show only frames of one command</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Loc-ID</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show only frames for one Loc-ID: 0xC003, 49155 or a protocol and address such as dcc 3, mfx 5, mm2 80</source>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Stop re&amp;cording</source>
@@ -594,22 +629,6 @@
     </message>
     <message>
         <source>station</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>All protocols</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>CS2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Foreign</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show only frames of one protocol; foreign frames belong to none that is expected on their bus</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -923,10 +942,6 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Paste CAN frames, one per line, as written in the Märklin document (00004711 5 00 00 00 00 00), by candump (00004711#0000000000) or as 13-byte network frames in hex. Lines starting with # are ignored.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>00084711 6 00 00 C0 03 01 20</source>
         <translation type="unfinished"></translation>
     </message>
@@ -970,6 +985,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>%1 (response)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paste CAN frames of the CS2 or of MS1 handhelds (M-CAN), one per line, as written in the Märklin documents (00004711 5 00 00 00 00 00), by candump (00004711#0000000000) or as 13-byte network frames in hex. Lines starting with # are ignored; the lines are read in order, as one bus.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1,6 +1,6 @@
 #include "DecodeCommand.h"
 
-#include "bus/FrameDescription.h"
+#include "bus/BusContext.h"
 #include "can/FrameText.h"
 #include "cs2/JsonText.h"
 
@@ -10,7 +10,8 @@
 namespace stellwerk::cli {
 namespace {
 
-// Decodes and prints one input line; returns false when the frame was unreadable or invalid.
+// Decodes and prints one input line; returns false when the frame was unreadable or invalid. The lines of
+// one run are one bus: what earlier frames revealed (an MS1's handles and names) names the later ones.
 class FramePrinter {
 public:
     FramePrinter(bool json, std::ostream& out, std::ostream& err) : json_(json), out_(out), err_(err) {}
@@ -22,7 +23,7 @@ public:
             return false;
         }
         // A frame no protocol of the bus claims is shown, not decoded, and is no error.
-        const bus::FrameDescription description(parsed->frame, profile_);
+        const bus::FrameDescription description = context_.read(parsed->frame, profile_);
         out_ << (json_ ? description.json() : description.text()) << '\n';
         return description.decoded() || description.protocol() == bus::Protocol::Foreign;
     }
@@ -38,6 +39,7 @@ private:
 
     bool json_;
     bus::BusProfile profile_ = bus::BusProfile::centralStation();
+    bus::BusContext context_;
     std::ostream& out_;
     std::ostream& err_;
 };

@@ -1,5 +1,7 @@
 #include "bus/FrameClassifier.h"
 
+#include "mcan/Codec.h"
+
 #include <algorithm>
 
 namespace stellwerk::bus {
@@ -16,6 +18,8 @@ bool claims(Protocol protocol, const can::CanFrame& frame) {
     switch (protocol) {
     case Protocol::Cs2:
         return claimsCs2(frame);
+    case Protocol::Mcan:
+        return mcan::isMcan(frame); // notes B§6.2: no CS2 marker, and the bus-busy frame or prio bits set
     case Protocol::Foreign:
         return false;
     }
@@ -28,6 +32,8 @@ std::string_view protocolName(Protocol protocol) {
     switch (protocol) {
     case Protocol::Cs2:
         return "cs2";
+    case Protocol::Mcan:
+        return "mcan";
     case Protocol::Foreign:
         return "foreign";
     }

@@ -9,23 +9,24 @@
 
 namespace stellwerk::bus {
 
-// The protocols Stellwerk knows on a CAN bus. Foreign: a frame no enabled protocol claims (another
-// program's, a device Stellwerk does not speak to, or garbage); it is counted and shown, never dropped.
-// Foreign stays the last one.
-enum class Protocol { Cs2, Foreign };
+// The protocols Stellwerk knows on a CAN bus: the CS2's, and M-CAN, the protocol of the MS1 handhelds
+// (which share the CS2's bus). Foreign: a frame no enabled protocol claims (another program's, a device
+// Stellwerk does not speak to, or garbage); it is counted and shown, never dropped. Foreign stays the last.
+enum class Protocol { Cs2, Mcan, Foreign };
 inline constexpr std::size_t ProtocolCount = std::size_t(Protocol::Foreign) + 1;
 
-// The short name used in JSON and filters: "cs2", "foreign".
+// The short name used in JSON and filters: "cs2", "mcan", "foreign".
 std::string_view protocolName(Protocol protocol);
 
 // What protocols are expected on one bus, in the order they are asked to claim a frame (the more
-// specific first). The CS2 over TCP/UDP: CS2 only; a USB-CAN adapter may add the protocols of the
-// modules wired to it, as their codecs arrive.
+// specific first). A station's bus (also over TCP/UDP, whose gateways pass every frame): M-CAN and CS2;
+// a USB-CAN adapter may add the protocols of the modules wired to it, as their codecs arrive.
 class BusProfile {
 public:
     BusProfile(std::initializer_list<Protocol> protocols);
-    // The profile of a bus behind a CS2/CS3 or Gleisbox: the CS2 protocol.
-    static BusProfile centralStation() { return BusProfile{Protocol::Cs2}; }
+    // The profile of a bus behind a CS2/CS3 or Gleisbox: MS1 handhelds may share it (M-CAN, asked first:
+    // the CS2 protocol claims every 29-bit frame), and the CS2 protocol.
+    static BusProfile centralStation() { return BusProfile{Protocol::Mcan, Protocol::Cs2}; }
 
     const std::vector<Protocol>& protocols() const { return protocols_; }
     bool expects(Protocol protocol) const;

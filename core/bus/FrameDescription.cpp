@@ -1,13 +1,15 @@
 #include "bus/FrameDescription.h"
 
+#include "bus/McanReading.h"
 #include "can/FrameText.h"
 #include "cs2/Fields.h"
 #include "cs2/FrameReport.h"
 #include "cs2/LocId.h"
+#include "mcan/Messages.h"
 
-#include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <iterator>
 
 namespace stellwerk::bus {
 namespace {
@@ -37,17 +39,13 @@ private:
     bool response_;
 };
 
-// "CS2", "CS2/M-CAN": the protocols a bus expects, as a person names them; empty for none.
+// "CS2", "CS2/M-CAN": the protocols a bus expects, as a person names them, in a fixed order; empty for none.
 std::string protocolTitles(const BusProfile& profile) {
+    static constexpr std::string_view titleOf[] = {"CS2", "M-CAN"}; // by Protocol, Foreign left out
     std::string titles;
-    for (const Protocol protocol : profile.protocols()) {
-        if (protocol == Protocol::Foreign)
-            continue;
-        std::string title(protocolName(protocol));
-        std::transform(title.begin(), title.end(), title.begin(),
-                       [](char c) { return char(std::toupper(c)); });
-        titles += (titles.empty() ? "" : "/") + title;
-    }
+    for (std::size_t protocol = 0; protocol < std::size(titleOf); ++protocol)
+        if (profile.expects(Protocol(protocol)))
+            titles += (titles.empty() ? "" : "/") + std::string(titleOf[protocol]);
     return titles;
 }
 
@@ -81,10 +79,12 @@ private:
 };
 
 std::shared_ptr<const FrameReading> readingOf(const can::CanFrame& frame, Protocol protocol,
-                                              const BusProfile& profile) {
+                                              const BusProfile& profile, const BusContext* context) {
     switch (protocol) {
     case Protocol::Cs2:
         return std::make_shared<const Cs2Reading>(frame);
+    case Protocol::Mcan:
+        return mcanReading(frame, context);
     case Protocol::Foreign:
         break;
     }
@@ -123,17 +123,24 @@ std::vector<std::string> words(std::string_view text) {
 
 } // namespace
 
-FrameDescription::FrameDescription(const can::CanFrame& frame, const BusProfile& profile)
-    : frame_(frame), protocol_(classify(frame, profile)), reading_(readingOf(frame, protocol_, profile)) {}
+FrameDescription::FrameDescription(const can::CanFrame& frame, const BusProfile& profile,
+                                   const BusContext* context)
+    : frame_(frame), protocol_(classify(frame, profile)),
+      reading_(readingOf(frame, protocol_, profile, context)) {}
 
 std::string FrameDescription::frameText() const {
     return can::formatDocument(frame_);
 }
 
+// The CS2's names first, then M-CAN's, whatever order the profile asks them in.
 std::vector<std::string_view> messageNames(const BusProfile& profile) {
     std::vector<std::string_view> names;
     if (profile.expects(Protocol::Cs2))
         names = cs2::messageNames();
+    if (profile.expects(Protocol::Mcan)) {
+        const std::vector<std::string_view> mcanNames = mcan::messageNames();
+        names.insert(names.end(), mcanNames.begin(), mcanNames.end());
+    }
     return names;
 }
 

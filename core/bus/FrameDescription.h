@@ -1,6 +1,7 @@
 #pragma once
 
 #include "bus/FrameClassifier.h"
+#include "bus/Handheld.h"
 #include "can/CanFrame.h"
 
 #include <cstdint>
@@ -12,7 +13,10 @@
 
 namespace stellwerk::bus {
 
-// What one protocol reads in a frame; each protocol of the bus has its own (bus/ProtocolReadings.h).
+class BusContext;
+
+// What one protocol reads in a frame; each protocol of the bus has its own (CS2 and foreign frames in
+// FrameDescription.cpp, M-CAN in McanReading.cpp).
 class FrameReading {
 public:
     virtual ~FrameReading() = default;
@@ -28,18 +32,22 @@ public:
     virtual std::string json() const = 0;
     // A numeric field by key ("locId", "contact", ...), when the frame has it.
     virtual std::optional<std::uint64_t> number(std::string_view key) const = 0;
+    // The MS1 handheld the frame belongs to (M-CAN only).
+    virtual std::optional<Handheld> handheld() const { return std::nullopt; }
 };
 
 // What a frame on a bus says, in terms every protocol shares: the protocol it belongs to, a name, fields
 // and its text and JSON forms. The bus monitor, the frame decoder panel and `stellwerk-cli decode` show
-// this and never call a codec themselves. Decodes once, when made; cheap to copy.
+// this and never call a codec themselves. Decodes once, when made; cheap to copy. With the context of its
+// bus (what earlier frames revealed), an M-CAN frame names its handle's role and its handheld's name.
 class FrameDescription {
 public:
-    FrameDescription(const can::CanFrame& frame, const BusProfile& profile);
+    FrameDescription(const can::CanFrame& frame, const BusProfile& profile,
+                     const BusContext* context = nullptr);
 
     const can::CanFrame& frame() const { return frame_; }
     Protocol protocol() const { return protocol_; }
-    // "cs2", "foreign".
+    // "cs2", "mcan", "foreign".
     std::string_view protocolName() const { return bus::protocolName(protocol_); }
     // The message's name ("loco.speed"); a frame that did not decode has the name it would have had.
     std::string_view name() const { return reading_->name(); }
@@ -51,6 +59,9 @@ public:
     std::string text() const { return reading_->text(); }
     std::string json() const { return reading_->json(); }
     std::optional<std::uint64_t> number(std::string_view key) const { return reading_->number(key); }
+    // The MS1 handheld an M-CAN frame belongs to (the slave node of its pair, and its name when the
+    // context knew it); nullopt for other frames and for M-CAN frames of no pair (login, flash).
+    std::optional<Handheld> handheld() const { return reading_->handheld(); }
 
 private:
     can::CanFrame frame_;

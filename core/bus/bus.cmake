@@ -2,9 +2,15 @@
 # the codecs it dispatches to.
 stellwerk_core_library(bus PURE)
 target_sources(stellwerk-bus PRIVATE
+    bus/BusContext.cpp
+    bus/BusContext.h
     bus/FrameClassifier.cpp
     bus/FrameClassifier.h
     bus/FrameDescription.cpp
     bus/FrameDescription.h
+    bus/Handheld.cpp
+    bus/Handheld.h
+    bus/McanReading.cpp
+    bus/McanReading.h
 )
-target_link_libraries(stellwerk-bus PUBLIC stellwerk-can PRIVATE stellwerk-cs2)
+target_link_libraries(stellwerk-bus PUBLIC stellwerk-can PRIVATE stellwerk-cs2 stellwerk-mcan)

@@ -3,6 +3,7 @@
 #include "mcan/CodecDetail.h"
 
 #include <type_traits>
+#include <utility>
 
 namespace stellwerk::mcan {
 
@@ -26,6 +27,17 @@ std::string_view roleName(HandleRole role) {
 
 std::string_view nameOf(const Message& message) {
     return std::visit([](const auto& m) { return std::decay_t<decltype(m)>::name; }, message);
+}
+
+namespace {
+template <std::size_t... I>
+std::vector<std::string_view> allNames(std::index_sequence<I...>) {
+    return {std::variant_alternative_t<I, Message>::name...};
+}
+} // namespace
+
+std::vector<std::string_view> messageNames() {
+    return allNames(std::make_index_sequence<std::variant_size_v<Message>>());
 }
 
 bool isMcan(const can::CanFrame& frame) {

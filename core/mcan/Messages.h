@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 namespace stellwerk::mcan {
 
@@ -394,5 +395,8 @@ using Message =
 
 // The message's name, e.g. "mcan.poll".
 std::string_view nameOf(const Message& message);
+
+// Every message name, in declaration order (login first, mcan.unknown last), for choosing one in a filter.
+std::vector<std::string_view> messageNames();
 
 } // namespace stellwerk::mcan

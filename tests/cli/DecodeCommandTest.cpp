@@ -1,5 +1,8 @@
 #include "DecodeCommand.h"
 
+#include "../core/mcan/SeedTrace.h"
+#include "can/FrameText.h"
+
 #include <gtest/gtest.h>
 #include <sstream>
 
@@ -48,11 +51,12 @@ TEST(CliDecode, JsonLinesCarryTheAgreedKeys) {
                        "\"protocol\":\"dcc\",\"address\":3,\"speed\":288}}\n");
 }
 
-// Standard (11-bit) frames belong to no protocol of a CS2 bus: shown as foreign, with their id in 3 digits.
+// Standard (11-bit) frames belong to no protocol of a station's bus (CS2, M-CAN): shown as foreign, with
+// their id in 3 digits.
 TEST(CliDecode, StandardFramesAreShownAsForeign) {
     const auto text = decode({"123#0102"});
     EXPECT_EQ(text.status, 0);
-    EXPECT_EQ(text.out, "123 2 01 02  foreign 11-bit frame (no protocol of a CS2 bus)\n");
+    EXPECT_EQ(text.out, "123 2 01 02  foreign 11-bit frame (no protocol of a CS2/M-CAN bus)\n");
     const auto json = decode({"--json", "can0  7FF   [1]  AB"});
     EXPECT_EQ(json.out,
               "{\"protocol\":\"foreign\",\"id\":\"7FF\",\"extended\":false,\"dlc\":1,\"data\":\"AB\"}\n");
@@ -109,4 +113,61 @@ TEST(CliDecode, JsonEscapesBytesThatAreNotUtf8) {
 TEST(CliDecode, JsonKeepsUtf8AndEscapesControlCharacters) {
     const auto run = decode({"--json"}, "Gr\xc3\xbc\xc3\x9f\x1b[2J\n");
     EXPECT_EQ(run.out.rfind("{\"input\":\"Gr\xc3\xbc\xc3\x9f\\u001b[2J\",", 0), 0u) << run.out;
+}
+
+namespace {
+
+std::vector<std::string> linesOf(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        lines.push_back(line);
+    return lines;
+}
+
+// The chapter-11 trace of the M-CAN document (an MS1 logging into an ECoS), one frame per line.
+std::string chapter11Input() {
+    std::string input;
+    for (const stellwerk::can::CanFrame& frame :
+         stellwerk::seeds::chapter11Trace(stellwerk::seeds::McanSeed002))
+        input += stellwerk::can::formatDocument(frame) + '\n';
+    return input;
+}
+
+} // namespace
+
+// M-CAN notes B§4.2, trace #82: an MS1 (node 43) polls its master. A poll says itself which handle is the
+// poll handle, so even a lone poll names it.
+TEST(CliDecode, McanFramesDecodeWithProtocolMcan) {
+    const auto text = decode({"0C0007AB 4 00 00 00 2A"});
+    EXPECT_EQ(text.status, 0);
+    EXPECT_EQ(text.out,
+              "0C0007AB 4 00 00 00 2A  mcan.poll  from=slave node=43 handle=0x0001 prio=3 masterNode=42 "
+              "object=poll\n");
+    const auto json = decode({"--json", "0C0007AB#0000002A"});
+    EXPECT_EQ(json.status, 0);
+    EXPECT_EQ(json.out, "{\"protocol\":\"mcan\",\"id\":\"0C0007AB\",\"dlc\":4,\"data\":\"0000002A\",\"name\":"
+                        "\"mcan.poll\",\"fields\":{\"from\":\"slave\",\"node\":43,\"handle\":\"0x0001\","
+                        "\"prio\":3,\"masterNode\":42,\"object\":\"poll\"}}\n");
+}
+
+// The lines of one run are one bus: the SY handle given in #30 makes #31 a status query (alone it reads as
+// a function query), and the loco handle and name given in #46 and #77-81 name the loco taken in #92.
+TEST(CliDecode, TheChapter11TraceReadsAsOneBus) {
+    const std::string input = chapter11Input();
+    ASSERT_FALSE(input.empty()) << "the seed document is read in place from ../shared/seeds";
+    const auto run = decode({}, input);
+    const std::vector<std::string> lines = linesOf(run.out);
+    ASSERT_EQ(lines.size(), 99u);
+    EXPECT_EQ(lines[30],
+              "18000D2B 2 01 01  mcan.status-query  from=slave node=43 handle=0x0003 prio=6 index=1 "
+              "asks=type object=system-status");
+    EXPECT_NE(lines[91].find("mcan.throttle  from=slave node=43 handle=0x0009 prio=5"), std::string::npos)
+        << lines[91];
+    EXPECT_NE(lines[91].find("object=loco loco=\"003 131-0\""), std::string::npos) << lines[91];
+    EXPECT_NE(decode({"18000D2B 2 01 01"}).out.find("mcan.function-query"), std::string::npos);
+    const auto json = linesOf(decode({"--json"}, input).out);
+    ASSERT_EQ(json.size(), 99u);
+    EXPECT_NE(json[91].find("\"object\":\"loco\",\"loco\":\"003 131-0\""), std::string::npos) << json[91];
+    EXPECT_EQ(json[91].rfind("{\"protocol\":\"mcan\",", 0), 0u) << json[91];
 }

@@ -53,6 +53,13 @@ void BusMonitorFilter::setProtocol(std::optional<bus::Protocol> protocol) {
     restart();
 }
 
+void BusMonitorFilter::setHandheld(std::optional<bus::HandheldReference> handheld) {
+    if (handheld == m_handheld)
+        return;
+    m_handheld = std::move(handheld);
+    restart();
+}
+
 void BusMonitorFilter::setLocId(std::optional<std::uint32_t> locId) {
     setFilters(m_command, locId, m_text);
 }
@@ -93,10 +100,15 @@ std::optional<std::uint32_t> BusMonitorFilter::parseLocId(const QString& text) {
     return bus::parseLocoReference(text.toStdString());
 }
 
-// Cheap tests first: the command needs no decoding, the Loc-ID one decode, the text all the text.
+// Cheap tests first: each reads the row's description (decoded once and cached), the text all its text.
 bool BusMonitorFilter::accepts(int sourceRow) const {
     if (m_protocol && m_source->protocolAt(sourceRow) != *m_protocol)
         return false;
+    if (m_handheld) {
+        const auto handheld = m_source->handheldAt(sourceRow);
+        if (!handheld || !m_handheld->matches(*handheld))
+            return false;
+    }
     if (!m_commandName.empty() && m_source->commandAt(sourceRow) != m_commandName)
         return false;
     if (m_locId && m_source->locIdAt(sourceRow) != m_locId)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "bus/FrameClassifier.h"
+#include "bus/Handheld.h"
 
 #include <QAbstractProxyModel>
 #include <QString>
@@ -15,10 +16,10 @@ namespace stellwerk::ui {
 
 class BusMonitorModel;
 
-// The bus monitor's four filters at once: a protocol, a command (by its vocabulary name), a Loc-ID and a
-// piece of text; a row is shown when it passes all that are set. Changing a filter tests the rows a slice at
-// a time between events (a million rows take seconds to decode), so the window stays usable and shows
-// progress; new rows are tested as they come, and rows the history drops leave without a new scan.
+// The bus monitor's filters at once: a protocol, an MS1 handheld, a command (by its vocabulary name), a
+// Loc-ID and a piece of text; a row is shown when it passes all that are set. Changing a filter tests the
+// rows a slice at a time between events (a million rows take seconds to decode), so the window stays usable
+// and shows progress; new rows are tested as they come, and rows the history drops leave without a new scan.
 class BusMonitorFilter final : public QAbstractProxyModel {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(BusMonitorFilter)
@@ -46,7 +47,13 @@ public:
     // nullopt = every protocol; else only the frames that belong to it on their bus (Foreign: to none).
     void setProtocol(std::optional<bus::Protocol> protocol);
     std::optional<bus::Protocol> protocol() const { return m_protocol; }
-    bool isFiltering() const { return m_protocol || !m_command.isEmpty() || m_locId || !m_text.isEmpty(); }
+    // nullopt = every frame; else only the M-CAN frames of that handheld (either node of its pair, or the
+    // name it sent).
+    void setHandheld(std::optional<bus::HandheldReference> handheld);
+    const std::optional<bus::HandheldReference>& handheld() const { return m_handheld; }
+    bool isFiltering() const {
+        return m_protocol || m_handheld || !m_command.isEmpty() || m_locId || !m_text.isEmpty();
+    }
     // Rows are still being tested after a filter changed; scanPercent() says how far it has come.
     bool isScanning() const;
     int scanPercent() const;
@@ -84,6 +91,7 @@ private:
     BusMonitorModel* m_source = nullptr;
     QTimer* m_scanTimer = nullptr;
     std::optional<bus::Protocol> m_protocol;
+    std::optional<bus::HandheldReference> m_handheld;
     QString m_command;
     std::string m_commandName;
     std::optional<std::uint32_t> m_locId;

@@ -25,13 +25,15 @@ BusMonitorModel::Group groupOf(std::string_view name) {
         return Group::Feedback;
     if (word == "configdata" || word == "statusdata" || word == "connect6021")
         return Group::Stream;
+    if (word == "mcan")
+        return Group::Handheld;
     return Group::Other;
 }
 
 // A light tint of the group's hue over the palette's base colour: the text colour of the palette
 // stays readable on it in light and dark themes alike.
 QColor tint(BusMonitorModel::Group group) {
-    static constexpr int hues[] = {50, 210, 280, 120, 180, -1}; // system yellow, loco blue, ...
+    static constexpr int hues[] = {50, 210, 280, 120, 180, 330, -1}; // system yellow, loco blue, ...
     const int hue = hues[int(group)];
     const QColor base = QGuiApplication::palette().color(QPalette::Base);
     if (hue < 0)
@@ -105,6 +107,12 @@ const bus::BusProfile& BusMonitorModel::profileOf(int bus) const {
     return bus == 0 ? station : none;
 }
 
+bus::BusContext& BusMonitorModel::contextOf(int bus) {
+    if (std::size_t(bus) >= m_contexts.size())
+        m_contexts.resize(std::size_t(bus) + 1);
+    return m_contexts[std::size_t(bus)];
+}
+
 void BusMonitorModel::noteBus(int bus) {
     if (bus + 1 <= m_busCount)
         return;
@@ -125,8 +133,11 @@ void BusMonitorModel::addFrames(std::span<const can::CanFrame> frames, Direction
     bus = std::clamp(bus, 0, 255);
     noteBus(bus);
     const qint64 timeMs = time.toMSecsSinceEpoch();
-    for (const can::CanFrame& frame : frames)
+    bus::BusContext& context = contextOf(bus);
+    for (const can::CanFrame& frame : frames) {
         m_queued.push_back(record(frame, direction, timeMs, bus));
+        context.observe(frame); // in arrival order, also while paused and for frames the queue drops
+    }
     // Never hold more than the table could show: the oldest queued frames would be dropped anyway.
     const auto limit = std::size_t(m_historyLimit);
     if (m_queued.size() > limit)
@@ -204,13 +215,19 @@ void BusMonitorModel::clear() {
     emit countsChanged();
 }
 
+void BusMonitorModel::forgetBusContexts() {
+    m_contexts.clear();
+    m_descriptions.clear();
+}
+
 can::CanFrame BusMonitorModel::frameAt(int row) const {
     return frameOf(m_rows.at(std::size_t(row)));
 }
 
 const bus::FrameDescription& BusMonitorModel::describe(int row) const {
     const Record& r = m_rows.at(std::size_t(row));
-    return m_descriptions.of(m_dropped + std::uint64_t(row), frameOf(r), profileOf(r.bus));
+    const bus::BusContext* context = std::size_t(r.bus) < m_contexts.size() ? &m_contexts[r.bus] : nullptr;
+    return m_descriptions.of(m_dropped + std::uint64_t(row), frameOf(r), profileOf(r.bus), context);
 }
 
 QString BusMonitorModel::directionText(Direction direction) {
@@ -251,6 +268,15 @@ bool BusMonitorModel::containsText(int row, std::string_view lowerNeedle) const 
 std::optional<std::uint32_t> BusMonitorModel::locIdAt(int row) const {
     const auto locId = describe(row).number("locId");
     return locId ? std::optional<std::uint32_t>(std::uint32_t(*locId)) : std::nullopt;
+}
+
+// The handheld's name as its bus knows it now, so that a row described before the name came matches too.
+std::optional<bus::Handheld> BusMonitorModel::handheldAt(int row) const {
+    auto handheld = describe(row).handheld();
+    const std::size_t bus = m_rows.at(std::size_t(row)).bus;
+    if (handheld && bus < m_contexts.size())
+        handheld->name = m_contexts[bus].handheldName(handheld->node);
+    return handheld;
 }
 
 int BusMonitorModel::rowCount(const QModelIndex& parent) const {

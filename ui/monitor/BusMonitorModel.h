@@ -27,7 +27,9 @@ struct MonitoredBus {
 // The bus monitor's rows: a bounded history of compact frame records (no text per frame; the core's
 // FrameDescription, cached for the rows looked at, writes the text when a row is shown), filled in
 // batches so that a flood of frames costs one insert per flush instead of one per frame. Each row knows
-// the bus it came from; the bus column says which when there is more than one.
+// the bus it came from; the bus column says which when there is more than one. Each bus has a context that
+// learns, from every frame in the order it arrived, what one frame does not say (an MS1's handles and
+// names); a row is described with what its bus has revealed so far.
 class BusMonitorModel final : public QAbstractTableModel {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(BusMonitorModel)
@@ -44,7 +46,7 @@ public:
     };
     enum class Direction : std::uint8_t { Received, Sent };
     // What kind of command a row carries; each has its own colour.
-    enum class Group : std::uint8_t { System, Loco, Accessory, Feedback, Stream, Other };
+    enum class Group : std::uint8_t { System, Loco, Accessory, Feedback, Stream, Handheld, Other };
     enum Role {
         // name, details and frame text in one string (decodes the frame once); BusMonitorFilter uses the
         // cheaper containsText()
@@ -85,8 +87,11 @@ public:
     std::uint64_t heldBack() const { return m_heldBack; }
     // Every frame ever given to addFrames() since the last clear().
     std::uint64_t totalFrames() const { return m_total; }
-    // Forgets all rows, queued frames and counters.
+    // Forgets all rows, queued frames and counters; what the buses revealed stays (the buses go on).
     void clear();
+    // Forgets what the buses revealed (an MS1's handles and names): for a log shown instead of the live
+    // buses, and back.
+    void forgetBusContexts();
 
     can::CanFrame frameAt(int row) const;
     QDateTime timeAt(int row) const;
@@ -98,6 +103,8 @@ public:
     bus::Protocol protocolAt(int row) const;
     // The Loc-ID field of the frame in `row`, read by the core's decoder; nullopt when it has none.
     std::optional<std::uint32_t> locIdAt(int row) const;
+    // The MS1 handheld whose frame `row` is (M-CAN), with the name its bus knows for it now.
+    std::optional<bus::Handheld> handheldAt(int row) const;
     // The command's vocabulary name ("loco.speed"), also for a frame that did not decode.
     std::string commandAt(int row) const;
     // How many frames were decoded so far: each shown or filtered row once while it is in the cache.
@@ -134,6 +141,7 @@ private:
 
     static Record record(const can::CanFrame& frame, Direction direction, qint64 timeMs, int bus);
     const bus::BusProfile& profileOf(int bus) const;
+    bus::BusContext& contextOf(int bus);
     void noteBus(int bus);
     void dropOldest(std::size_t count);
     QVariant display(const bus::FrameDescription& description, const Record& record, int column) const;
@@ -149,6 +157,7 @@ private:
     std::uint64_t m_dropped = 0;
     FrameDescriptions m_descriptions;
     std::vector<MonitoredBus> m_buses;
+    std::vector<bus::BusContext> m_contexts; // by bus number, as far as frames came
     int m_busCount = 1;
 };
 

@@ -1,15 +1,15 @@
 #include "monitor/BusMonitorPanel.h"
 
-#include "bus/FrameDescription.h"
+#include "common/SideBySide.h"
 #include "connection/StationConnection.h"
 #include "monitor/BusMonitorFilter.h"
+#include "monitor/BusMonitorFilterBar.h"
 #include "monitor/BusMonitorLog.h"
 #include "monitor/BusMonitorModel.h"
 #include "monitor/BusMonitorReplay.h"
 #include "monitor/BusMonitorSettings.h"
 #include "monitor/BusMonitorTable.h"
 
-#include <QColor>
 #include <QComboBox>
 #include <QDateTime>
 #include <QEvent>
@@ -17,13 +17,10 @@
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QLineEdit>
 #include <QMessageBox>
-#include <QPalette>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
-#include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <limits>
@@ -31,26 +28,15 @@
 namespace stellwerk::ui {
 namespace {
 
-constexpr int FilterDelayMs = 200;
+// Below this width the filter line and the file line (record, open, keep) stand one above the other: side by
+// side they need about 1,080 px in German.
+constexpr int BarsSideBySideWidth = 1150;
 constexpr qsizetype MaxSkippedShown = 20; // lines without a frame listed in the replay's tooltip
 constexpr double Speeds[] = {1.0, 2.0, 10.0, BusMonitorReplay::AsFastAsPossible};
 
 // tr()'s %n takes an int; counters beyond that are shown as the largest int.
 int plural(std::uint64_t count) {
     return int(std::min<std::uint64_t>(count, std::uint64_t(std::numeric_limits<int>::max())));
-}
-
-// The protocols a frame may belong to, all first; the data is the protocol's short name ("cs2").
-QComboBox* protocolBox(QWidget* parent) {
-    auto* box = new QComboBox(parent);
-    box->setObjectName(QStringLiteral("busMonitorProtocol"));
-    box->addItem(QString(), QString());
-    for (std::size_t protocol = 0; protocol < bus::ProtocolCount; ++protocol) {
-        const std::string_view name = bus::protocolName(bus::Protocol(protocol));
-        box->addItem(QString(), QString::fromLatin1(name.data(), qsizetype(name.size())));
-    }
-    box->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-    return box;
 }
 
 QPushButton* button(QWidget* parent, const char* name, bool checkable = false) {
@@ -80,43 +66,21 @@ BusMonitorPanel::BusMonitorPanel(QWidget* parent)
     bars->addLayout(createFilterBar(), 1);
     bars->addSpacing(12);
     bars->addLayout(createFileBar());
+    SideBySide::arrange(this, bars, BarsSideBySideWidth);
     layout->addLayout(bars);
     layout->addWidget(createReplayBar());
     layout->addWidget(m_table, 1);
     layout->addWidget(m_counter);
     connect(m_model, &BusMonitorModel::countsChanged, this, &BusMonitorPanel::updateCounter);
     connect(m_filter, &BusMonitorFilter::scanProgress, this, &BusMonitorPanel::updateCounter);
+    connect(m_filterBar, &BusMonitorFilterBar::applied, this, &BusMonitorPanel::updateCounter);
     retranslate();
 }
 
 BusMonitorPanel::~BusMonitorPanel() = default;
 
 QLayout* BusMonitorPanel::createFilterBar() {
-    m_filterEdit = new QLineEdit(this);
-    m_filterEdit->setObjectName(QStringLiteral("busMonitorFilter"));
-    m_filterEdit->setClearButtonEnabled(true);
-    m_protocolBox = protocolBox(this);
-    connect(m_protocolBox, &QComboBox::currentIndexChanged, this, &BusMonitorPanel::applyFilter);
-    m_commandBox = new QComboBox(this);
-    m_commandBox->setObjectName(QStringLiteral("busMonitorCommand"));
-    m_commandBox->addItem(QString());
-    for (const std::string_view name : bus::messageNames(bus::BusProfile::centralStation()))
-        m_commandBox->addItem(QString::fromLatin1(name.data(), qsizetype(name.size())));
-    m_commandBox->setMaxVisibleItems(20);
-    m_commandBox->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_commandBox->setMinimumContentsLength(16);
-    m_locIdEdit = new QLineEdit(this);
-    m_locIdEdit->setObjectName(QStringLiteral("busMonitorLocId"));
-    m_locIdEdit->setClearButtonEnabled(true);
-    m_locIdEdit->setMaximumWidth(fontMetrics().horizontalAdvance(QStringLiteral("0xC003 or dcc 3")));
-    m_filterTimer = new QTimer(this);
-    m_filterTimer->setSingleShot(true);
-    m_filterTimer->setInterval(FilterDelayMs);
-    connect(m_filterEdit, &QLineEdit::textChanged, m_filterTimer, qOverload<>(&QTimer::start));
-    connect(m_locIdEdit, &QLineEdit::textChanged, m_filterTimer, qOverload<>(&QTimer::start));
-    connect(m_commandBox, &QComboBox::currentIndexChanged, this, &BusMonitorPanel::applyFilter);
-    connect(m_filterTimer, &QTimer::timeout, this, &BusMonitorPanel::applyFilter);
-
+    m_filterBar = new BusMonitorFilterBar(m_filter, this);
     m_pauseButton = button(this, "busMonitorPause", true);
     connect(m_pauseButton, &QPushButton::toggled, this, [this](bool paused) {
         m_model->setPaused(paused);
@@ -126,10 +90,7 @@ QLayout* BusMonitorPanel::createFilterBar() {
     connect(m_clearButton, &QPushButton::clicked, m_model, &BusMonitorModel::clear);
 
     auto* bar = new QHBoxLayout;
-    bar->addWidget(m_filterEdit, 1);
-    bar->addWidget(m_protocolBox);
-    bar->addWidget(m_commandBox);
-    bar->addWidget(m_locIdEdit);
+    bar->addWidget(m_filterBar, 1);
     bar->addWidget(m_pauseButton);
     bar->addWidget(m_clearButton);
     return bar;
@@ -160,6 +121,7 @@ QLayout* BusMonitorPanel::createFileBar() {
     bar->addSpacing(12);
     bar->addWidget(m_historyLabel);
     bar->addWidget(m_history);
+    bar->addStretch(); // left-aligned when it has a line of its own
     return bar;
 }
 
@@ -298,6 +260,7 @@ QString BusMonitorPanel::openLog(const QString& path) {
         return error;
     m_model->clear();      // the first frames come on the next turn of the event loop
     m_model->setBuses({}); // the log's buses are its own: can0, can1, ...
+    m_model->forgetBusContexts();
     showBusColumn();
     m_skippedLines.clear();
     m_replayPauseButton->setChecked(false);
@@ -314,6 +277,7 @@ void BusMonitorPanel::setReplaySpeed(double factor) {
 void BusMonitorPanel::backToLive() {
     m_replay->stop();
     m_model->clear();
+    m_model->forgetBusContexts();
     takeBuses();
 }
 
@@ -333,55 +297,23 @@ void BusMonitorPanel::replayStateChanged() {
 }
 
 void BusMonitorPanel::setFilterText(const QString& text) {
-    m_filterEdit->setText(text);
-    applyFilter();
+    m_filterBar->setFilterText(text);
 }
 
 bool BusMonitorPanel::setProtocolFilter(const QString& name) {
-    const int index = m_protocolBox->findData(name);
-    if (index < 0)
-        return false;
-    m_protocolBox->setCurrentIndex(index);
-    applyFilter();
-    return true;
+    return m_filterBar->setProtocolFilter(name);
 }
 
 bool BusMonitorPanel::setCommandFilter(const QString& name) {
-    const int index = name.isEmpty() ? 0 : m_commandBox->findText(name);
-    if (index < 0)
-        return false;
-    m_commandBox->setCurrentIndex(index);
-    applyFilter();
-    return true;
+    return m_filterBar->setCommandFilter(name);
 }
 
 bool BusMonitorPanel::setLocIdFilter(const QString& text) {
-    m_locIdEdit->setText(text);
-    applyFilter();
-    return m_locIdValid;
+    return m_filterBar->setLocIdFilter(text);
 }
 
-void BusMonitorPanel::applyFilter() {
-    m_filterTimer->stop();
-    const QString locIdText = m_locIdEdit->text().trimmed();
-    const auto locId = BusMonitorFilter::parseLocId(locIdText);
-    m_locIdValid = locIdText.isEmpty() || locId.has_value();
-    showLocIdValidity();
-    const int protocol = m_protocolBox->currentIndex() - 1;
-    m_filter->setProtocol(protocol < 0 ? std::nullopt : std::optional(bus::Protocol(protocol)));
-    m_filter->setFilters(m_commandBox->currentIndex() > 0 ? m_commandBox->currentText() : QString(), locId,
-                         m_filterEdit->text().trimmed());
-    updateCounter();
-}
-
-// Text the filter cannot read turns red, in light and dark themes alike.
-void BusMonitorPanel::showLocIdValidity() {
-    QPalette colours = palette();
-    if (!m_locIdValid) {
-        const bool dark = colours.color(QPalette::Base).lightness() < 128;
-        colours.setColor(QPalette::Text, QColor::fromHsv(0, dark ? 150 : 230, dark ? 255 : 190));
-    }
-    m_locIdEdit->setPalette(colours);
+bool BusMonitorPanel::setHandheldFilter(const QString& text) {
+    return m_filterBar->setHandheldFilter(text);
 }
 
 void BusMonitorPanel::updateCounter() {
@@ -390,8 +322,8 @@ void BusMonitorPanel::updateCounter() {
         text += QStringLiteral(" · ") + tr("filtering, %1 % done").arg(m_filter->scanPercent());
     if (m_filter->isFiltering())
         text += QStringLiteral(" · ") + tr("%Ln row(s) match the filter", nullptr, m_filter->rowCount());
-    if (!m_locIdValid)
-        text += QStringLiteral(" · ") + tr("the Loc-ID is not understood; write e.g. 0xC003, 49155 or dcc 3");
+    for (const QString& problem : m_filterBar->problems())
+        text += QStringLiteral(" · ") + problem;
     if (m_model->isPaused())
         text += QStringLiteral(" · ") +
                 tr("paused, %Ln frame(s) arrived since", nullptr, plural(m_model->heldBack()));
@@ -414,17 +346,6 @@ void BusMonitorPanel::changeEvent(QEvent* event) {
 }
 
 void BusMonitorPanel::retranslate() {
-    m_filterEdit->setPlaceholderText(tr("Find text, e.g. speed=0"));
-    m_protocolBox->setItemText(0, tr("All protocols"));
-    m_protocolBox->setItemText(1 + int(bus::Protocol::Cs2), tr("CS2"));
-    m_protocolBox->setItemText(1 + int(bus::Protocol::Foreign), tr("Foreign"));
-    m_protocolBox->setToolTip(tr("Show only frames of one protocol; foreign frames belong to none that is "
-                                 "expected on their bus"));
-    m_commandBox->setItemText(0, tr("All commands"));
-    m_commandBox->setToolTip(tr("Show only frames of one command"));
-    m_locIdEdit->setPlaceholderText(tr("Loc-ID"));
-    m_locIdEdit->setToolTip(tr("Show only frames for one Loc-ID: 0xC003, 49155 or a protocol and address "
-                               "such as dcc 3, mfx 5, mm2 80"));
     m_pauseButton->setText(m_pauseButton->isChecked() ? tr("&Resume") : tr("&Pause"));
     m_pauseButton->setToolTip(
         tr("Stop adding rows; frames that arrive meanwhile are kept and shown on resume"));

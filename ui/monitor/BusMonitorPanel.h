@@ -9,12 +9,10 @@
 class QComboBox;
 class QDateTime;
 class QLabel;
-class QLineEdit;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
 class QTableView;
-class QTimer;
 
 namespace stellwerk::can {
 struct CanFrame;
@@ -26,6 +24,7 @@ class StationConnection;
 namespace stellwerk::ui {
 
 class BusMonitorFilter;
+class BusMonitorFilterBar;
 class BusMonitorLogWriter;
 class BusMonitorModel;
 class BusMonitorReplay;
@@ -50,8 +49,8 @@ public:
     BusMonitorFilter* filter() const { return m_filter; }
     BusMonitorReplay* replay() const { return m_replay; }
     QTableView* table() const;
-    // Shows only frames of the protocol named ("cs2", "foreign"); empty = all. Returns false for a name the
-    // list does not hold.
+    // Shows only frames of the protocol named ("cs2", "mcan", "foreign"); empty = all. Returns false for a
+    // name the list does not hold.
     bool setProtocolFilter(const QString& name);
     // Shows only rows whose message, details or frame contain `text` (case-insensitive); applied at once.
     void setFilterText(const QString& text);
@@ -61,6 +60,9 @@ public:
     // Shows only rows addressing the Loc-ID written in `text` ("0xC003", "dcc 3"); empty = all. Returns
     // false (and filters nothing by Loc-ID) when the text is not a Loc-ID.
     bool setLocIdFilter(const QString& text);
+    // Shows only the M-CAN frames of one MS1 handheld: a node of its pair ("43", "42") or the name it sent;
+    // empty = all. Returns false (and filters nothing by handheld) when the text names no handheld.
+    bool setHandheldFilter(const QString& text);
     // Writes every frame seen from now on to a candump log at `path`; returns an error text, empty on
     // success. stopRecording() closes the file.
     QString startRecording(const QString& path);
@@ -88,8 +90,6 @@ private:
     void replayStateChanged();
     void chooseRecording(bool start);
     void chooseLog();
-    void applyFilter();
-    void showLocIdValidity();
     void updateCounter();
     void updateReplayStatus();
     void retranslate();
@@ -99,11 +99,7 @@ private:
     BusMonitorFilter* m_filter = nullptr;
     BusMonitorReplay* m_replay = nullptr;
     BusMonitorTable* m_table = nullptr;
-    QLineEdit* m_filterEdit = nullptr;
-    QComboBox* m_protocolBox = nullptr;
-    QComboBox* m_commandBox = nullptr;
-    QLineEdit* m_locIdEdit = nullptr;
-    QTimer* m_filterTimer = nullptr;
+    BusMonitorFilterBar* m_filterBar = nullptr;
     QPushButton* m_pauseButton = nullptr;
     QPushButton* m_clearButton = nullptr;
     QPushButton* m_recordButton = nullptr;
@@ -121,7 +117,6 @@ private:
     QPointer<connection::StationConnection> m_connection;
     std::unique_ptr<BusMonitorLogWriter> m_recorder;
     QStringList m_skippedLines; // "line 3: why", the first MaxSkippedShown of them
-    bool m_locIdValid = true;
 };
 
 } // namespace stellwerk::ui

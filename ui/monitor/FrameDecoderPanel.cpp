@@ -1,6 +1,6 @@
 #include "monitor/FrameDecoderPanel.h"
 
-#include "bus/FrameDescription.h"
+#include "bus/BusContext.h"
 #include "can/FrameText.h"
 
 #include <QEvent>
@@ -104,7 +104,10 @@ void FrameDecoderPanel::setInput(const QString& text) {
     refresh();
 }
 
+// The lines are one bus, read in order: what earlier frames revealed (an MS1's handles) names later ones.
 void FrameDecoderPanel::refresh() {
+    const bus::BusProfile station = bus::BusProfile::centralStation();
+    bus::BusContext context;
     QList<QTreeWidgetItem*> items;
     int frames = 0, errors = 0;
     const QStringList lines = m_input->toPlainText().split(QLatin1Char('\n'));
@@ -119,7 +122,7 @@ void FrameDecoderPanel::refresh() {
                                    QString::fromStdString(parsed.error())));
             continue;
         }
-        const bus::FrameDescription description(parsed->frame, bus::BusProfile::centralStation());
+        const bus::FrameDescription description = context.read(parsed->frame, station);
         const QString frame = QString::fromStdString(description.frameText());
         QString message = QString::fromStdString(std::string(description.name()));
         if (description.isResponse())
@@ -167,9 +170,11 @@ QString FrameDecoderPanel::loadCapture(const QString& path) {
 }
 
 void FrameDecoderPanel::retranslate() {
-    m_hint->setText(tr("Paste CAN frames, one per line, as written in the Märklin document "
-                       "(00004711 5 00 00 00 00 00), by candump (00004711#0000000000) or as 13-byte network "
-                       "frames in hex. Lines starting with # are ignored."));
+    m_hint->setText(
+        tr("Paste CAN frames of the CS2 or of MS1 handhelds (M-CAN), one per line, as written in "
+           "the Märklin documents (00004711 5 00 00 00 00 00), by candump (00004711#0000000000) or "
+           "as 13-byte network frames in hex. Lines starting with # are ignored; the lines are "
+           "read in order, as one bus."));
     m_input->setPlaceholderText(tr("00084711 6 00 00 C0 03 01 20"));
     m_results->setHeaderLabels({tr("Line"), tr("Frame"), tr("Message"), tr("Details")});
     m_openButton->setText(tr("&Open capture…"));

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "bus/BusContext.h"
 #include "bus/FrameDescription.h"
 
 #include <cstddef>
@@ -15,10 +16,10 @@ class FrameDescriptions {
 public:
     static constexpr std::size_t Capacity = 1024;
 
-    // The description of the row with this sequence number, whose frame came from a bus with `profile`;
-    // valid until the next call.
+    // The description of the row with this sequence number, whose frame came from a bus with `profile`
+    // that has revealed `context` so far (null: nothing); valid until the next call.
     const bus::FrameDescription& of(std::uint64_t sequence, const can::CanFrame& frame,
-                                    const bus::BusProfile& profile) const;
+                                    const bus::BusProfile& profile, const bus::BusContext* context) const;
     void clear() const;
     // How many frames were decoded so far (for tests: each row once while it stays in the cache).
     std::uint64_t decodeCount() const { return m_decodes; }

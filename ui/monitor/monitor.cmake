@@ -1,7 +1,8 @@
-# The bus monitor (every frame on the connection's buses, both ways: the bounded history, the four filters,
+# The bus monitor (every frame on the connection's buses, both ways: the bounded history, the filters,
 # recording and timed replay of candump logs, the history setting) and the frame decoder tab.
 target_sources(stellwerk-ui PRIVATE
     monitor/BusMonitorFilter.cpp monitor/BusMonitorFilter.h
+    monitor/BusMonitorFilterBar.cpp monitor/BusMonitorFilterBar.h
     monitor/BusMonitorLog.cpp monitor/BusMonitorLog.h
     monitor/BusMonitorModel.cpp monitor/BusMonitorModel.h
     monitor/BusMonitorPanel.cpp monitor/BusMonitorPanel.h

@@ -62,8 +62,8 @@ TEST(FrameDescription, AForeignFrameIsShownNotDecoded) {
     EXPECT_EQ(description.name(), "foreign");
     EXPECT_FALSE(description.decoded());
     EXPECT_EQ(description.frameText(), "123 2 01 02");
-    EXPECT_EQ(description.detailText(), "11-bit frame (no protocol of a CS2 bus)");
-    EXPECT_EQ(description.text(), "123 2 01 02  foreign 11-bit frame (no protocol of a CS2 bus)");
+    EXPECT_EQ(description.detailText(), "11-bit frame (no protocol of a CS2/M-CAN bus)");
+    EXPECT_EQ(description.text(), "123 2 01 02  foreign 11-bit frame (no protocol of a CS2/M-CAN bus)");
     EXPECT_EQ(description.json(),
               "{\"protocol\":\"foreign\",\"id\":\"123\",\"extended\":false,\"dlc\":2,\"data\":\"0102\"}");
 }
@@ -79,7 +79,62 @@ TEST(FrameDescription, MessageNamesComeFromTheProtocolsOfTheBus) {
     const std::vector<std::string_view> names = messageNames(Station);
     EXPECT_NE(std::find(names.begin(), names.end(), "loco.speed"), names.end());
     EXPECT_NE(std::find(names.begin(), names.end(), "system.go"), names.end());
+    const auto poll = std::find(names.begin(), names.end(), "mcan.poll");
+    EXPECT_NE(poll, names.end());
+    EXPECT_GT(poll - names.begin(), std::find(names.begin(), names.end(), "system.go") - names.begin())
+        << "the CS2's names come first";
+    const std::vector<std::string_view> cs2Only = messageNames(BusProfile{Protocol::Cs2});
+    EXPECT_EQ(std::find(cs2Only.begin(), cs2Only.end(), "mcan.poll"), cs2Only.end());
     EXPECT_TRUE(messageNames(BusProfile{}).empty());
+}
+
+// M-CAN notes B§4.2, trace #82: the MS1 (node 43) polls its master (node 42) on the poll handle.
+TEST(FrameDescription, AnMcanFrameIsDescribedByTheMcanCodec) {
+    const std::uint8_t data[] = {0x00, 0x00, 0x00, 0x2A};
+    const FrameDescription description(CanFrame::extendedFrame(0x0C0007AB, data), Station);
+    EXPECT_EQ(description.protocol(), Protocol::Mcan);
+    EXPECT_EQ(description.protocolName(), "mcan");
+    EXPECT_EQ(description.name(), "mcan.poll");
+    EXPECT_TRUE(description.decoded());
+    EXPECT_FALSE(description.isResponse());
+    EXPECT_EQ(description.frameText(), "0C0007AB 4 00 00 00 2A");
+    EXPECT_EQ(description.number("node"), 43u);
+    EXPECT_EQ(description.number("masterNode"), 42u);
+    EXPECT_EQ(description.detailText(), "from=slave node=43 handle=0x0001 prio=3 masterNode=42");
+    EXPECT_EQ(description.text(), "0C0007AB 4 00 00 00 2A  mcan.poll  " + description.detailText());
+    EXPECT_EQ(description.json(),
+              "{\"protocol\":\"mcan\",\"id\":\"0C0007AB\",\"dlc\":4,\"data\":\"0000002A\","
+              "\"name\":\"mcan.poll\",\"fields\":{\"from\":\"slave\",\"node\":43,"
+              "\"handle\":\"0x0001\",\"prio\":3,\"masterNode\":42}}");
+    ASSERT_TRUE(description.handheld());
+    EXPECT_EQ(description.handheld()->node, 43);
+    EXPECT_EQ(description.handheld()->name, "");
+}
+
+TEST(FrameDescription, AnMcanFrameOfNoDocumentedFormIsUnknownWithItsReason) {
+    const std::uint8_t data[] = {0x00, 0x00};
+    const FrameDescription description(CanFrame::extendedFrame(0x10000281, data), Station); // trace #2
+    EXPECT_EQ(description.protocol(), Protocol::Mcan);
+    EXPECT_EQ(description.name(), "mcan.unknown");
+    EXPECT_FALSE(description.decoded());
+    EXPECT_NE(description.detailText().find("why="), std::string::npos) << description.detailText();
+}
+
+// The master's node (42) and the slave's (43) belong to one handheld; login frames before the grant,
+// the bus-busy frame and CS2 frames to none.
+TEST(FrameDescription, AnMcanFrameNamesTheSlaveNodeOfItsPair) {
+    const std::uint8_t answer[] = {0x40, 0x2B, 0x00, 0x00, 0x00, 0x08, 0x00, 0x01};
+    const FrameDescription fromMaster(CanFrame::extendedFrame(0x18000A2A, answer), Station); // trace #18
+    ASSERT_TRUE(fromMaster.handheld());
+    EXPECT_EQ(fromMaster.handheld()->node, 43);
+    const std::uint8_t grant[] = {0x00, 0x02, 0x04, 0xB3, 0x00, 0x02, 0xAB, 0x00};
+    const FrameDescription granted(CanFrame::extendedFrame(0x1C03B0FE, grant), Station); // trace #16
+    ASSERT_TRUE(granted.handheld());
+    EXPECT_EQ(granted.handheld()->node, 43);
+    EXPECT_FALSE(FrameDescription(CanFrame::extendedFrame(0x1C00007E, {}), Station).handheld());
+    const std::uint8_t zeros[8] = {};
+    EXPECT_FALSE(FrameDescription(CanFrame::extendedFrame(0x380, zeros), Station).handheld());
+    EXPECT_FALSE(FrameDescription(locoSpeed(), Station).handheld());
 }
 
 TEST(LocoReference, ReadsALocIdOrAProtocolWithAnAddress) {

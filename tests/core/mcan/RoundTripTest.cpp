@@ -5,6 +5,7 @@
 #include "mcan/FrameReport.h"
 
 #include <gtest/gtest.h>
+#include <string_view>
 #include <vector>
 
 using namespace stellwerk;
@@ -84,6 +85,15 @@ TEST(McanRoundTrip, EveryKindOfMessageIsSampled) {
         seen[sample.message.index()] = true;
     for (std::size_t i = 0; i + 1 < seen.size(); ++i) // all but Unknown
         EXPECT_TRUE(seen[i]) << "no sample of alternative " << i;
+}
+
+// The names a monitor offers in its command filter: one per kind of message, each the name it decodes to.
+TEST(McanRoundTrip, EveryKindOfMessageHasItsNameInTheList) {
+    const std::vector<std::string_view> names = messageNames();
+    ASSERT_EQ(names.size(), std::variant_size_v<Message>);
+    for (const Sample& sample : samples())
+        EXPECT_EQ(names[sample.message.index()], nameOf(sample.message));
+    EXPECT_EQ(names.back(), "mcan.unknown");
 }
 
 TEST(McanRoundTrip, EveryMessageDecodesToItselfAndItsBytes) {

@@ -86,7 +86,7 @@ TEST(BusMonitorModel, AStandardFrameIsShownAsForeign) {
     EXPECT_EQ(cell(model, 0, BusMonitorModel::MessageColumn), QStringLiteral("foreign"));
     EXPECT_EQ(cell(model, 0, BusMonitorModel::FrameColumn), QStringLiteral("123 2 01 02"));
     EXPECT_EQ(cell(model, 0, BusMonitorModel::DetailsColumn),
-              QStringLiteral("11-bit frame (no protocol of a CS2 bus)"));
+              QStringLiteral("11-bit frame (no protocol of a CS2/M-CAN bus)"));
 }
 
 TEST(BusMonitorModel, HistoryLimitDropsTheOldestInOneRemoval) {

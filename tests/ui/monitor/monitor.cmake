@@ -3,6 +3,7 @@
 target_sources(stellwerk-ui-tests PRIVATE
     monitor/BusMonitorBusesTest.cpp
     monitor/BusMonitorFilterTest.cpp
+    monitor/BusMonitorMcanTest.cpp
     monitor/BusMonitorReplayTest.cpp
     monitor/BusMonitorTest.cpp
     monitor/FrameDecoderPanelTest.cpp
