@@ -36,13 +36,17 @@ struct Parser {
         "Also put N simulated MS1 handhelds (M-CAN) on the station's bus, \"MS1 1\" to \"MS1 N\", "
         "which log in to the bus's M-CAN master and drive now and then (default 0, at most 31).",
         "N", "0"};
+    QCommandLineOption noHandheldMaster{
+        "no-handheld-master",
+        "The station is not the M-CAN master of MS1 handhelds (as on a Gleisbox bus): it answers a ping as a "
+        "Gleisbox, and a program on the bus (Stellwerk) may be their master."};
 
     Parser() {
         parser.setApplicationDescription(
             "A simulated Märklin Central Station 2 on UDP, TCP, HTTP and optionally CAN.");
         parser.addHelpOption();
         parser.addOptions({listen, udpPort, udpReplyHost, udpReplyPort, tcpPort, httpPort, can, layout,
-                           gleisbox, noTrains, tick, ms1});
+                           gleisbox, noTrains, tick, ms1, noHandheldMaster});
     }
 };
 
@@ -123,6 +127,7 @@ ParsedOptions parseSimOptions(const QStringList& arguments) {
     options.handhelds = handhelds;
     options.layoutDirectory = p.parser.value(p.layout);
     options.gleisbox = p.parser.isSet(p.gleisbox);
+    options.handheldMaster = !p.parser.isSet(p.noHandheldMaster);
     options.trains = !p.parser.isSet(p.noTrains);
     return {std::move(options), {}, false};
 }

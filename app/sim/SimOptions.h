@@ -21,7 +21,8 @@ struct SimOptions {
     bool gleisbox = false;
     bool trains = true;
     std::chrono::milliseconds tick{100};
-    int handhelds = 0; // simulated MS1s on the station's bus (--ms1)
+    int handhelds = 0;          // simulated MS1s on the station's bus (--ms1)
+    bool handheldMaster = true; // the station is the MS1s' M-CAN master (off: --no-handheld-master)
 };
 
 // The result of reading the command line: options, or a message for the user (and whether it is an error).

@@ -7,6 +7,7 @@
 #include "sim/SimulatedBus.h"
 #include "sim/SimulatedMs1.h"
 #include "sim/SimulatedStation.h"
+#include "sim/StationHandhelds.h"
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
 #include "sim/TrainMovement.h"
@@ -58,10 +59,12 @@ sim::TrainTrack trackFor(const simapp::SimOptions& options, const sim::StationLa
 }
 
 // Everything the running simulator owns, torn down in reverse order when the event loop ends. The bus
-// exists only with handhelds: without them the station is alone behind its server, as before.
+// exists with handhelds or with the station as their master: without either, the station is alone behind
+// its server.
 struct Simulator {
     std::unique_ptr<sim::SimulatedBus> bus;
     std::unique_ptr<sim::SimulatedStation> station;
+    std::unique_ptr<sim::StationHandhelds> master;
     std::vector<std::unique_ptr<sim::SimulatedMs1>> handhelds;
     std::unique_ptr<sim::StationServer> server;
     std::unique_ptr<sim::HttpConfigServer> http;
@@ -90,6 +93,10 @@ void reportHandheld(const sim::SimulatedMs1& ms1) {
 void addHandhelds(Simulator& simulator, const simapp::SimOptions& options) {
     simulator.bus = std::make_unique<sim::SimulatedBus>();
     simulator.bus->attach(*simulator.station);
+    if (options.handheldMaster) { // a CS2 answers the MS1s itself
+        simulator.master = std::make_unique<sim::StationHandhelds>(*simulator.station);
+        simulator.bus->attach(*simulator.master);
+    }
     for (int i = 0; i < options.handhelds; ++i) {
         sim::SimulatedMs1::Options handheld;
         handheld.identity.uid = FirstHandheldUid + std::uint32_t(i);
@@ -113,8 +120,9 @@ void plugInHandhelds(const Simulator& simulator) {
 bool start(Simulator& simulator, const simapp::SimOptions& options, sim::StationLayout layout) {
     sim::SimulatedStation::Options stationOptions;
     stationOptions.gleisbox = options.gleisbox;
+    stationOptions.handheldMaster = options.handheldMaster;
     simulator.station = std::make_unique<sim::SimulatedStation>(std::move(layout), stationOptions);
-    if (options.handhelds > 0)
+    if (options.handhelds > 0 || options.handheldMaster)
         addHandhelds(simulator, options);
     else
         simulator.server = std::make_unique<sim::StationServer>(*simulator.station, options.server);

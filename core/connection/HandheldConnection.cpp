@@ -20,11 +20,8 @@ HandheldConnection::HandheldConnection(buses::Bus& bus, const HandheldSettings& 
     master_ = std::make_unique<handhelds::HandheldMaster>(
         [&wire](const std::vector<can::CanFrame>& frames) { wire.sendBatch(frames); }, settings.master, this);
     master_->setBook(settings.book);
-    connect(&bus, &buses::Bus::framesSeen, master_.get(),
-            [this](const std::vector<can::CanFrame>& frames, bool outgoing) {
-                if (!outgoing)
-                    master_->receive(frames);
-            });
+    bus.subscribe(bus::Protocol::Mcan, master_.get(),
+                  [this](const std::vector<can::CanFrame>& frames) { master_->receive(frames); });
     applyRole();
 }
 

@@ -26,8 +26,9 @@ bool DeviceService::handle(const cs2::Message& m, Outbox& out) {
 }
 
 void DeviceService::ping(const cs2::Ping&, const cs2::Message& m, Outbox& out) {
-    out.respond(cs2::Ping{cs2::DeviceIdentity{identity_.uid, VersionMajor, VersionMinor, MasterType}},
-                m.prio);
+    out.respond(
+        cs2::Ping{cs2::DeviceIdentity{identity_.uid, VersionMajor, VersionMinor, identity_.deviceType}},
+        m.prio);
     if (identity_.gleisboxUid)
         out.respond(cs2::Ping{cs2::DeviceIdentity{*identity_.gleisboxUid, 1, 39, GleisboxType}}, m.prio);
 }

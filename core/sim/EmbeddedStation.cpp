@@ -3,7 +3,10 @@
 #include "cs2/Codec.h"
 #include "cs2/Request.h"
 #include "sim/HttpConfigServer.h"
+#include "sim/SimulatedBus.h"
+#include "sim/SimulatedMs1.h"
 #include "sim/SimulatedStation.h"
+#include "sim/StationHandhelds.h"
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
 #include "sim/TrainMovement.h"
@@ -49,7 +52,10 @@ EmbeddedStation::~EmbeddedStation() {
     trains_.reset();
     web_.reset();
     server_.reset();
+    handheld_.reset();
+    handhelds_.reset();
     station_.reset();
+    bus_.reset();
 }
 
 bool EmbeddedStation::start() {
@@ -71,11 +77,13 @@ bool EmbeddedStation::start() {
     // what it is now (Stop, Go or Halt) and never switches it for them, so a station whose power was
     // turned off stays off for a controller that comes back.
     settings.announcePowerToNewClients = true;
-    server_ = std::make_unique<StationServer>(*station_, settings);
+    putOnBus();
+    server_ = std::make_unique<StationServer>(*station_, *bus_, settings);
     if (!server_->listen()) {
         error_ = server_->errorString();
         return false;
     }
+    handheld_->plugIn();
     if (!startWebServer())
         return false;
     trains_ = std::make_unique<TrainMovement>(*station_, TrainTrack::demo());
@@ -83,6 +91,19 @@ bool EmbeddedStation::start() {
         QObject::connect(trains_.get(), &TrainMovement::occupantChanged, trains_.get(), report_);
     trains_->start();
     return true;
+}
+
+// The station, its master side for the MS1 handhelds and the demo's MS1 on one bus, as on a real CS2's.
+void EmbeddedStation::putOnBus() {
+    bus_ = std::make_unique<SimulatedBus>();
+    bus_->attach(*station_);
+    handhelds_ = std::make_unique<StationHandhelds>(*station_);
+    bus_->attach(*handhelds_);
+    SimulatedMs1::Options demo;
+    demo.identity.uid = DemoHandheld;
+    demo.identity.name = "Demo MS1";
+    handheld_ = std::make_unique<SimulatedMs1>(demo);
+    bus_->attach(*handheld_);
 }
 
 // The station's web server on a free loopback port: the files below /config/, the pictures below /icons/.

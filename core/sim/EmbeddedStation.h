@@ -10,7 +10,10 @@
 namespace stellwerk::sim {
 
 class HttpConfigServer;
+class SimulatedBus;
+class SimulatedMs1;
 class SimulatedStation;
+class StationHandhelds;
 class StationServer;
 class TrainMovement;
 
@@ -22,6 +25,8 @@ class EmbeddedStation final : public transport::LocalPeer {
 public:
     // The UID of an mfx decoder on the demo's track that is not registered yet, for trying discovery.
     static constexpr std::uint32_t NewMfxDecoder = 0x7a3c1e10;
+    // The UID of the demo's MS1 handheld.
+    static constexpr std::uint32_t DemoHandheld = 0x000204B3;
 
     // Makes a new embedded station for each connection that asks for the simulated one.
     static transport::LocalPeerFactory factory();
@@ -44,6 +49,10 @@ public:
     QString webAddress() const override;
 
     SimulatedStation* station() const { return station_.get(); }
+    // The demo's MS1 handheld on the station's bus (it logs in to the station, which is its master, and takes
+    // the first locomotive of its stack), and the station's master side.
+    SimulatedMs1* handheld() const { return handheld_.get(); }
+    StationHandhelds* handhelds() const { return handhelds_.get(); }
 
     // Which train is on which contact, as the simulation moves them (locId 0: none any more). A real
     // station cannot say this; the GUI program shows the demo's trains on its plan with it. Set before
@@ -53,9 +62,13 @@ public:
     void reportOccupants(OccupantReport report) { report_ = std::move(report); }
 
 private:
+    void putOnBus();
     bool startWebServer();
 
+    std::unique_ptr<SimulatedBus> bus_;
     std::unique_ptr<SimulatedStation> station_;
+    std::unique_ptr<StationHandhelds> handhelds_;
+    std::unique_ptr<SimulatedMs1> handheld_;
     std::unique_ptr<StationServer> server_;
     std::unique_ptr<HttpConfigServer> web_;
     std::unique_ptr<TrainMovement> trains_;

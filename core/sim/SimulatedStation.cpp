@@ -22,6 +22,7 @@ StationIdentity identityFrom(const SimulatedStation::Options& options) {
     if (options.gleisbox)
         identity.gleisboxUid = options.gleisboxUid;
     identity.hash = options.hash ? options.hash : cs2::hashFromUid(options.uid);
+    identity.deviceType = options.handheldMaster ? DeviceService::MasterType : DeviceService::GleisboxType;
     return identity;
 }
 

@@ -31,6 +31,9 @@ public:
         Power power = Power::Stopped;           // track power at start (a CS2 starts in STOP)
         // mfx decoders on the track that no station registered yet: discovery finds them (UIDs).
         std::vector<std::uint32_t> newMfxDecoders{};
+        // The M-CAN master of the MS1 handhelds on its bus, as a real CS2 is (StationHandhelds); false: it
+        // answers a ping as a Gleisbox, which is no master, so that another program may be theirs.
+        bool handheldMaster = true;
     };
 
     explicit SimulatedStation(StationLayout layout, QObject* parent = nullptr);

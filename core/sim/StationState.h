@@ -53,6 +53,9 @@ struct StationIdentity {
     std::uint32_t uid = 0;
     std::optional<std::uint32_t> gleisboxUid;
     std::uint16_t hash = 0;
+    // What it answers a ping as: a Central Station GUI (0xFFFF), the MS1s' M-CAN master; or, told not to be
+    // their master, a Gleisbox (0x0010), which is none.
+    std::uint16_t deviceType = 0xFFFF;
 
     // The target of a system command means us: everybody (0), the station or its Gleisbox.
     bool addressedBy(std::uint32_t target) const {

@@ -31,10 +31,12 @@ target_sources(stellwerk-simulator PRIVATE
     sim/SimulatedMs1.h
     sim/SimulatedStation.cpp
     sim/SimulatedStation.h
+    sim/StationHandhelds.cpp
+    sim/StationHandhelds.h
     sim/StationLayout.cpp
     sim/StationState.cpp
     sim/StationStatusFiles.cpp
     sim/StatusChannels.cpp
     sim/SystemCommands.cpp
 )
-target_link_libraries(stellwerk-simulator PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-mcan stellwerk-transport Qt6::Core Qt6::Network)
+target_link_libraries(stellwerk-simulator PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-handhelds stellwerk-mcan stellwerk-transport Qt6::Core Qt6::Network)

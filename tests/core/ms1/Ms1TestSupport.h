@@ -7,8 +7,12 @@
 #include "mcan/Codec.h"
 #include "sim/SimulatedMs1.h"
 
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QEventLoop>
 #include <QObject>
 #include <QTest>
+#include <QTimer>
 #include <algorithm>
 #include <functional>
 #include <gtest/gtest.h>
@@ -30,8 +34,19 @@ using can::CanFrame;
 // Long enough for a loaded two-core machine; waits end as soon as the condition holds.
 inline constexpr int WaitMs = 5000;
 
+// Runs the event loop until the condition holds, handling each event as it comes (QTest::qWaitFor sleeps
+// 10 ms between passes, and a conversation on the simulated bus takes one turn of the loop per exchange).
 inline bool waitFor(const std::function<bool()>& condition, int timeoutMs = WaitMs) {
-    return QTest::qWaitFor(condition, timeoutMs);
+    QElapsedTimer clock;
+    clock.start();
+    QTimer tick;
+    tick.start(10);
+    while (!condition()) {
+        if (clock.elapsed() >= timeoutMs)
+            return condition();
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+    }
+    return true;
 }
 
 // "1C00007E 0" or "180009AB 4 80 02 00 00": identifier, DLC, data, as the notes print them.

@@ -58,6 +58,7 @@ TEST(SimProgram, HelpListsTheMs1Option) {
     SimProgram sim({"--help"});
     EXPECT_EQ(sim.exitCode(), 0);
     EXPECT_TRUE(sim.output().contains("--ms1 <N>")) << sim.output().toStdString();
+    EXPECT_TRUE(sim.output().contains("--no-handheld-master")) << sim.output().toStdString();
 }
 
 TEST(SimProgram, MoreHandheldsThanLoginsAtOnceAreRefused) {
@@ -68,8 +69,9 @@ TEST(SimProgram, MoreHandheldsThanLoginsAtOnceAreRefused) {
 
 // The handhelds start before anyone listens; they try again after the login wait (5 s), share the merged
 // frames of their first three UID bytes, and the second retries once more after losing stage 3.
+// Told not to be their master (as on a Gleisbox's bus), the station leaves them to a master over TCP.
 TEST(SimProgram, TwoHandheldsLogInToAMasterOverTcp) {
-    SimProgram sim(QStringList{"--ms1", "2"} + Quiet);
+    SimProgram sim(QStringList{"--ms1", "2", "--no-handheld-master"} + Quiet);
     const std::uint16_t port = sim.tcpPort();
     ASSERT_NE(port, 0) << sim.output().toStdString();
     QTcpSocket socket;
@@ -92,6 +94,15 @@ TEST(SimProgram, TwoHandheldsLogInToAMasterOverTcp) {
     EXPECT_TRUE(sim.printed("MS1 2: logged in as node 45")) << sim.output().toStdString();
     EXPECT_EQ(master.nodeOf(0x000204B3), 43);
     EXPECT_EQ(master.nodeOf(0x000204B4), 45);
+}
+
+// By default the simulated CS2 is their master, as a real one is: they log in to it with nobody connected.
+TEST(SimProgram, TwoHandheldsLogInToTheStationItself) {
+    SimProgram sim(QStringList{"--ms1", "2"} + Quiet);
+    ASSERT_NE(sim.tcpPort(), 0) << sim.output().toStdString();
+    EXPECT_TRUE(sim.printed("MS1 1: logged in as node 43")) << sim.output().toStdString();
+    EXPECT_TRUE(sim.printed("MS1 2: logged in as node 45")) << sim.output().toStdString();
+    EXPECT_TRUE(sim.printed("MS1 1: drives ")) << sim.output().toStdString();
 }
 
 } // namespace

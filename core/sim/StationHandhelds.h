@@ -1,0 +1,54 @@
+#pragma once
+
+#include "can/CanFrame.h"
+#include "handhelds/HandheldBook.h"
+#include "handhelds/HandheldMaster.h"
+#include "handhelds/HandheldRailway.h"
+
+#include <QObject>
+#include <memory>
+#include <vector>
+
+namespace stellwerk::sim {
+
+class SimulatedStation;
+
+// The simulated CS2 as the M-CAN master of the MS1 handhelds on its bus, as a real CS2 is: a peer on the
+// simulated bus that answers the handhelds with Stellwerk's master, and carries out what they do inside the
+// station, as its own commands; what the station then reports on the bus (theirs, and other controllers'
+// changes) reaches the handhelds that show it. A SimulatedBus peer: receive() and framesEmitted.
+class StationHandhelds final : public QObject, private handhelds::HandheldRailway {
+    Q_OBJECT
+    Q_DISABLE_COPY_MOVE(StationHandhelds)
+
+public:
+    explicit StationHandhelds(SimulatedStation& station, handhelds::MasterSettings settings = {},
+                              QObject* parent = nullptr);
+    ~StationHandhelds() override;
+
+    // A frame on the bus: M-CAN goes to the master; the station's CS2 reports tell it what changed.
+    void receive(const can::CanFrame& frame);
+    const handhelds::HandheldMaster& master() const { return *master_; }
+    handhelds::HandheldMaster& master() { return *master_; }
+
+signals:
+    void framesEmitted(const std::vector<stellwerk::can::CanFrame>& frames);
+
+private:
+    std::vector<handhelds::HandheldLoco> locomotives() const override;
+    std::optional<handhelds::LocoDrive> drive(std::uint32_t locId) const override;
+    std::optional<bool> powerOn() const override;
+    void setSpeed(std::uint32_t locId, int speed) override;
+    void setDirection(std::uint32_t locId, bool forward) override;
+    void setFunction(std::uint32_t locId, int function, bool on) override;
+    void setPower(bool on) override;
+    void command(can::CanFrame frame);
+    void observe(const can::CanFrame& frame);
+
+    SimulatedStation& station_;
+    handhelds::MemoryHandheldBook book_;
+    std::unique_ptr<handhelds::HandheldMaster> master_;
+    std::uint16_t hash_;
+};
+
+} // namespace stellwerk::sim
