@@ -96,16 +96,26 @@ bool HandheldMaster::spokeAsMaster(const mcan::Message& message, const can::CanF
            !std::holds_alternative<mcan::Unknown>(message);
 }
 
+// Stellwerk stops being the master: its handhelds' locomotives are free, and it goes on showing the
+// handhelds as a watcher.
+void HandheldMaster::endSessions() {
+    const Clock::time_point now = Clock::now();
+    for (auto& [node, live] : sessions_) {
+        live.session->releaseAll();
+        watcher_.adopt(live.session->handheld(), now);
+    }
+    sessions_.clear();
+    holders_.clear();
+    afterAnswer_.clear();
+}
+
 void HandheldMaster::otherMasterSpoke(const can::CanFrame& frame) {
     if (otherMaster_)
         return;
     otherMaster_ = true;
-    otherMasterNode_ = std::uint8_t(frame.id & 0x7F);
-    for (auto& [node, live] : sessions_)
-        live.session->releaseAll();
-    sessions_.clear();
-    holders_.clear();
-    afterAnswer_.clear();
+    // A session frame names the master's node; a login or flash frame is on node 126 or 127 (not known).
+    otherMasterNode_ = mcan::layoutOf(frame.id) == mcan::Layout::Session ? std::uint8_t(frame.id & 0x7F) : 0;
+    endSessions();
     tell({HandheldEvent::Kind::Watching, 0, {}, 0, int(Watching::AnotherMaster), otherMasterNode_});
     emit handheldsChanged();
     emit masterChanged(false); // also when it was only waiting: the reason to watch changed
@@ -250,11 +260,7 @@ void HandheldMaster::setActive(bool active) {
     const bool wasMaster = isMaster();
     active_ = active;
     if (!active_) {
-        for (auto& [node, live] : sessions_)
-            live.session->releaseAll();
-        sessions_.clear();
-        holders_.clear();
-        afterAnswer_.clear();
+        endSessions();
         emit handheldsChanged();
     }
     if (wasMaster != isMaster())
@@ -272,6 +278,8 @@ void HandheldMaster::standDown(Watching why) {
 }
 
 Watching HandheldMaster::watching() const {
+    if (!active_ && why_ == Watching::CentralStation)
+        return Watching::CentralStation; // the master that spoke is the Central Station's
     if (otherMaster_)
         return Watching::AnotherMaster;
     if (!active_)

@@ -136,6 +136,7 @@ private:
     bool isEcho(const can::CanFrame& frame);
     bool spokeAsMaster(const mcan::Message& message, const can::CanFrame& frame) const;
     void otherMasterSpoke(const can::CanFrame& frame);
+    void endSessions();
     void send(const std::vector<mcan::Message>& messages);
     void sendAfterAnswer(const std::vector<mcan::Message>& messages);
     void tick();

@@ -102,6 +102,14 @@ std::vector<Handheld> HandheldWatcher::handhelds() const {
     return list;
 }
 
+void HandheldWatcher::adopt(Handheld handheld, Clock::time_point now) {
+    handheld.ours = false;
+    handheld.loco.reset(); // its master decides now; the name it shows stays until it changes
+    Watched& watched = watched_[handheld.slaveNode];
+    watched.handheld = std::move(handheld);
+    watched.lastHeard = now;
+}
+
 void HandheldWatcher::clear() {
     watched_.clear();
     roles_ = mcan::HandleRoles();

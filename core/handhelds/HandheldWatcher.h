@@ -25,6 +25,8 @@ public:
     // Marks handhelds silent or offline that stopped polling; true when something shown changed.
     bool tick(Clock::time_point now);
     std::vector<Handheld> handhelds() const;
+    // A handheld that was logged in at Stellwerk, watched from now on (Stellwerk stood down as its master).
+    void adopt(Handheld handheld, Clock::time_point now);
     void clear();
 
 private:

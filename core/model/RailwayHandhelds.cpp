@@ -29,6 +29,9 @@ RailwayHandhelds::RailwayHandhelds(Railway& railway, handhelds::HandheldMaster& 
         for (const quint32 id : ids)
             master_.locoChanged(id);
     });
+    // A handheld's intent the station did not confirm: it shows the locomotive as the station has it again.
+    connect(&railway_, &Railway::locomotiveCommandFailed, this,
+            [this](quint32 loco) { master_.locoChanged(loco); });
     connect(&railway_, &Railway::powerChanged, this, [this] { master_.powerChanged(); });
     connect(&railway_, &Railway::stateReportedChanged, this, [this] { master_.powerChanged(); });
     master_.setRailway(this);

@@ -297,7 +297,7 @@ TEST(HandheldMaster, AnotherMasterMakesItFallSilentAndOnlyWatch) {
     ASSERT_EQ(master.count(), 1);
     EXPECT_FALSE(master.at(0).at(0).toBool());
     EXPECT_EQ(table.master.watching(), handhelds::Watching::AnotherMaster);
-    EXPECT_EQ(table.master.otherMasterNode(), mcan::LoginNode);
+    EXPECT_EQ(table.master.otherMasterNode(), 0) << "a login reply does not say the master's node";
     // Its handheld logs in there: Stellwerk says nothing, and shows it.
     table.sent.clear();
     table.tell(mcan::LoginRequest{0, 0x00, 0});
@@ -308,6 +308,29 @@ TEST(HandheldMaster, AnotherMasterMakesItFallSilentAndOnlyWatch) {
     ASSERT_EQ(shown.size(), 1u);
     EXPECT_FALSE(shown[0].ours);
     EXPECT_EQ(shown[0].state, HandheldState::Online);
+}
+
+TEST(HandheldMaster, ItsOwnHandheldsStayShownAsWatchedWhenAnotherMasterSpeaks) {
+    MasterOnTable table;
+    twoLocos(table);
+    ScriptedMs1 ms1(table, 0x000204B3);
+    ASSERT_TRUE(ms1.logIn());
+    ms1.upgrade();
+    table.tell(mcan::PollAnswer{
+        {mcan::prio::Master, 1, 44}, 0, 44, 0x43533201}); // a master on node 44 answers a poll
+    EXPECT_EQ(table.master.watching(), handhelds::Watching::AnotherMaster);
+    EXPECT_EQ(table.master.otherMasterNode(), 44) << "a session frame names the master's node";
+    const auto shown = table.master.handhelds();
+    ASSERT_EQ(shown.size(), 1u) << "the handheld it was the master of is still shown";
+    EXPECT_EQ(shown[0].uid, 0x000204B3u);
+    EXPECT_FALSE(shown[0].ours);
+}
+
+TEST(HandheldMaster, ACentralStationThatSpeaksIsNamedAsTheReasonToWatch) {
+    MasterOnTable table;
+    table.master.standDown(handhelds::Watching::CentralStation);
+    table.tell(mcan::LoginReply{0, 0x00, 5, {0x43, 0x53, 0x32, 0x01, 0x00, 0x01, 0x00, 0x01}});
+    EXPECT_EQ(table.master.watching(), handhelds::Watching::CentralStation);
 }
 
 TEST(HandheldMaster, ItsOwnFramesEchoedByAGatewayAreNotAnotherMaster) {
