@@ -1225,6 +1225,14 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>Tell it to stop sending; it stays in its boot loader</source>
         <translation>Es soll aufhören zu senden; es bleibt im Bootloader</translation>
     </message>
+    <message>
+        <source>Stellwerk only watches the handhelds: another master answers them.</source>
+        <translation>Stellwerk beobachtet die Handgeräte nur: ein anderer Master antwortet ihnen.</translation>
+    </message>
+    <message>
+        <source>Another master answers the handhelds on this bus: Stellwerk only watches them</source>
+        <translation>Ein anderer Master antwortet den Handgeräten auf diesem Bus: Stellwerk beobachtet sie nur</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::KeyList</name>

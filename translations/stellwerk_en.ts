@@ -1222,6 +1222,14 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>Tell it to stop sending; it stays in its boot loader</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Stellwerk only watches the handhelds: another master answers them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Another master answers the handhelds on this bus: Stellwerk only watches them</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::KeyList</name>

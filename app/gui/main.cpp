@@ -3,6 +3,7 @@
 
 #include "connect/StationUrlSettings.h"
 #include "connection/StationConnection.h"
+#include "handhelds/HandheldBook.h"
 #include "model/OccupantBook.h"
 #include "model/Railway.h"
 #include "monitor/FrameDecoderPanel.h"
@@ -191,6 +192,10 @@ int main(int argc, char* argv[]) {
     // connection (the book outlives the station).
     stellwerk::model::OccupantBook demoOccupants;
     connectionSettings.localStation = [&demoOccupants] { return embeddedStation(demoOccupants); };
+    // The MS1 handhelds' stacks and names, kept across runs in the program's settings.
+    stellwerk::handhelds::SettingsHandheldBook handheldBook(QCoreApplication::organizationName(),
+                                                            QCoreApplication::applicationName());
+    connectionSettings.handhelds.book = &handheldBook;
     StationConnection connection{std::move(connectionSettings)}; // outlives the railway and the window
     stellwerk::ui::RailwayBinding railways(connection);          // a railway model per session
     QObject::connect(

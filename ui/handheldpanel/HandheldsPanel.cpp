@@ -14,6 +14,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QSplitter>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -153,6 +154,8 @@ QString HandheldsPanel::roleText() const {
     case handhelds::Watching::CentralStation:
         return tr("Stellwerk only watches the handhelds: the Central Station is their master.");
     case handhelds::Watching::AnotherMaster:
+        if (m_master->otherMasterNode() == 0)
+            return tr("Stellwerk only watches the handhelds: another master answers them.");
         return tr("Stellwerk only watches the handhelds: another master (node %1) answers them.")
             .arg(m_master->otherMasterNode());
     case handhelds::Watching::Asked:
@@ -164,6 +167,7 @@ QString HandheldsPanel::roleText() const {
 
 void HandheldsPanel::updateRole() {
     m_role->setText(roleText());
+    updateMasterChoice();
     const handhelds::Handheld* flashing = inBootLoader(*m_model);
     m_bootLoader->setVisible(flashing != nullptr);
     m_silence->setVisible(flashing != nullptr && m_master && m_master->isMaster());
@@ -172,6 +176,21 @@ void HandheldsPanel::updateRole() {
             tr("The handheld %1 sits in its boot loader: only a CS1 or an ECoS can flash it back to life. "
                "Stellwerk never sends it there and never flashes it.")
                 .arg(flashing->uid, 8, 16, QLatin1Char('0')));
+}
+
+// While a Central Station or another master answers the handhelds, Stellwerk cannot be theirs: the choice
+// shows off and cannot be made; the person's own choice is kept for a bus without another master.
+void HandheldsPanel::updateMasterChoice() {
+    const handhelds::Watching why = m_master ? m_master->watching() : handhelds::Watching::No;
+    const bool otherMaster =
+        why == handhelds::Watching::CentralStation || why == handhelds::Watching::AnotherMaster;
+    const QSignalBlocker quiet(m_actAsMaster);
+    m_actAsMaster->setEnabled(!otherMaster);
+    m_actAsMaster->setChecked(!otherMaster && stellwerkSettings().value(ActAsMasterKey, true).toBool());
+    m_actAsMaster->setToolTip(
+        otherMaster ? tr("Another master answers the handhelds on this bus: Stellwerk only watches them")
+                    : tr("Answer MS1 handhelds on the station's bus, unless a Central Station or another "
+                         "master does; off: only watch them"));
 }
 
 void HandheldsPanel::updateDetails() {
@@ -206,9 +225,6 @@ void HandheldsPanel::changeEvent(QEvent* event) {
 
 void HandheldsPanel::retranslate() {
     m_actAsMaster->setText(tr("Act as master for MS1 handhelds"));
-    m_actAsMaster->setToolTip(
-        tr("Answer MS1 handhelds on the station's bus, unless a Central Station or another "
-           "master does; off: only watch them"));
     m_silence->setText(tr("Make it quiet"));
     m_silence->setToolTip(tr("Tell it to stop sending; it stays in its boot loader"));
     m_details->retranslate();

@@ -45,6 +45,7 @@ private:
     void attachMaster();
     void refresh();
     void updateRole();
+    void updateMasterChoice();
     void updateDetails();
     void updateChoices();
     void chooseRole(bool master);
