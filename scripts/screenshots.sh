@@ -29,6 +29,11 @@ LANG=de_DE.UTF-8 app --size 1920x1080 --screenshot "$shots/main-window-de-1920x1
 app --decode docs/examples/bus-session.log --panel frameDecoderPanel --screenshot "$shots/frame-decoder.png"
 app --panel statusPanel --screenshot "$shots/status-gauges.png"
 app --panel busMonitorPanel --screenshot "$shots/bus-monitor.png"
+# The Handhelds panel with the demo's MS1, at both sizes and in both languages.
+app --panel handheldsPanel --size 1366x768 --screenshot "$shots/handhelds.png"
+LANG=de_DE.UTF-8 app --panel handheldsPanel --size 1366x768 --screenshot "$shots/handhelds-de.png"
+app --panel handheldsPanel --size 1920x1080 --screenshot "$shots/handhelds-1920x1080.png"
+LANG=de_DE.UTF-8 app --panel handheldsPanel --size 1920x1080 --screenshot "$shots/handhelds-de-1920x1080.png"
 
 # The single panels, drawn offscreen by their widget tests; and the whole desk with the track power off and
 # with the station silent ("not reported"), at both sizes and in both languages (StationTrustTest).
