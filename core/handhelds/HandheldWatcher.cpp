@@ -57,7 +57,8 @@ bool HandheldWatcher::observeSlave(Watched& watched, const mcan::Message& messag
     return changed;
 }
 
-// What the master granted and how the locomotive the handheld shows is driven.
+// What the master granted, and how each locomotive of the handheld's stack runs: what it told the handheld
+// during the upgrade and since. The handheld shows the values of the one it took.
 bool HandheldWatcher::observeLoco(Watched& watched, const mcan::Message& message) {
     Handheld& handheld = watched.handheld;
     if (const auto* throttle = std::get_if<mcan::Throttle>(&message);
@@ -65,19 +66,31 @@ bool HandheldWatcher::observeLoco(Watched& watched, const mcan::Message& message
         const QString loco = QString::fromStdString(roles_.name(handheld.slaveNode, throttle->at.handle));
         handheld.locoRefused = throttle->state == 0xFFFF;
         handheld.locoName = throttle->state == 0x0008 ? loco : QString();
+        watched.taken = throttle->state == 0x0008 ? std::optional(throttle->at.handle) : std::nullopt;
+        showTaken(watched);
         return true;
     }
     const auto* value = std::get_if<mcan::FunctionValue>(&message);
     if (!value || roles_.role(handheld.slaveNode, value->at.handle) != mcan::HandleRole::Loco)
         return false;
+    LocoValues& loco = watched.locos[value->at.handle];
     if (value->function == 1) {
-        handheld.speed = value->value & 0x7F;
-        handheld.forward = (value->value & 0x80) == 0;
+        loco.speed = value->value & 0x7F;
+        loco.forward = (value->value & 0x80) == 0;
     } else if (value->function >= 2 && value->function < 34) {
         const std::uint32_t bit = 1u << (value->function - 2);
-        handheld.functions = value->value ? handheld.functions | bit : handheld.functions & ~bit;
+        loco.functions = value->value ? loco.functions | bit : loco.functions & ~bit;
     }
-    return true;
+    showTaken(watched);
+    return watched.taken == value->at.handle;
+}
+
+void HandheldWatcher::showTaken(Watched& watched) {
+    const auto found = watched.taken ? watched.locos.find(*watched.taken) : watched.locos.end();
+    const LocoValues values = found != watched.locos.end() ? found->second : LocoValues{};
+    watched.handheld.speed = values.speed;
+    watched.handheld.forward = values.forward;
+    watched.handheld.functions = values.functions;
 }
 
 bool HandheldWatcher::tick(Clock::time_point now) {

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <vector>
 
 namespace stellwerk::handhelds {
@@ -30,13 +31,22 @@ public:
     void clear();
 
 private:
+    // How a locomotive on a handheld's stack runs, as its master told it (speed 0..127, function bits).
+    struct LocoValues {
+        int speed = 0;
+        bool forward = true;
+        std::uint32_t functions = 0;
+    };
     struct Watched {
         Handheld handheld;
         Clock::time_point lastHeard;
+        std::map<std::uint16_t, LocoValues> locos; // by handle: every locomotive it asked about
+        std::optional<std::uint16_t> taken;        // the handle of the locomotive it drives
     };
 
     bool observeSlave(Watched& watched, const mcan::Message& message);
     bool observeLoco(Watched& watched, const mcan::Message& message);
+    static void showTaken(Watched& watched);
 
     std::chrono::milliseconds silentAfter_;
     mcan::HandleRoles roles_;

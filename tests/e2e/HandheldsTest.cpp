@@ -124,11 +124,19 @@ TEST_P(HandheldOverWire, WithTheStationAsMasterStellwerkWatchesAndShowsTheHandhe
     app.connection.connectTo(station.url());
     ASSERT_TRUE(app.ready());
     ASSERT_TRUE(waitFor([&] { return app.master().watching() == Watching::CentralStation; }));
+    const std::uint32_t running = station.station.layout().locomotives().locomotives.front().uid;
+    station.bus.putFromOutside(
+        {cs2::encode(cs2::Message{0, false, 0x2F11, cs2::LocoSpeed{cs2::LocId(running), 500}})});
+    ASSERT_TRUE(waitFor(
+        [&] { return station.station.loco(running) && station.station.loco(running)->speed == 500; }));
 
     station.first.plugIn();
     ASSERT_TRUE(drivesFirstLoco(station.first));
     ASSERT_TRUE(waitFor([&] { return app.shows(FirstMs1, HandheldState::Online); }));
     EXPECT_FALSE(app.handheld(FirstMs1)->ours);
+    EXPECT_EQ(station.first.shownLoco()->speed, 64) << "it took a running locomotive: 500 of 1000 is step 64";
+    EXPECT_TRUE(waitFor([&] { return app.handheld(FirstMs1)->speed == 64; }))
+        << "the watcher shows the speed its master told it for the locomotive it took";
     ASSERT_TRUE(station.first.setSpeed(32, SimulatedMs1::Direction::Forward));
     ASSERT_TRUE(waitFor([&] { return app.handheld(FirstMs1)->speed == 32; }));
     ASSERT_TRUE(waitFor([&] { return !app.handheld(FirstMs1)->locoName.isEmpty(); }))
