@@ -100,6 +100,8 @@ public:
     // The railway's changes, told by whoever implements HandheldRailway.
     void locoChanged(std::uint32_t locId);
     void powerChanged();
+    // The railway reports a short circuit (an overload): every handheld shows it until the power is on again.
+    void shortCircuitReported();
     void locomotivesChanged();
 
 signals:
@@ -119,6 +121,7 @@ private:
     const HandheldLoco* loco(std::uint32_t locId) const override;
     LocoDrive drive(std::uint32_t locId) const override;
     bool stopped() const override;
+    bool shortCircuit() const override { return shortCircuit_; }
     bool take(SlaveSession& session, std::uint32_t locId) override;
     void release(SlaveSession& session, std::uint32_t locId) override;
     bool heldByOther(const SlaveSession& session, std::uint32_t locId) const override;
@@ -163,6 +166,7 @@ private:
     std::deque<std::pair<can::CanFrame, Clock::time_point>> sent_; // our own frames, to know their echoes
     bool active_ = true;
     bool otherMaster_ = false;
+    bool shortCircuit_ = false;   // reported since the power was last on
     Watching why_ = Watching::No; // why it is not active (when active_ is false)
     std::uint8_t otherMasterNode_ = 0;
     MasterCounters counters_;

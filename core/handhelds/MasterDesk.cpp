@@ -98,8 +98,9 @@ void HandheldMaster::stopKey(SlaveSession& session, bool stop) {
           session.handheld().name});
     if (railway_)
         railway_->setPower(!stop);
+    shortCircuit_ = shortCircuit_ && stop;
     for (auto& [node, live] : sessions_) // every handheld shows it at once (7.4)
-        sendAfterAnswer(live.session->status(stop, false));
+        sendAfterAnswer(live.session->status(stop, shortCircuit_));
 }
 
 void HandheldMaster::changed(SlaveSession& session) {
@@ -119,8 +120,15 @@ void HandheldMaster::locoChanged(std::uint32_t locId) {
 }
 
 void HandheldMaster::powerChanged() {
+    shortCircuit_ = shortCircuit_ && stopped(); // the power back on ends it
     for (auto& [node, live] : sessions_)
-        send(live.session->status(stopped(), false));
+        send(live.session->status(stopped(), shortCircuit_));
+}
+
+void HandheldMaster::shortCircuitReported() {
+    shortCircuit_ = true;
+    for (auto& [node, live] : sessions_)
+        send(live.session->status(stopped(), true));
 }
 
 void HandheldMaster::locomotivesChanged() {

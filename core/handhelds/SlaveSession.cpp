@@ -168,7 +168,8 @@ std::vector<mcan::Message> SlaveSession::answerSystemStatus(const mcan::Message&
             return listed ? std::vector<mcan::Message>{mcan::StatusType{from(SyHandle), query->index,
                                                                         Types[query->index - 1]}}
                           : std::vector<mcan::Message>{mcan::StatusListEnd{from(SyHandle), query->index}};
-        const std::uint8_t value = query->index == 1 && host_.stopped() ? 1 : 0;
+        const bool on = (query->index == 1 && host_.stopped()) || (query->index == 2 && host_.shortCircuit());
+        const std::uint8_t value = on ? 1 : 0;
         return {mcan::StatusValue{from(SyHandle, mcan::prio::Status), query->index, value}};
     }
     if (const auto* change = as<mcan::StatusValue>(message); change && change->index == 1) {

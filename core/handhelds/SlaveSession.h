@@ -21,6 +21,7 @@ public:
     virtual const HandheldLoco* loco(std::uint32_t locId) const = 0;
     virtual LocoDrive drive(std::uint32_t locId) const = 0;
     virtual bool stopped() const = 0;
+    virtual bool shortCircuit() const = 0;
     // The handheld asks for a locomotive: true when it may drive it now.
     virtual bool take(SlaveSession& session, std::uint32_t locId) = 0;
     virtual void release(SlaveSession& session, std::uint32_t locId) = 0;

@@ -33,6 +33,7 @@ RailwayHandhelds::RailwayHandhelds(Railway& railway, handhelds::HandheldMaster& 
     connect(&railway_, &Railway::locomotiveCommandFailed, this,
             [this](quint32 loco) { master_.locoChanged(loco); });
     connect(&railway_, &Railway::powerChanged, this, [this] { master_.powerChanged(); });
+    connect(&railway_, &Railway::overloaded, this, [this] { master_.shortCircuitReported(); });
     connect(&railway_, &Railway::stateReportedChanged, this, [this] { master_.powerChanged(); });
     master_.setRailway(this);
 }

@@ -79,6 +79,8 @@ void StationHandhelds::observe(const can::CanFrame& frame) {
             else if constexpr (std::is_same_v<T, cs2::SystemStop> || std::is_same_v<T, cs2::SystemGo> ||
                                std::is_same_v<T, cs2::SystemHalt>)
                 master_->powerChanged();
+            else if constexpr (std::is_same_v<T, cs2::Overload>)
+                master_->shortCircuitReported();
         },
         result.value().body);
 }

@@ -245,6 +245,34 @@ TEST(HandheldMaster, ThePowerStateOfTheStationReachesEveryHandheldAndUnknownPowe
     EXPECT_EQ(asked.at(0).value, 1);
 }
 
+TEST(HandheldMaster, AShortCircuitReachesEveryHandheldUntilThePowerIsOnAgain) {
+    MasterOnTable table;
+    twoLocos(table);
+    ScriptedMs1 ms1(table, 0x00000001);
+    ASSERT_TRUE(ms1.logIn());
+    ms1.upgrade();
+    table.railway.power = false; // the station switched the track off on the overload
+    table.sent.clear();
+    table.master.shortCircuitReported();
+    auto status = only<mcan::StatusValue>(decoded(table.sent, mcan::HandleRole::SystemStatus));
+    ASSERT_EQ(status.size(), 2u);
+    EXPECT_EQ(status[0].index, 1);
+    EXPECT_EQ(status[0].value, 1) << "stopped";
+    EXPECT_EQ(status[1].index, 2);
+    EXPECT_EQ(status[1].value, 1) << "short circuit";
+    const auto asked = only<mcan::StatusValue>(
+        decoded(table.tell(mcan::StatusQuery{ms1.at(3), 2, false}), mcan::HandleRole::SystemStatus));
+    EXPECT_EQ(asked.at(0).value, 1) << "a handheld that asks is told too";
+
+    table.railway.power = true; // Go from anywhere
+    table.sent.clear();
+    table.master.powerChanged();
+    status = only<mcan::StatusValue>(decoded(table.sent, mcan::HandleRole::SystemStatus));
+    ASSERT_EQ(status.size(), 2u);
+    EXPECT_EQ(status[0].value, 0);
+    EXPECT_EQ(status[1].value, 0) << "the power back on ends the short circuit";
+}
+
 TEST(HandheldMaster, ASilentHandheldIsPolledThenDroppedAndItsLocomotiveFreed) {
     handhelds::MasterSettings settings;
     settings.silentAfter = std::chrono::milliseconds(150);

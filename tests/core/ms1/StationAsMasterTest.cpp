@@ -129,6 +129,18 @@ TEST_F(StationAsMaster, StopAndGoKeysSwitchTheStationsTrackPowerAndTheMs1ShowsIt
     EXPECT_TRUE(waitFor([&] { return !ms1.memory().stopped; })) << "Go from elsewhere lifts the MS1's stop";
 }
 
+TEST_F(StationAsMaster, AnOverloadShowsAsAShortCircuitOnTheMs1UntilGo) {
+    driveFirstLoco();
+    bus.putFromOutside({cs2::encode(cs2::request(cs2::SystemGo{0}))});
+    ASSERT_TRUE(waitFor([&] { return station.power() == SimulatedStation::Power::Running; }));
+    station.setTrackLoad(100000); // far above the current limit: the station reports an overload
+    ASSERT_TRUE(waitFor([&] { return ms1.memory().shortCircuit; })) << "the MS1 shows the short circuit";
+    EXPECT_TRUE(ms1.memory().stopped);
+    station.setTrackLoad(0);
+    ASSERT_TRUE(ms1.pressGo());
+    ASSERT_TRUE(waitFor([&] { return !ms1.memory().shortCircuit && !ms1.memory().stopped; }));
+}
+
 TEST_F(StationAsMaster, AnMs1PulledOutIsDroppedAndLogsInAgainWhenPluggedBackIn) {
     driveFirstLoco();
     ms1.unplug();
