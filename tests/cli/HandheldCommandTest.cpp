@@ -14,6 +14,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTimer>
+#include <csignal>
 #include <gtest/gtest.h>
 #include <memory>
 #include <set>
@@ -138,6 +139,25 @@ TEST_F(HandheldCommandTest, AnUnknownArgumentIsRefusedWithTheChoices) {
               std::string::npos)
         << result.err;
     EXPECT_TRUE(result.out.empty());
+}
+
+// Ctrl+C ends it with 0; the railway stays as the handheld left it (nothing is sent on the way out).
+TEST_F(HandheldCommandTest, CtrlCEndsItCleanlyAndLeavesTheRailwayAsItWas) {
+    QTimer::singleShot(500, &ms1, [this] { ms1.plugIn(); });
+    QTimer watch; // once the handheld's speed reached the station, a person presses Ctrl+C
+    watch.start(50);
+    QObject::connect(&watch, &QTimer::timeout, &ms1, [this, &watch] {
+        if (station.loco(firstLoco()) && station.loco(firstLoco())->speed == 504) {
+            watch.stop();
+            std::raise(SIGINT);
+        }
+    });
+    const Outcome result = run({"handhelds"});
+    EXPECT_EQ(result.status, 0) << result.err;
+    EXPECT_NE(result.out.find("speed 0x000204B3"), std::string::npos) << result.out;
+    ASSERT_NE(station.loco(firstLoco()), nullptr);
+    EXPECT_EQ(station.loco(firstLoco())->speed, 504) << "ending changed no locomotive";
+    EXPECT_EQ(station.power(), sim::SimulatedStation::Power::Stopped) << "ending switched nothing";
 }
 
 } // namespace
