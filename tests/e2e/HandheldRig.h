@@ -166,9 +166,9 @@ public:
 
     const model::Locomotive& loco(std::uint32_t id) const { return *railway->locomotive(id); }
 
+    std::vector<can::CanFrame> mcanSent; // first: the railway's end still sends (the handhelds learn it)
     connection::StationConnection connection;
     std::unique_ptr<model::Railway> railway;
-    std::vector<can::CanFrame> mcanSent;
 
 private:
     static connection::ConnectionSettings settings(connection::HandheldRole role) {
