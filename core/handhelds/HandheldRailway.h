@@ -11,6 +11,20 @@ namespace stellwerk::handhelds {
 enum class LocoKind : std::uint8_t { None = 0, Electric = 1, Diesel = 2, Steam = 3 };
 enum class RailFormat : std::uint8_t { Unknown = 0, Mfx = 1, Dcc = 2, Motorola = 3 };
 
+// The kind lokomotive.cs2 keeps for the MS1 (`.symbol`: 0 electric, 1 diesel, 2 steam, 3 none).
+constexpr LocoKind kindOfSymbol(int symbol) {
+    switch (symbol) {
+    case 0:
+        return LocoKind::Electric;
+    case 1:
+        return LocoKind::Diesel;
+    case 2:
+        return LocoKind::Steam;
+    default:
+        return LocoKind::None;
+    }
+}
+
 // One function key of a locomotive as the handheld shows it.
 struct HandheldFunction {
     int index = 0; // f0 = 0

@@ -49,16 +49,7 @@ handhelds::LocoKind RailwayHandhelds::kindOf(std::uint32_t locId) const {
         return handhelds::LocoKind::None;
     for (const cs2config::Locomotive& record : file->locomotives)
         if (record.uid == locId)
-            switch (record.symbol) {
-            case 0:
-                return handhelds::LocoKind::Electric;
-            case 1:
-                return handhelds::LocoKind::Diesel;
-            case 2:
-                return handhelds::LocoKind::Steam;
-            default:
-                return handhelds::LocoKind::None;
-            }
+            return handhelds::kindOfSymbol(record.symbol);
     return handhelds::LocoKind::None;
 }
 

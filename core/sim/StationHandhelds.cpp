@@ -12,19 +12,6 @@ namespace {
 // The UID the station's handheld side commands the station with (its own hash, never the station's).
 constexpr std::uint32_t HandheldSideUid = 0x4D534D31; // "MSM1"
 
-handhelds::LocoKind kindOf(int symbol) {
-    switch (symbol) {
-    case 0:
-        return handhelds::LocoKind::Electric;
-    case 1:
-        return handhelds::LocoKind::Diesel;
-    case 2:
-        return handhelds::LocoKind::Steam;
-    default:
-        return handhelds::LocoKind::None;
-    }
-}
-
 handhelds::RailFormat formatOf(cs2config::LocomotiveDecoder decoder) {
     using Decoder = cs2config::LocomotiveDecoder;
     switch (decoder) {
@@ -91,7 +78,7 @@ std::vector<handhelds::HandheldLoco> StationHandhelds::locomotives() const {
         if (record.uid == 0)
             continue;
         handhelds::HandheldLoco loco{
-            record.uid, record.name, kindOf(record.symbol), formatOf(record.decoder), {}};
+            record.uid, record.name, handhelds::kindOfSymbol(record.symbol), formatOf(record.decoder), {}};
         for (const cs2config::Function& function : record.functions)
             if (function.number >= 0 && function.icon != 0)
                 loco.functions.push_back(
