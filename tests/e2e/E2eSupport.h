@@ -4,6 +4,7 @@
 // SimulatedStation behind its StationServer) over real loopback sockets or Qt's virtualcan bus. Each
 // rig picks free ports; each test process has its own virtual CAN bus.
 
+#include "EventLoopWait.h"
 #include "can/FrameText.h"
 #include "cs2/Header.h"
 #include "cs2/Messages.h"
@@ -45,21 +46,9 @@ using station::CommandResult;
 // Long enough for a loaded two-core machine; waits end as soon as the condition holds.
 inline constexpr int WaitMs = 5000;
 
-// Runs the event loop until the condition holds. Unlike QTest::qWaitFor, which sleeps 10 ms between
-// passes, it handles each event as it comes, so a conversation of several exchanges takes what the
-// sockets take. A ticking timer wakes it to look at the clock.
+// Runs the event loop until the condition holds, each event as it comes (support::runEventsUntil).
 inline bool waitFor(const std::function<bool()>& condition, int timeoutMs = WaitMs) {
-    QElapsedTimer clock;
-    clock.start();
-    QTimer tick;
-    tick.start(10);
-    while (!condition()) {
-        if (clock.elapsed() >= timeoutMs)
-            return condition();
-        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
-        QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete); // deleteLater()
-    }
-    return true;
+    return support::runEventsUntil(condition, timeoutMs);
 }
 
 // The loco of each decoder protocol in the demo layout, and its first MM accessory.

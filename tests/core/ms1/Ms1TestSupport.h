@@ -3,13 +3,11 @@
 // Helpers of the MS1 tests: frames printed as the documents print them, frames written the same way,
 // what a peer emitted, and waiting on the event loop.
 
+#include "EventLoopWait.h"
 #include "can/FrameText.h"
 #include "mcan/Codec.h"
 #include "sim/SimulatedMs1.h"
 
-#include <QCoreApplication>
-#include <QElapsedTimer>
-#include <QEventLoop>
 #include <QObject>
 #include <QTest>
 #include <QTimer>
@@ -34,19 +32,10 @@ using can::CanFrame;
 // Long enough for a loaded two-core machine; waits end as soon as the condition holds.
 inline constexpr int WaitMs = 5000;
 
-// Runs the event loop until the condition holds, handling each event as it comes (QTest::qWaitFor sleeps
-// 10 ms between passes, and a conversation on the simulated bus takes one turn of the loop per exchange).
+// Runs the event loop until the condition holds, each event as it comes: a conversation on the simulated
+// bus takes one turn of the loop per exchange (support::runEventsUntil).
 inline bool waitFor(const std::function<bool()>& condition, int timeoutMs = WaitMs) {
-    QElapsedTimer clock;
-    clock.start();
-    QTimer tick;
-    tick.start(10);
-    while (!condition()) {
-        if (clock.elapsed() >= timeoutMs)
-            return condition();
-        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
-    }
-    return true;
+    return support::runEventsUntil(condition, timeoutMs);
 }
 
 // "1C00007E 0" or "180009AB 4 80 02 00 00": identifier, DLC, data, as the notes print them.

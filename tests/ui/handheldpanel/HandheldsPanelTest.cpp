@@ -5,6 +5,7 @@
 #include "handheldpanel/HandheldsPanel.h"
 
 #include "EmbeddedStationSupport.h"
+#include "EventLoopWait.h"
 #include "handheldpanel/HandheldTableModel.h"
 #include "handhelds/HandheldBook.h"
 #include "handhelds/HandheldMaster.h"
@@ -17,9 +18,6 @@
 #include "support/StationTestSupport.h"
 
 #include <QCheckBox>
-#include <QCoreApplication>
-#include <QElapsedTimer>
-#include <QEventLoop>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
@@ -40,19 +38,10 @@ namespace {
 
 constexpr int WaitMs = 10000;
 
-// Runs the event loop until the condition holds, handling each event as it comes: a handheld's upgrade is a
-// few hundred exchanges, and QTest::qWaitFor sleeps 10 ms between its passes.
+// Runs the event loop until the condition holds, each event as it comes: a handheld's upgrade is a few
+// hundred exchanges, and QTest::qWaitFor sleeps 10 ms between its passes.
 bool waitUntil(const std::function<bool()>& condition, int timeoutMs = WaitMs) {
-    QElapsedTimer clock;
-    clock.start();
-    QTimer tick;
-    tick.start(10);
-    while (!condition()) {
-        if (clock.elapsed() >= timeoutMs)
-            return condition();
-        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
-    }
-    return true;
+    return support::runEventsUntil(condition, timeoutMs);
 }
 
 void clearSettings() {
