@@ -14,12 +14,14 @@ bool claimsCs2(const can::CanFrame& frame) {
     return frame.extended;
 }
 
-bool claims(Protocol protocol, const can::CanFrame& frame) {
+bool claims(Protocol protocol, const can::CanFrame& frame, const BusProfile& profile) {
     switch (protocol) {
     case Protocol::Cs2:
         return claimsCs2(frame);
     case Protocol::Mcan:
         return mcan::isMcan(frame); // notes B§6.2: no CS2 marker, and the bus-busy frame or prio bits set
+    case Protocol::Ro:
+        return profile.roFrame(frame).has_value(); // notes C4: the configured ids only
     case Protocol::Foreign:
         return false;
     }
@@ -34,6 +36,8 @@ std::string_view protocolName(Protocol protocol) {
         return "cs2";
     case Protocol::Mcan:
         return "mcan";
+    case Protocol::Ro:
+        return "ro";
     case Protocol::Foreign:
         return "foreign";
     }
@@ -46,9 +50,23 @@ bool BusProfile::expects(Protocol protocol) const {
     return std::find(protocols_.begin(), protocols_.end(), protocol) != protocols_.end();
 }
 
+BusProfile& BusProfile::addRoModule(const ro::FrameIds& ids) {
+    roModules_.push_back(ids);
+    if (!expects(Protocol::Ro))
+        protocols_.insert(protocols_.begin(), Protocol::Ro);
+    return *this;
+}
+
+std::optional<BusProfile::RoFrame> BusProfile::roFrame(const can::CanFrame& frame) const {
+    for (std::size_t module = 0; module < roModules_.size(); ++module)
+        if (const auto direction = ro::directionOf(frame, roModules_[module]))
+            return RoFrame{module, *direction};
+    return std::nullopt;
+}
+
 Protocol classify(const can::CanFrame& frame, const BusProfile& profile) {
     for (const Protocol protocol : profile.protocols())
-        if (claims(protocol, frame))
+        if (claims(protocol, frame, profile))
             return protocol;
     return Protocol::Foreign;
 }

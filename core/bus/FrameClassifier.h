@@ -1,21 +1,24 @@
 #pragma once
 
 #include "can/CanFrame.h"
+#include "ro/RoProfile.h"
 
 #include <cstddef>
 #include <initializer_list>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 namespace stellwerk::bus {
 
-// The protocols Stellwerk knows on a CAN bus: the CS2's, and M-CAN, the protocol of the MS1 handhelds
-// (which share the CS2's bus). Foreign: a frame no enabled protocol claims (another program's, a device
-// Stellwerk does not speak to, or garbage); it is counted and shown, never dropped. Foreign stays the last.
-enum class Protocol { Cs2, Mcan, Foreign };
+// The protocols Stellwerk knows on a CAN bus: the CS2's, M-CAN, the protocol of the MS1 handhelds
+// (which share the CS2's bus), and Ro, the RO relay/IO modules' (seed 004). Foreign: a frame no enabled
+// protocol claims (another program's, a device Stellwerk does not speak to, or garbage); it is counted and
+// shown, never dropped. Foreign stays the last.
+enum class Protocol { Cs2, Mcan, Ro, Foreign };
 inline constexpr std::size_t ProtocolCount = std::size_t(Protocol::Foreign) + 1;
 
-// The short name used in JSON and filters: "cs2", "mcan", "foreign".
+// The short name used in JSON and filters: "cs2", "mcan", "ro", "foreign".
 std::string_view protocolName(Protocol protocol);
 
 // What protocols are expected on one bus, in the order they are asked to claim a frame (the more
@@ -31,8 +34,21 @@ public:
     const std::vector<Protocol>& protocols() const { return protocols_; }
     bool expects(Protocol protocol) const;
 
+    // An RO module on this bus. RO frames carry nothing that tells them (notes B7, C4): only the ids
+    // configured here claim a frame for Ro, standard or extended, asked before every other protocol.
+    BusProfile& addRoModule(const ro::FrameIds& ids);
+    const std::vector<ro::FrameIds>& roModules() const { return roModules_; }
+
+    // Which configured RO module a frame travels to or from (its index in roModules()), and which way.
+    struct RoFrame {
+        std::size_t module = 0;
+        ro::Direction direction = ro::Direction::Request;
+    };
+    std::optional<RoFrame> roFrame(const can::CanFrame& frame) const;
+
 private:
     std::vector<Protocol> protocols_;
+    std::vector<ro::FrameIds> roModules_;
 };
 
 // Which protocol a frame belongs to on a bus with this profile: the first protocol of the profile that

@@ -47,7 +47,7 @@ public:
 
     const can::CanFrame& frame() const { return frame_; }
     Protocol protocol() const { return protocol_; }
-    // "cs2", "mcan", "foreign".
+    // "cs2", "mcan", "ro", "foreign".
     std::string_view protocolName() const { return bus::protocolName(protocol_); }
     // The message's name ("loco.speed"); a frame that did not decode has the name it would have had.
     std::string_view name() const { return reading_->name(); }
