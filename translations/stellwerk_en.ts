@@ -390,6 +390,10 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>RO</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Foreign</source>
         <translation type="unfinished"></translation>
     </message>
