@@ -1,5 +1,6 @@
 #include "DecodeCommand.h"
 
+#include "RoCli.h"
 #include "bus/BusContext.h"
 #include "can/FrameText.h"
 #include "cs2/JsonText.h"
@@ -14,7 +15,8 @@ namespace {
 // one run are one bus: what earlier frames revealed (an MS1's handles and names) names the later ones.
 class FramePrinter {
 public:
-    FramePrinter(bool json, std::ostream& out, std::ostream& err) : json_(json), out_(out), err_(err) {}
+    FramePrinter(bool json, bus::BusProfile profile, std::ostream& out, std::ostream& err)
+        : json_(json), profile_(std::move(profile)), out_(out), err_(err) {}
 
     bool print(const std::string& input, std::size_t lineNumber) {
         const auto parsed = can::parseFrame(input);
@@ -38,7 +40,7 @@ private:
     }
 
     bool json_;
-    bus::BusProfile profile_ = bus::BusProfile::centralStation();
+    bus::BusProfile profile_;
     bus::BusContext context_;
     std::ostream& out_;
     std::ostream& err_;
@@ -55,9 +57,18 @@ int runDecode(const std::vector<std::string>& arguments, std::istream& in, std::
               std::ostream& err) {
     bool json = false;
     std::vector<std::string> frames;
-    for (const auto& argument : arguments) {
+    bus::BusProfile profile = bus::BusProfile::centralStation();
+    for (std::size_t i = 0; i < arguments.size(); ++i) {
+        const std::string& argument = arguments[i];
         if (argument == "--json") {
             json = true;
+        } else if (argument == "--ro-module") {
+            const auto ids = parseRoModule(i + 1 < arguments.size() ? arguments[++i] : std::string());
+            if (!ids) {
+                err << "stellwerk-cli decode: " << ids.error() << '\n';
+                return 2;
+            }
+            profile.addRoModule(*ids);
         } else if (argument.size() > 2 && argument.rfind("--", 0) == 0) {
             err << "stellwerk-cli decode: unknown option " << argument << '\n';
             return 2;
@@ -66,7 +77,7 @@ int runDecode(const std::vector<std::string>& arguments, std::istream& in, std::
         }
     }
 
-    FramePrinter printer(json, out, err);
+    FramePrinter printer(json, std::move(profile), out, err);
     bool allGood = true;
     if (!frames.empty()) {
         for (std::size_t i = 0; i < frames.size(); ++i)

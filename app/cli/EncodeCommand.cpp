@@ -1,5 +1,6 @@
 #include "EncodeCommand.h"
 
+#include "RoCli.h"
 #include "can/FrameText.h"
 #include "cs2/Codec.h"
 #include "cs2/Fields.h"
@@ -18,6 +19,8 @@ void printNames(std::ostream& out) {
     for (auto name : cs2::messageNames())
         out << "  " << name << '\n';
     out << "Envelope keys for every message: prio=0..15 response=true|false hash=0x4711 (default) packet=N\n";
+    out << "RO modules: ro.write|ro.read width=bit|byte|word|long address=N job=N [value=N] [size=4|8] "
+           "[id=N [standard=true]]\n";
 }
 
 } // namespace
@@ -29,6 +32,9 @@ int runEncode(const std::vector<std::string>& arguments, std::ostream& out, std:
         printNames(arguments.empty() ? err : out);
         return arguments.empty() ? 2 : 0;
     }
+
+    if (arguments[0].starts_with("ro."))
+        return runRoEncode(arguments, out, err);
 
     std::vector<cs2::KeyValue> keyValues;
     bool hasHash = false;

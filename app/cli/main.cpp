@@ -21,6 +21,8 @@ void printUsage(std::ostream& out) {
            "one "
            "per line\n"
            "                on stdin; the lines of one run are read as one bus, in order)\n"
+           "                --ro-module req=ID,resp=ID[,std]: an RO module's frames on these ids "
+           "(repeatable)\n"
            "  stellwerk-cli encode <name> key=value ...   build a frame and print it in all notations\n"
            "  stellwerk-cli encode --list                 list the message names\n"
            "  stellwerk-cli stream decode [FILE] [-d DIR] store the config-data streams of a capture as "
