@@ -194,3 +194,21 @@ write("mcan_frame", "ecan-and-cs2", mcan_frames([
 write("mcan_frame", "hostile-name", mcan_frames(MCAN_LOGIN + MCAN_UPGRADE[:2] + [
     ("180020AB", "020000001B5B324A"), ("180020AB", "02000004FF07005C")]))
 write("mcan_frame", "dlc-above-eight", struct.pack(">IB", 0x0C0007AB, 12) + bytes(8))
+
+# ro_frame: RO module payloads (seed 004), 9-byte records: header (bit 0 answer id, bit 1 11-bit module,
+# bits 4..7 DLC) and 8 data bytes. The document's two requests (§3.3, §3.4), the notes' derived answers
+# (B4.4) and refusals.
+def ro(answer, standard, data_hex):
+    data = bytes.fromhex(data_hex)
+    return bytes([(len(data) << 4) | (2 if standard else 0) | (1 if answer else 0)]) + data + bytes(8 - len(data))
+
+
+write("ro_frame", "section-3-3-write-byte", ro(False, False, "121200340F000000"))
+write("ro_frame", "section-3-4-relays", ro(False, False, "1300003500200000") + ro(True, False, "01003500000000"))
+write("ro_frame", "derived-read-word", ro(False, True, "23000036") + ro(True, True, "01033600200000"))
+write("ro_frame", "derived-duplicate-and-invalid", ro(True, False, "FD35") + ro(True, False, "FE") +
+      ro(False, False, "3000003600000000"))
+write("ro_frame", "every-command", b"".join(ro(False, False, "%02X000001FF000000" % c)
+                                            for c in (0x11, 0x12, 0x13, 0x14, 0x21, 0x22, 0x23, 0x24)))
+write("ro_frame", "refused", ro(True, False, "0105340000000000") + ro(True, False, "FD35010203040506") +
+      ro(False, False, "12120034FF010000") + bytes([0xF0]) + bytes(8))

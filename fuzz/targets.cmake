@@ -10,6 +10,7 @@ set(STELLWERK_FUZZ_TARGETS
     status_data     # status-data configuration packets -> device, reading and config channels
     loco_picture    # a loco's .icon value -> picture file name; picture bytes -> PNG header check
     mcan_frame      # 13-byte M-CAN frames in bus order -> decode (every role), encode, FrameReport, HandleRoles
+    ro_frame        # RO module payloads (requests and answers, 11/29-bit) -> decode, encode, FrameReport, describe
 )
 
 file(GLOB STELLWERK_FUZZED_SOURCES CONFIGURE_DEPENDS
@@ -17,6 +18,7 @@ file(GLOB STELLWERK_FUZZED_SOURCES CONFIGURE_DEPENDS
     ${STELLWERK_ROOT}/core/bus/*.cpp
     ${STELLWERK_ROOT}/core/cs2/*.cpp
     ${STELLWERK_ROOT}/core/mcan/*.cpp
+    ${STELLWERK_ROOT}/core/ro/*.cpp
     ${STELLWERK_ROOT}/core/cs2config/*.cpp)
 list(APPEND STELLWERK_FUZZED_SOURCES
     ${STELLWERK_ROOT}/core/transport/FrameAssembler.cpp
@@ -24,5 +26,6 @@ list(APPEND STELLWERK_FUZZED_SOURCES
     ${STELLWERK_ROOT}/core/station/DeviceDescription.cpp
     ${STELLWERK_ROOT}/core/station/StatusDataPackets.cpp
     ${STELLWERK_ROOT}/app/cli/DecodeCommand.cpp
-    ${STELLWERK_ROOT}/app/cli/LocArgument.cpp)
+    ${STELLWERK_ROOT}/app/cli/LocArgument.cpp
+    ${STELLWERK_ROOT}/app/cli/RoCli.cpp)
 set(STELLWERK_FUZZED_INCLUDES ${STELLWERK_ROOT}/core ${STELLWERK_ROOT}/app/cli ${CMAKE_CURRENT_LIST_DIR})
