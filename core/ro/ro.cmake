@@ -4,6 +4,8 @@ stellwerk_core_library(ro PURE)
 target_sources(stellwerk-ro PRIVATE
     ro/Codec.cpp
     ro/Codec.h
+    ro/Exchange.cpp
+    ro/Exchange.h
     ro/FrameReport.cpp
     ro/FrameReport.h
     ro/Messages.cpp
