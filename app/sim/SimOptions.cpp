@@ -41,12 +41,23 @@ struct Parser {
         "The station is not the M-CAN master of MS1 handhelds (as on a Gleisbox bus): it answers a ping as a "
         "Gleisbox, and a program on the bus (Stellwerk) may be their master."};
 
+    QCommandLineOption ro{
+        "ro",
+        "Also put N simulated RO relay/IO modules on the station's bus: module n answers "
+        "requests on 0x01FE0000+n on 0x01FF0000+n (29-bit), 16 relays at 0x0000, 16 inputs at "
+        "0x0020, their change flags at 0x0022 (default 0).",
+        "N", "0"};
+    QCommandLineOption roLoseEvery{"ro-lose-every",
+                                   "Every Nth answer of each RO module is lost (default 0: none).", "N", "0"};
+    QCommandLineOption roDelay{"ro-delay", "RO modules answer this many milliseconds late (default 0).", "ms",
+                               "0"};
+
     Parser() {
         parser.setApplicationDescription(
             "A simulated Märklin Central Station 2 on UDP, TCP, HTTP and optionally CAN.");
         parser.addHelpOption();
         parser.addOptions({listen, udpPort, udpReplyHost, udpReplyPort, tcpPort, httpPort, can, layout,
-                           gleisbox, noTrains, tick, ms1, noHandheldMaster});
+                           gleisbox, noTrains, tick, ms1, noHandheldMaster, ro, roLoseEvery, roDelay});
     }
 };
 
@@ -54,6 +65,30 @@ std::optional<std::uint16_t> port(const QString& text) {
     bool ok = false;
     const uint value = text.toUInt(&ok);
     return ok && value <= 65535 ? std::optional<std::uint16_t>(std::uint16_t(value)) : std::nullopt;
+}
+
+// A whole number within [low, high] from an option, or why not.
+std::optional<int> numberIn(const QCommandLineParser& parser, const QCommandLineOption& option, int low,
+                            int high) {
+    bool ok = false;
+    const int value = parser.value(option).toInt(&ok);
+    return ok && value >= low && value <= high ? std::optional(value) : std::nullopt;
+}
+
+std::optional<QString> readRo(const Parser& p, SimOptions& options) {
+    const auto modules = numberIn(p.parser, p.ro, 0, MaximumRoModules);
+    const auto loseEvery = numberIn(p.parser, p.roLoseEvery, 0, 1000);
+    const auto delay = numberIn(p.parser, p.roDelay, 0, 10000);
+    if (!modules)
+        return "--ro: '" + p.parser.value(p.ro) + "' is not 0.." + QString::number(MaximumRoModules);
+    if (!loseEvery)
+        return "--ro-lose-every: '" + p.parser.value(p.roLoseEvery) + "' is not 0..1000";
+    if (!delay)
+        return "--ro-delay: '" + p.parser.value(p.roDelay) + "' is not 0..10000 milliseconds";
+    options.roModules = *modules;
+    options.roLoseEvery = *loseEvery;
+    options.roDelay = std::chrono::milliseconds(*delay);
+    return std::nullopt;
 }
 
 ParsedOptions failure(const QString& message) {
@@ -125,6 +160,8 @@ ParsedOptions parseSimOptions(const QStringList& arguments) {
         return failure("--ms1: '" + p.parser.value(p.ms1) + "' is not 0.." +
                        QString::number(MaximumHandhelds));
     options.handhelds = handhelds;
+    if (const auto problem = readRo(p, options))
+        return failure(*problem);
     options.layoutDirectory = p.parser.value(p.layout);
     options.gleisbox = p.parser.isSet(p.gleisbox);
     options.handheldMaster = !p.parser.isSet(p.noHandheldMaster);

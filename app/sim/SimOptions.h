@@ -13,6 +13,7 @@ namespace stellwerk::simapp {
 
 // Everything stellwerk-sim is told on its command line.
 inline constexpr int MaximumHandhelds = 31; // M-CAN logins that may run at once (document 6.2)
+inline constexpr int MaximumRoModules = 64; // far more than one bus polls at 10 Hz (docs/guide/ro-modules.md)
 
 struct SimOptions {
     sim::StationServerSettings server;
@@ -23,6 +24,9 @@ struct SimOptions {
     std::chrono::milliseconds tick{100};
     int handhelds = 0;          // simulated MS1s on the station's bus (--ms1)
     bool handheldMaster = true; // the station is the MS1s' M-CAN master (off: --no-handheld-master)
+    int roModules = 0;          // simulated RO relay/IO modules on the station's bus (--ro)
+    int roLoseEvery = 0;        // every Nth answer of each RO module lost (--ro-lose-every; 0: none)
+    std::chrono::milliseconds roDelay{0}; // RO answers this late (--ro-delay)
 };
 
 // The result of reading the command line: options, or a message for the user (and whether it is an error).

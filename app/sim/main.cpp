@@ -1,11 +1,13 @@
 // stellwerk-sim: the simulated CS2 as a process, for other programs (and Stellwerk itself) to talk to
-// over UDP, TCP, HTTP and optionally a CAN interface; with --ms1 N, MS1 handhelds share its bus.
+// over UDP, TCP, HTTP and optionally a CAN interface; with --ms1 N, MS1 handhelds share its bus, with --ro N,
+// RO relay/IO modules.
 
 #include "ShutdownSignal.h"
 #include "SimOptions.h"
 #include "sim/HttpConfigServer.h"
 #include "sim/SimulatedBus.h"
 #include "sim/SimulatedMs1.h"
+#include "sim/SimulatedRoModule.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationHandhelds.h"
 #include "sim/StationLayout.h"
@@ -15,6 +17,7 @@
 
 #include <QCoreApplication>
 #include <QTextStream>
+#include <QTimer>
 #include <memory>
 #include <optional>
 #include <string>
@@ -66,6 +69,8 @@ struct Simulator {
     std::unique_ptr<sim::SimulatedStation> station;
     std::unique_ptr<sim::StationHandhelds> master;
     std::vector<std::unique_ptr<sim::SimulatedMs1>> handhelds;
+    std::vector<std::unique_ptr<sim::SimulatedRoModule>> roModules;
+    std::unique_ptr<QTimer> roInputs; // an input of each RO module changes now and then
     std::unique_ptr<sim::StationServer> server;
     std::unique_ptr<sim::HttpConfigServer> http;
     std::unique_ptr<sim::TrainMovement> trains;
@@ -89,6 +94,34 @@ void reportHandheld(const sim::SimulatedMs1& ms1) {
                      [name] { out() << name << ": told to flash; in its boot loader now" << Qt::endl; });
 }
 
+// RO modules 1..N on the bus with the simulator profile; their relays are printed as requests switch them,
+// and every 2 s one of their inputs changes, so that a poller has something to see.
+void addRoModules(Simulator& simulator, const simapp::SimOptions& options) {
+    for (int n = 1; n <= options.roModules; ++n) {
+        auto& module = simulator.roModules.emplace_back(
+            std::make_unique<sim::SimulatedRoModule>(ro::RoProfile::simulator(std::uint16_t(n))));
+        module->setAnswerDelay(options.roDelay);
+        module->loseEveryAnswer(options.roLoseEvery);
+        simulator.bus->attach(*module);
+        QObject::connect(module.get(), &sim::SimulatedRoModule::relaysChanged, module.get(),
+                         [n](std::uint32_t relays) {
+                             out() << "RO module " << n << ": relays "
+                                   << QString::number(relays, 2).rightJustified(16, '0') << Qt::endl;
+                         });
+    }
+    if (simulator.roModules.empty())
+        return;
+    simulator.roInputs = std::make_unique<QTimer>();
+    QObject::connect(simulator.roInputs.get(), &QTimer::timeout, [&simulator, tick = 0]() mutable {
+        const int input = 1 + tick++ % 16;
+        for (const auto& module : simulator.roModules)
+            module->setInput(input, !module->input(input));
+    });
+    simulator.roInputs->start(2000);
+    out() << "RO modules: " << simulator.roModules.size()
+          << " on the bus (requests 0x01FE0001.., answers 0x01FF0001..)" << Qt::endl;
+}
+
 // The handhelds and the station on one bus, which the server puts on the network.
 void addHandhelds(Simulator& simulator, const simapp::SimOptions& options) {
     simulator.bus = std::make_unique<sim::SimulatedBus>();
@@ -106,6 +139,7 @@ void addHandhelds(Simulator& simulator, const simapp::SimOptions& options) {
         simulator.bus->attach(*ms1);
         reportHandheld(*ms1);
     }
+    addRoModules(simulator, options);
     simulator.server =
         std::make_unique<sim::StationServer>(*simulator.station, *simulator.bus, options.server);
 }
@@ -122,7 +156,7 @@ bool start(Simulator& simulator, const simapp::SimOptions& options, sim::Station
     stationOptions.gleisbox = options.gleisbox;
     stationOptions.handheldMaster = options.handheldMaster;
     simulator.station = std::make_unique<sim::SimulatedStation>(std::move(layout), stationOptions);
-    if (options.handhelds > 0 || options.handheldMaster)
+    if (options.handhelds > 0 || options.handheldMaster || options.roModules > 0)
         addHandhelds(simulator, options);
     else
         simulator.server = std::make_unique<sim::StationServer>(*simulator.station, options.server);

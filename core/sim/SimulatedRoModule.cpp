@@ -81,8 +81,9 @@ void SimulatedRoModule::clearChangeFlags(const ro::Request& read) {
 }
 
 void SimulatedRoModule::answer(const ro::Answer& result) {
-    if (answersToLose_ > 0) {
-        --answersToLose_;
+    ++answersMade_;
+    if (answersToLose_ > 0 || (loseEvery_ > 0 && answersMade_ % std::uint64_t(loseEvery_) == 0)) {
+        answersToLose_ = std::max(0, answersToLose_ - 1);
         return;
     }
     const can::CanFrame frame = profile_.answerFrame(result);
@@ -104,6 +105,11 @@ bool SimulatedRoModule::relay(int number) const {
 std::uint32_t SimulatedRoModule::relays() const {
     const ro::RegisterBlock& outputs = profile_.outputs;
     return outputs.count ? registers_.read(outputs.address, outputs.width).value_or(0) : 0;
+}
+
+bool SimulatedRoModule::input(int number) const {
+    const ro::RegisterBlock& inputs = profile_.inputs;
+    return inputs.count && (registers_.read(inputs.address, inputs.width).value_or(0) & bitOf(number));
 }
 
 void SimulatedRoModule::presetRelays(std::uint32_t relays) {

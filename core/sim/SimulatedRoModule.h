@@ -42,6 +42,7 @@ public:
     std::uint32_t relays() const;
     // The relays as someone left them before (not a request: not in writes()).
     void presetRelays(std::uint32_t relays);
+    bool input(int number) const;
     // Sets an input and, when it changed, its change flag (read-to-clear, 004 §2.1).
     void setInput(int number, bool on);
     const std::vector<Write>& writes() const { return writes_; }
@@ -54,6 +55,8 @@ public:
     void loseRequests(int count) { requestsToLose_ = count; }
     void loseAnswers(int count) { answersToLose_ = count; }
     void setAnswerDelay(std::chrono::milliseconds delay) { answerDelay_ = delay; }
+    // Every nth answer is lost (0: none), for stellwerk-sim.
+    void loseEveryAnswer(int n) { loseEvery_ = n; }
     void unplug() { plugged_ = false; }
     void plugIn() { plugged_ = true; }
     bool pluggedIn() const { return plugged_; }
@@ -82,6 +85,8 @@ private:
     std::optional<std::uint8_t> lastJob_;
     int requestsToLose_ = 0;
     int answersToLose_ = 0;
+    int loseEvery_ = 0;
+    std::uint64_t answersMade_ = 0;
     std::chrono::milliseconds answerDelay_{0};
     bool plugged_ = true;
     bool duplicateCarriesData_ = false;
