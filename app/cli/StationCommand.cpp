@@ -3,6 +3,7 @@
 #include "DeviceCommands.h"
 #include "DriveCommands.h"
 #include "HandheldCommand.h"
+#include "RoCommand.h"
 #include "StationClient.h"
 #include "TransferCommands.h"
 
@@ -21,6 +22,8 @@ ParsedJob parseCommand(const std::vector<std::string>& arguments, std::ostream& 
     if (auto job = parseTransferCommand(command, rest, out, err))
         return std::move(*job);
     if (auto job = parseHandheldCommand(command, rest, out, err))
+        return std::move(*job);
+    if (auto job = parseRoCommand(command, rest, out, err))
         return std::move(*job);
     return "unknown station command '" + command + "'";
 }
@@ -57,7 +60,15 @@ const char* stationUsage() {
            "event\n"
            "                                       (login, upgrade-done, loco-taken/released, speed, "
            "function,\n"
-           "                                       stop, go, silent, lost) until Ctrl-C or N seconds\n";
+           "                                       stop, go, silent, lost) until Ctrl-C or N seconds\n"
+           "    ro --module req=ID,resp=ID[,std] [--json] [--timeout MS] ACTION\n"
+           "                                       an RO relay/IO module on the bus (relays at 0x0000, "
+           "inputs\n"
+           "                                       at 0x0020 as in stellwerk-sim): read ADDRESS WIDTH, "
+           "write\n"
+           "                                       ADDRESS WIDTH VALUE, switch RELAY on|off, watch "
+           "[--seconds\n"
+           "                                       N]; exit 0 done, 1 no answer, 4 refused (0xFE)\n";
 }
 
 int runStation(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {

@@ -63,6 +63,7 @@ void RoModuleSession::start() {
     if (running_ || !problem().isEmpty())
         return;
     running_ = true;
+    stopped_ = false;
     if (profile_.outputs.count)
         enqueue(Purpose::ReadOutputs, readOf(profile_.outputs));
     poll();
@@ -71,6 +72,7 @@ void RoModuleSession::start() {
 
 void RoModuleSession::stop() {
     running_ = false;
+    stopped_ = true;
     pollTimer_.stop();
     answerTimer_.stop();
     queue_.clear();
@@ -137,7 +139,7 @@ bool RoModuleSession::queued(Purpose purpose) const {
 
 // One request in flight: the next one goes when the last one finished.
 void RoModuleSession::sendNext() {
-    if (current_ || queue_.empty() || !running_)
+    if (current_ || queue_.empty() || stopped_)
         return;
     current_ = queue_.front();
     queue_.pop_front();

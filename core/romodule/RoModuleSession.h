@@ -68,7 +68,8 @@ public:
     // relay the profile does not have. The change reaches outputs() only when the module confirmed it.
     bool setOutput(int number, bool on);
     bool switchAllOff();
-    // A register access of the register explorer; requestFinished tells how it went.
+    // A register access of the register explorer (also without start()); requestFinished tells how it
+    // went.
     RequestId read(std::uint16_t address, ro::Width width);
     RequestId write(std::uint16_t address, ro::Width width, std::uint32_t value);
 
@@ -124,7 +125,8 @@ private:
     ro::RoProfile profile_;
     SessionTiming timing_;
     State state_ = State::Starting;
-    bool running_ = false;
+    bool running_ = false; // started: relays read, inputs polled
+    bool stopped_ = false; // stop(): nothing more goes out
     std::deque<Job> queue_;
     std::optional<Job> current_;
     std::optional<ro::Exchange> exchange_;
