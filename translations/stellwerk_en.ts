@@ -390,6 +390,10 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>OpenRailCAN</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Foreign</source>
         <translation type="unfinished"></translation>
     </message>

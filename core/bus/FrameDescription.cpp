@@ -1,11 +1,13 @@
 #include "bus/FrameDescription.h"
 
 #include "bus/McanReading.h"
+#include "bus/OrcReading.h"
 #include "can/FrameText.h"
 #include "cs2/Fields.h"
 #include "cs2/FrameReport.h"
 #include "cs2/LocId.h"
 #include "mcan/Messages.h"
+#include "orc/Messages.h"
 
 #include <cctype>
 #include <charconv>
@@ -41,7 +43,8 @@ private:
 
 // "CS2", "CS2/M-CAN": the protocols a bus expects, as a person names them, in a fixed order; empty for none.
 std::string protocolTitles(const BusProfile& profile) {
-    static constexpr std::string_view titleOf[] = {"CS2", "M-CAN"}; // by Protocol, Foreign left out
+    static constexpr std::string_view titleOf[] = {"CS2", "M-CAN",
+                                                   "OpenRailCAN"}; // by Protocol, Foreign left out
     std::string titles;
     for (std::size_t protocol = 0; protocol < std::size(titleOf); ++protocol)
         if (profile.expects(Protocol(protocol)))
@@ -85,6 +88,8 @@ std::shared_ptr<const FrameReading> readingOf(const can::CanFrame& frame, Protoc
         return std::make_shared<const Cs2Reading>(frame);
     case Protocol::Mcan:
         return mcanReading(frame, context);
+    case Protocol::Orc:
+        return orcReading(frame);
     case Protocol::Foreign:
         break;
     }
@@ -132,7 +137,7 @@ std::string FrameDescription::frameText() const {
     return can::formatDocument(frame_);
 }
 
-// The CS2's names first, then M-CAN's, whatever order the profile asks them in.
+// The CS2's names first, then M-CAN's, then OpenRailCAN's, whatever order the profile asks them in.
 std::vector<std::string_view> messageNames(const BusProfile& profile) {
     std::vector<std::string_view> names;
     if (profile.expects(Protocol::Cs2))
@@ -140,6 +145,10 @@ std::vector<std::string_view> messageNames(const BusProfile& profile) {
     if (profile.expects(Protocol::Mcan)) {
         const std::vector<std::string_view> mcanNames = mcan::messageNames();
         names.insert(names.end(), mcanNames.begin(), mcanNames.end());
+    }
+    if (profile.expects(Protocol::Orc)) {
+        const std::vector<std::string_view> orcNames = orc::messageNames();
+        names.insert(names.end(), orcNames.begin(), orcNames.end());
     }
     return names;
 }

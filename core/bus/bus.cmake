@@ -12,5 +12,7 @@ target_sources(stellwerk-bus PRIVATE
     bus/Handheld.h
     bus/McanReading.cpp
     bus/McanReading.h
+    bus/OrcReading.cpp
+    bus/OrcReading.h
 )
-target_link_libraries(stellwerk-bus PUBLIC stellwerk-can PRIVATE stellwerk-cs2 stellwerk-mcan)
+target_link_libraries(stellwerk-bus PUBLIC stellwerk-can PRIVATE stellwerk-cs2 stellwerk-mcan stellwerk-orc)
