@@ -5,6 +5,7 @@
 #include "cs2/JsonText.h"
 
 #include <istream>
+#include <optional>
 #include <ostream>
 
 namespace stellwerk::cli {
@@ -16,6 +17,21 @@ class FramePrinter {
 public:
     FramePrinter(bool json, std::ostream& out, std::ostream& err) : json_(json), out_(out), err_(err) {}
 
+    // The bus the lines come from (`--protocol`); auto: a station's bus, where a frame that M-CAN cannot
+    // read but OpenRailCAN can is shown as OpenRailCAN (the two overlap, ORC notes O26).
+    bool chooseProtocol(const std::string& name) {
+        orcFallback_ = name == "auto";
+        if (name == "auto" || name == "mcan")
+            profile_ = bus::BusProfile::centralStation();
+        else if (name == "cs2")
+            profile_ = bus::BusProfile{bus::Protocol::Cs2};
+        else if (name == "orc")
+            profile_ = bus::BusProfile::openRailCan();
+        else
+            return false;
+        return true;
+    }
+
     bool print(const std::string& input, std::size_t lineNumber) {
         const auto parsed = can::parseFrame(input);
         if (!parsed) {
@@ -23,12 +39,20 @@ public:
             return false;
         }
         // A frame no protocol of the bus claims is shown, not decoded, and is no error.
-        const bus::FrameDescription description = context_.read(parsed->frame, profile_);
+        const bus::FrameDescription description = describe(parsed->frame);
         out_ << (json_ ? description.json() : description.text()) << '\n';
         return description.decoded() || description.protocol() == bus::Protocol::Foreign;
     }
 
 private:
+    bus::FrameDescription describe(const can::CanFrame& frame) {
+        bus::FrameDescription description = context_.read(frame, profile_);
+        if (!orcFallback_ || description.protocol() != bus::Protocol::Mcan || description.decoded())
+            return description;
+        bus::FrameDescription orc(frame, bus::BusProfile::openRailCan());
+        return orc.protocol() == bus::Protocol::Orc && orc.decoded() ? orc : description;
+    }
+
     void reportUnreadable(const std::string& input, std::size_t lineNumber, const std::string& error) {
         if (json_)
             out_ << "{\"input\":" << cs2::jsonQuoted(input) << ",\"error\":" << cs2::jsonQuoted(error)
@@ -39,6 +63,7 @@ private:
 
     bool json_;
     bus::BusProfile profile_ = bus::BusProfile::centralStation();
+    bool orcFallback_ = true;
     bus::BusContext context_;
     std::ostream& out_;
     std::ostream& err_;
@@ -49,28 +74,48 @@ bool isSkippable(const std::string& line) {
     return first == std::string::npos || line[first] == '#';
 }
 
+struct DecodeOptions {
+    bool json = false;
+    std::string protocol = "auto";
+    std::vector<std::string> frames;
+};
+
+// --json, --protocol NAME (or --protocol=NAME) and the frames; empty after an unknown option.
+std::optional<DecodeOptions> readOptions(const std::vector<std::string>& arguments, std::ostream& err) {
+    DecodeOptions options;
+    for (std::size_t i = 0; i < arguments.size(); ++i) {
+        const std::string& argument = arguments[i];
+        if (argument == "--json")
+            options.json = true;
+        else if (argument == "--protocol" && i + 1 < arguments.size())
+            options.protocol = arguments[++i];
+        else if (argument.rfind("--protocol=", 0) == 0)
+            options.protocol = argument.substr(11);
+        else if (argument.size() > 2 && argument.rfind("--", 0) == 0) {
+            err << "stellwerk-cli decode: unknown option " << argument << '\n';
+            return std::nullopt;
+        } else
+            options.frames.push_back(argument);
+    }
+    return options;
+}
+
 } // namespace
 
 int runDecode(const std::vector<std::string>& arguments, std::istream& in, std::ostream& out,
               std::ostream& err) {
-    bool json = false;
-    std::vector<std::string> frames;
-    for (const auto& argument : arguments) {
-        if (argument == "--json") {
-            json = true;
-        } else if (argument.size() > 2 && argument.rfind("--", 0) == 0) {
-            err << "stellwerk-cli decode: unknown option " << argument << '\n';
-            return 2;
-        } else {
-            frames.push_back(argument);
-        }
+    const std::optional<DecodeOptions> options = readOptions(arguments, err);
+    if (!options)
+        return 2;
+    FramePrinter printer(options->json, out, err);
+    if (!printer.chooseProtocol(options->protocol)) {
+        err << "stellwerk-cli decode: --protocol " << options->protocol << ": use auto, cs2, mcan or orc\n";
+        return 2;
     }
-
-    FramePrinter printer(json, out, err);
     bool allGood = true;
-    if (!frames.empty()) {
-        for (std::size_t i = 0; i < frames.size(); ++i)
-            allGood = printer.print(frames[i], i + 1) && allGood;
+    if (!options->frames.empty()) {
+        for (std::size_t i = 0; i < options->frames.size(); ++i)
+            allGood = printer.print(options->frames[i], i + 1) && allGood;
     } else {
         std::string line;
         for (std::size_t number = 1; std::getline(in, line); ++number)

@@ -1,5 +1,6 @@
 #include "EncodeCommand.h"
 
+#include "OrcEncode.h"
 #include "can/FrameText.h"
 #include "cs2/Codec.h"
 #include "cs2/Fields.h"
@@ -27,8 +28,11 @@ int runEncode(const std::vector<std::string>& arguments, std::ostream& out, std:
         if (arguments.empty())
             err << "usage: stellwerk-cli encode <name> key=value ...\n";
         printNames(arguments.empty() ? err : out);
+        printOrcNames(arguments.empty() ? err : out);
         return arguments.empty() ? 2 : 0;
     }
+    if (arguments[0].rfind("orc.", 0) == 0)
+        return runOrcEncode(arguments, out, err);
 
     std::vector<cs2::KeyValue> keyValues;
     bool hasHash = false;

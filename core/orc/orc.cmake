@@ -9,10 +9,12 @@ target_sources(stellwerk-orc PRIVATE
     orc/FrameReport.cpp
     orc/FrameReport.h
     orc/ManagementCodec.cpp
+    orc/MessageBuilder.cpp
+    orc/MessageBuilder.h
     orc/Messages.h
     orc/OrcId.h
     orc/SystemCodec.cpp
     orc/Uid.cpp
     orc/Uid.h
 )
-target_link_libraries(stellwerk-orc PUBLIC stellwerk-can)
+target_link_libraries(stellwerk-orc PUBLIC stellwerk-can stellwerk-base)

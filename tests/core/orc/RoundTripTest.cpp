@@ -3,6 +3,7 @@
 
 #include "orc/Codec.h"
 #include "orc/FrameReport.h"
+#include "orc/MessageBuilder.h"
 
 #include <gtest/gtest.h>
 #include <set>
@@ -118,4 +119,17 @@ TEST(BusIdVergabe, ExtensionsAreMarked) {
     EXPECT_TRUE(isExtension(AssignBusId{}));
     EXPECT_FALSE(isExtension(Find{}));
     EXPECT_FALSE(isExtension(PingAnswer{}));
+}
+
+// Every message can be built by name from key=value pairs (stellwerk-cli encode orc.<name>), and what is
+// built is what decoding its frame gives back.
+TEST(Befehlssatz, EveryMessageCanBeBuiltByName) {
+    for (const std::string_view name : messageNames()) {
+        if (name == Unknown::name)
+            continue;
+        const auto built = buildMessage(name, {{"prio", "2"}});
+        ASSERT_TRUE(bool(built)) << name << ": " << built.error();
+        EXPECT_EQ(nameOf(*built), name);
+        EXPECT_EQ(decode(encode(*built)), *built) << name;
+    }
 }
