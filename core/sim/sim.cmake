@@ -29,6 +29,8 @@ target_sources(stellwerk-simulator PRIVATE
     sim/SimulatedBus.h
     sim/SimulatedMs1.cpp
     sim/SimulatedMs1.h
+    sim/SimulatedOrcDevices.cpp
+    sim/SimulatedOrcDevices.h
     sim/SimulatedStation.cpp
     sim/SimulatedStation.h
     sim/StationHandhelds.cpp
@@ -39,4 +41,4 @@ target_sources(stellwerk-simulator PRIVATE
     sim/StatusChannels.cpp
     sim/SystemCommands.cpp
 )
-target_link_libraries(stellwerk-simulator PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-handhelds stellwerk-mcan stellwerk-transport Qt6::Core Qt6::Network)
+target_link_libraries(stellwerk-simulator PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-handhelds stellwerk-mcan stellwerk-orc stellwerk-transport Qt6::Core Qt6::Network)
