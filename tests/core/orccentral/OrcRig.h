@@ -35,6 +35,9 @@ inline constexpr std::uint32_t TwinUid = 0x11112E01; // same low 16 bits as the 
 inline OrcSession::Settings fastSettings(std::chrono::milliseconds pingPeriod = std::chrono::seconds(60)) {
     OrcSession::Settings settings;
     settings.timing.pingPeriod = pingPeriod;
+    // Longer than the document-less default of 250 ms, so that a loaded machine does not turn an ack that
+    // comes late into "sent, unconfirmed".
+    settings.timing.answerTimeout = std::chrono::milliseconds(1000);
     settings.reservedBusIds = {0x3005}; // MM2 turnout 5 of the layout
     return settings;
 }

@@ -98,7 +98,7 @@ TEST(EnkoderStatus, QueryAfterConnectingAndEventsOnChange) {
     EXPECT_EQ(last.at(2).value<std::uint32_t>(), 0x4u) << "only input 2 changed";
 }
 
-// Notes A3.3: a query nobody answers is sent 1 + 2 times (250 ms each), then reported failed.
+// Notes A3.3: a query nobody answers is sent 1 + 2 times (an answer timeout each), then reported failed.
 TEST(EnkoderAbfrage, UnansweredQueryIsRetriedTwiceThenFails) {
     OrcRig rig;
     ASSERT_TRUE(rig.started());
@@ -162,6 +162,23 @@ TEST(Ueberlast, BoosterOverloadIsReportedAndCleared) {
     rig.booster.clearOverload(2);
     ASSERT_TRUE(waitFor([&] { return overload.count() == 2; }));
     EXPECT_TRUE(rig.session.device(BoosterUid)->overloads.empty());
+}
+
+} // namespace
+} // namespace stellwerk::orccentral::test
+
+namespace stellwerk::orccentral::test {
+namespace {
+
+// The document gives no timeouts; the defaults are the ones the user guide (openrailcan.md) lists.
+TEST(Timeouts, DefaultsAreTheGuides) {
+    const OrcSession::Timing timing;
+    EXPECT_EQ(timing.pingPeriod, std::chrono::milliseconds(5000));
+    EXPECT_EQ(timing.missedPingsOffline, 3);
+    EXPECT_EQ(timing.answerTimeout, std::chrono::milliseconds(250));
+    EXPECT_EQ(timing.queryRetries, 2);
+    EXPECT_EQ(timing.assignTries, 3);
+    EXPECT_EQ(OrcSession::Settings{}.busId, 0x0000);
 }
 
 } // namespace
