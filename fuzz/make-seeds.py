@@ -212,3 +212,37 @@ write("ro_frame", "every-command", b"".join(ro(False, False, "%02X000001FF000000
                                             for c in (0x11, 0x12, 0x13, 0x14, 0x21, 0x22, 0x23, 0x24)))
 write("ro_frame", "refused", ro(True, False, "0105340000000000") + ro(True, False, "FD35010203040506") +
       ro(False, False, "12120034FF010000") + bytes([0xF0]) + bytes(8))
+
+# orc_frame: OpenRailCAN frames (13-byte network form): the ORC notes' derived vectors (A4.2, not printed in
+# the document), every command group, Stellwerk's bus-id extension, and malformed forms.
+ORC_DERIVED = [
+    ("09000000", "00"), ("09000000", "012E01"), ("09000042", "0A0102"), ("09020000", "00"),
+    ("11100000", "03300501"), ("11020000", "010048"), ("11030000", "01004801F4"), ("17122E01", "102E0105"),
+    ("19200000", "003A2E2E01"), ("1D212E01", "003A2E2E010102"),
+]
+def orc_id(prio, type_, group, answer, bus_id):  # layout L2 (core/orc/OrcId.h)
+    return "%08X" % (prio << 27 | type_ << 25 | group << 17 | int(answer) << 16 | bus_id)
+
+
+ORC_GROUPS = [
+    (orc_id(2, 0, 0x81, 0, 0), "020048"), (orc_id(2, 0, 0x81, 0, 0), "0300480000000F"),
+    (orc_id(2, 0, 0x81, 1, 0x42), "04004804010000"), (orc_id(2, 0, 0x88, 0, 0), "02"),
+    (orc_id(2, 0, 0x89, 0, 0), "01"), (orc_id(2, 0, 0x89, 0, 0), "102E02"),
+    (orc_id(2, 3, 0x89, 1, 0x2E02), "102E02FF00FF00"), (orc_id(3, 0, 0x90, 0, 0), "0100000000"),
+    (orc_id(3, 2, 0x90, 1, 0x2E01), "013A2E2E010102"), (orc_id(3, 0, 0x90, 0, 0), "023A2E2E012E02"),
+    (orc_id(3, 2, 0x90, 1, 0x2E02), "023A2E2E012E02"), (orc_id(3, 0, 0xF0, 0, 0), "00"),
+    (orc_id(3, 0, 0xF0, 0, 0), "012E0103"), (orc_id(3, 2, 0xF0, 1, 0x2E01), "012E013A2E2E0102"),
+    (orc_id(3, 0, 0xF0, 0, 0), "022E0100100004"), (orc_id(3, 2, 0xF0, 1, 0x2E01), "022E01800020"),
+    (orc_id(3, 0, 0xF0, 0, 0), "042E010701020304"), (orc_id(3, 2, 0xF0, 1, 0x2E01), "042E010701020304"),
+    (orc_id(3, 0, 0xF0, 0, 0), "052E0107CBF43926"),
+]
+ORC_MALFORMED = [
+    ("09000000", "002E"), ("09010000", "00"), ("01000000", "00"), ("09400000", "00"), ("11100000", "033005"),
+    ("11020000", "04004801010200"), (orc_id(3, 0, 0xF0, 0, 0), "042E010001"),
+]
+write("orc_frame", "derived-a42", mcan_frames(ORC_DERIVED))
+write("orc_frame", "every-group", mcan_frames(ORC_GROUPS))
+write("orc_frame", "malformed", mcan_frames(ORC_MALFORMED))
+write("orc_frame", "beside-cs2-and-mcan", mcan_frames(ORC_DERIVED[:3] + [("00084711", "0000C0030120"), ("0C0007AB", "0000002A")]))
+write("orc_frame", "dlc-above-eight", struct.pack(">IB", 0x11100000, 12) + bytes(8))
+

@@ -11,6 +11,7 @@ set(STELLWERK_FUZZ_TARGETS
     loco_picture    # a loco's .icon value -> picture file name; picture bytes -> PNG header check
     mcan_frame      # 13-byte M-CAN frames in bus order -> decode (every role), encode, FrameReport, HandleRoles
     ro_frame        # RO module payloads (requests and answers, 11/29-bit) -> decode, encode, FrameReport, describe
+    orc_frame       # 13-byte OpenRailCAN frames -> decode, encode, FrameReport, the bus description
 )
 
 file(GLOB STELLWERK_FUZZED_SOURCES CONFIGURE_DEPENDS
@@ -19,6 +20,7 @@ file(GLOB STELLWERK_FUZZED_SOURCES CONFIGURE_DEPENDS
     ${STELLWERK_ROOT}/core/cs2/*.cpp
     ${STELLWERK_ROOT}/core/mcan/*.cpp
     ${STELLWERK_ROOT}/core/ro/*.cpp
+    ${STELLWERK_ROOT}/core/orc/*.cpp
     ${STELLWERK_ROOT}/core/cs2config/*.cpp)
 list(APPEND STELLWERK_FUZZED_SOURCES
     ${STELLWERK_ROOT}/core/transport/FrameAssembler.cpp

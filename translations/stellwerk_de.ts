@@ -390,6 +390,10 @@
         <translation>M-CAN</translation>
     </message>
     <message>
+        <source>OpenRailCAN</source>
+        <translation>OpenRailCAN</translation>
+    </message>
+    <message>
         <source>RO</source>
         <translation>RO</translation>
     </message>

@@ -390,6 +390,9 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>OpenRailCAN</source>
+    </message>
+    <message>
         <source>RO</source>
         <translation type="unfinished"></translation>
     </message>

@@ -6,6 +6,7 @@
 #include "cs2/JsonText.h"
 
 #include <istream>
+#include <optional>
 #include <ostream>
 
 namespace stellwerk::cli {
@@ -15,8 +16,25 @@ namespace {
 // one run are one bus: what earlier frames revealed (an MS1's handles and names) names the later ones.
 class FramePrinter {
 public:
-    FramePrinter(bool json, bus::BusProfile profile, std::ostream& out, std::ostream& err)
-        : json_(json), profile_(std::move(profile)), out_(out), err_(err) {}
+    FramePrinter(bool json, std::ostream& out, std::ostream& err) : json_(json), out_(out), err_(err) {}
+
+    // The bus the lines come from (`--protocol`); auto: a station's bus, where a frame that M-CAN cannot
+    // read but OpenRailCAN can is shown as OpenRailCAN (the two overlap, ORC notes O26). The RO modules'
+    // ids (`--ro-module`) are claimed first on any of them.
+    bool chooseProtocol(const std::string& name, const std::vector<ro::FrameIds>& roModules) {
+        orcFallback_ = name == "auto";
+        if (name == "auto" || name == "mcan")
+            profile_ = bus::BusProfile::centralStation();
+        else if (name == "cs2")
+            profile_ = bus::BusProfile{bus::Protocol::Cs2};
+        else if (name == "orc")
+            profile_ = bus::BusProfile::openRailCan();
+        else
+            return false;
+        for (const ro::FrameIds& ids : roModules)
+            profile_.addRoModule(ids);
+        return true;
+    }
 
     bool print(const std::string& input, std::size_t lineNumber) {
         const auto parsed = can::parseFrame(input);
@@ -25,12 +43,20 @@ public:
             return false;
         }
         // A frame no protocol of the bus claims is shown, not decoded, and is no error.
-        const bus::FrameDescription description = context_.read(parsed->frame, profile_);
+        const bus::FrameDescription description = describe(parsed->frame);
         out_ << (json_ ? description.json() : description.text()) << '\n';
         return description.decoded() || description.protocol() == bus::Protocol::Foreign;
     }
 
 private:
+    bus::FrameDescription describe(const can::CanFrame& frame) {
+        bus::FrameDescription description = context_.read(frame, profile_);
+        if (!orcFallback_ || description.protocol() != bus::Protocol::Mcan || description.decoded())
+            return description;
+        bus::FrameDescription orc(frame, bus::BusProfile::openRailCan());
+        return orc.protocol() == bus::Protocol::Orc && orc.decoded() ? orc : description;
+    }
+
     void reportUnreadable(const std::string& input, std::size_t lineNumber, const std::string& error) {
         if (json_)
             out_ << "{\"input\":" << cs2::jsonQuoted(input) << ",\"error\":" << cs2::jsonQuoted(error)
@@ -40,7 +66,8 @@ private:
     }
 
     bool json_;
-    bus::BusProfile profile_;
+    bus::BusProfile profile_ = bus::BusProfile::centralStation();
+    bool orcFallback_ = true;
     bus::BusContext context_;
     std::ostream& out_;
     std::ostream& err_;
@@ -51,37 +78,57 @@ bool isSkippable(const std::string& line) {
     return first == std::string::npos || line[first] == '#';
 }
 
+struct DecodeOptions {
+    bool json = false;
+    std::string protocol = "auto";
+    std::vector<ro::FrameIds> roModules;
+    std::vector<std::string> frames;
+};
+
+// --json, --protocol NAME (or --protocol=NAME), --ro-module req=ID,resp=ID[,std] (repeatable) and the
+// frames; empty after an unknown option or a module it cannot read.
+std::optional<DecodeOptions> readOptions(const std::vector<std::string>& arguments, std::ostream& err) {
+    DecodeOptions options;
+    for (std::size_t i = 0; i < arguments.size(); ++i) {
+        const std::string& argument = arguments[i];
+        if (argument == "--json")
+            options.json = true;
+        else if (argument == "--protocol" && i + 1 < arguments.size())
+            options.protocol = arguments[++i];
+        else if (argument.rfind("--protocol=", 0) == 0)
+            options.protocol = argument.substr(11);
+        else if (argument == "--ro-module") {
+            const auto ids = parseRoModule(i + 1 < arguments.size() ? arguments[++i] : std::string());
+            if (!ids) {
+                err << "stellwerk-cli decode: " << ids.error() << '\n';
+                return std::nullopt;
+            }
+            options.roModules.push_back(*ids);
+        } else if (argument.size() > 2 && argument.rfind("--", 0) == 0) {
+            err << "stellwerk-cli decode: unknown option " << argument << '\n';
+            return std::nullopt;
+        } else
+            options.frames.push_back(argument);
+    }
+    return options;
+}
+
 } // namespace
 
 int runDecode(const std::vector<std::string>& arguments, std::istream& in, std::ostream& out,
               std::ostream& err) {
-    bool json = false;
-    std::vector<std::string> frames;
-    bus::BusProfile profile = bus::BusProfile::centralStation();
-    for (std::size_t i = 0; i < arguments.size(); ++i) {
-        const std::string& argument = arguments[i];
-        if (argument == "--json") {
-            json = true;
-        } else if (argument == "--ro-module") {
-            const auto ids = parseRoModule(i + 1 < arguments.size() ? arguments[++i] : std::string());
-            if (!ids) {
-                err << "stellwerk-cli decode: " << ids.error() << '\n';
-                return 2;
-            }
-            profile.addRoModule(*ids);
-        } else if (argument.size() > 2 && argument.rfind("--", 0) == 0) {
-            err << "stellwerk-cli decode: unknown option " << argument << '\n';
-            return 2;
-        } else {
-            frames.push_back(argument);
-        }
+    const std::optional<DecodeOptions> options = readOptions(arguments, err);
+    if (!options)
+        return 2;
+    FramePrinter printer(options->json, out, err);
+    if (!printer.chooseProtocol(options->protocol, options->roModules)) {
+        err << "stellwerk-cli decode: --protocol " << options->protocol << ": use auto, cs2, mcan or orc\n";
+        return 2;
     }
-
-    FramePrinter printer(json, std::move(profile), out, err);
     bool allGood = true;
-    if (!frames.empty()) {
-        for (std::size_t i = 0; i < frames.size(); ++i)
-            allGood = printer.print(frames[i], i + 1) && allGood;
+    if (!options->frames.empty()) {
+        for (std::size_t i = 0; i < options->frames.size(); ++i)
+            allGood = printer.print(options->frames[i], i + 1) && allGood;
     } else {
         std::string line;
         for (std::size_t number = 1; std::getline(in, line); ++number)

@@ -1,5 +1,6 @@
 #include "EncodeCommand.h"
 
+#include "OrcEncode.h"
 #include "RoCli.h"
 #include "can/FrameText.h"
 #include "cs2/Codec.h"
@@ -30,9 +31,11 @@ int runEncode(const std::vector<std::string>& arguments, std::ostream& out, std:
         if (arguments.empty())
             err << "usage: stellwerk-cli encode <name> key=value ...\n";
         printNames(arguments.empty() ? err : out);
+        printOrcNames(arguments.empty() ? err : out);
         return arguments.empty() ? 2 : 0;
     }
-
+    if (arguments[0].starts_with("orc."))
+        return runOrcEncode(arguments, out, err);
     if (arguments[0].starts_with("ro."))
         return runRoEncode(arguments, out, err);
 

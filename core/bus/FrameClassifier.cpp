@@ -1,6 +1,7 @@
 #include "bus/FrameClassifier.h"
 
 #include "mcan/Codec.h"
+#include "orc/Codec.h"
 
 #include <algorithm>
 
@@ -14,12 +15,23 @@ bool claimsCs2(const can::CanFrame& frame) {
     return frame.extended;
 }
 
+// OpenRailCAN (ORC notes A7, C4): ID24 set and priority not 00. Beside M-CAN only with the CS2 marker in
+// bits 9..7 of the bus id, if the profile allows it (notes O26); else M-CAN's reading wins.
+bool claimsOrc(const can::CanFrame& frame, const BusProfile& profile) {
+    if (!orc::isOrc(frame))
+        return false;
+    return !profile.expects(Protocol::Mcan) ||
+           (profile.orcOnlyWithCs2Marker() && mcan::hasCs2Marker(frame.id));
+}
+
 bool claims(Protocol protocol, const can::CanFrame& frame, const BusProfile& profile) {
     switch (protocol) {
     case Protocol::Cs2:
         return claimsCs2(frame);
     case Protocol::Mcan:
         return mcan::isMcan(frame); // notes B§6.2: no CS2 marker, and the bus-busy frame or prio bits set
+    case Protocol::Orc:
+        return claimsOrc(frame, profile);
     case Protocol::Ro:
         return profile.roFrame(frame).has_value(); // notes C4: the configured ids only
     case Protocol::Foreign:
@@ -36,6 +48,8 @@ std::string_view protocolName(Protocol protocol) {
         return "cs2";
     case Protocol::Mcan:
         return "mcan";
+    case Protocol::Orc:
+        return "orc";
     case Protocol::Ro:
         return "ro";
     case Protocol::Foreign:

@@ -12,10 +12,10 @@
 namespace stellwerk::bus {
 
 // The protocols Stellwerk knows on a CAN bus: the CS2's, M-CAN, the protocol of the MS1 handhelds
-// (which share the CS2's bus), and Ro, the RO relay/IO modules' (seed 004). Foreign: a frame no enabled
-// protocol claims (another program's, a device Stellwerk does not speak to, or garbage); it is counted and
-// shown, never dropped. Foreign stays the last.
-enum class Protocol { Cs2, Mcan, Ro, Foreign };
+// (which share the CS2's bus), OpenRailCAN (Orc) and the RO relay/IO modules' (Ro, seed 004). Foreign: a
+// frame no enabled protocol claims (another program's, a device Stellwerk does not speak to, or garbage);
+// it is counted and shown, never dropped. Foreign stays the last.
+enum class Protocol { Cs2, Mcan, Orc, Ro, Foreign };
 inline constexpr std::size_t ProtocolCount = std::size_t(Protocol::Foreign) + 1;
 
 // The short name used in JSON and filters: "cs2", "mcan", "ro", "foreign".
@@ -30,6 +30,18 @@ public:
     // The profile of a bus behind a CS2/CS3 or Gleisbox: MS1 handhelds may share it (M-CAN, asked first:
     // the CS2 protocol claims every 29-bit frame), and the CS2 protocol.
     static BusProfile centralStation() { return BusProfile{Protocol::Mcan, Protocol::Cs2}; }
+    // A CS2's bus with OpenRailCAN devices on it (ORC notes A7): ORC asked first, since the CS2 protocol
+    // claims every 29-bit frame; no MS1 handhelds.
+    static BusProfile openRailCan() { return BusProfile{Protocol::Orc, Protocol::Cs2}; }
+
+    // M-CAN's priorities overlap ORC's (notes O26): with M-CAN on the bus, ORC claims nothing, unless the
+    // central hands out only bus ids with 110 in bits 9..7 (the CS2's hash marker, which M-CAN never
+    // uses as cmd); then ORC claims exactly those frames. Off by default.
+    BusProfile& orcOnlyWithCs2Marker(bool on) {
+        orcWithMarker_ = on;
+        return *this;
+    }
+    bool orcOnlyWithCs2Marker() const { return orcWithMarker_; }
 
     const std::vector<Protocol>& protocols() const { return protocols_; }
     bool expects(Protocol protocol) const;
@@ -49,6 +61,7 @@ public:
 private:
     std::vector<Protocol> protocols_;
     std::vector<ro::FrameIds> roModules_;
+    bool orcWithMarker_ = false;
 };
 
 // Which protocol a frame belongs to on a bus with this profile: the first protocol of the profile that

@@ -1,12 +1,14 @@
 #include "bus/FrameDescription.h"
 
 #include "bus/McanReading.h"
+#include "bus/OrcReading.h"
 #include "bus/RoReading.h"
 #include "can/FrameText.h"
 #include "cs2/Fields.h"
 #include "cs2/FrameReport.h"
 #include "cs2/LocId.h"
 #include "mcan/Messages.h"
+#include "orc/Messages.h"
 #include "ro/FrameReport.h"
 
 #include <cctype>
@@ -43,7 +45,8 @@ private:
 
 // "CS2", "CS2/M-CAN": the protocols a bus expects, as a person names them, in a fixed order; empty for none.
 std::string protocolTitles(const BusProfile& profile) {
-    static constexpr std::string_view titleOf[] = {"CS2", "M-CAN", "RO"}; // by Protocol, Foreign left out
+    static constexpr std::string_view titleOf[] = {"CS2", "M-CAN", "OpenRailCAN",
+                                                   "RO"}; // by Protocol, Foreign left out
     std::string titles;
     for (std::size_t protocol = 0; protocol < std::size(titleOf); ++protocol)
         if (profile.expects(Protocol(protocol)))
@@ -87,6 +90,8 @@ std::shared_ptr<const FrameReading> readingOf(const can::CanFrame& frame, Protoc
         return std::make_shared<const Cs2Reading>(frame);
     case Protocol::Mcan:
         return mcanReading(frame, context);
+    case Protocol::Orc:
+        return orcReading(frame);
     case Protocol::Ro:
         return roReading(frame, profile);
     case Protocol::Foreign:
@@ -136,7 +141,7 @@ std::string FrameDescription::frameText() const {
     return can::formatDocument(frame_);
 }
 
-// The CS2's names first, then M-CAN's, then RO's, whatever order the profile asks them in.
+// The CS2's names first, then M-CAN's, OpenRailCAN's and RO's, whatever order the profile asks them in.
 std::vector<std::string_view> messageNames(const BusProfile& profile) {
     std::vector<std::string_view> names;
     if (profile.expects(Protocol::Cs2))
@@ -144,6 +149,10 @@ std::vector<std::string_view> messageNames(const BusProfile& profile) {
     if (profile.expects(Protocol::Mcan)) {
         const std::vector<std::string_view> mcanNames = mcan::messageNames();
         names.insert(names.end(), mcanNames.begin(), mcanNames.end());
+    }
+    if (profile.expects(Protocol::Orc)) {
+        const std::vector<std::string_view> orcNames = orc::messageNames();
+        names.insert(names.end(), orcNames.begin(), orcNames.end());
     }
     if (profile.expects(Protocol::Ro)) {
         const std::vector<std::string_view> roNames = ro::messageNames();

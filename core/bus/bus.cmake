@@ -14,5 +14,7 @@ target_sources(stellwerk-bus PRIVATE
     bus/McanReading.h
     bus/RoReading.cpp
     bus/RoReading.h
+    bus/OrcReading.cpp
+    bus/OrcReading.h
 )
-target_link_libraries(stellwerk-bus PUBLIC stellwerk-can stellwerk-ro PRIVATE stellwerk-cs2 stellwerk-mcan)
+target_link_libraries(stellwerk-bus PUBLIC stellwerk-can stellwerk-ro PRIVATE stellwerk-cs2 stellwerk-mcan stellwerk-orc)

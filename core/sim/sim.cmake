@@ -31,6 +31,8 @@ target_sources(stellwerk-simulator PRIVATE
     sim/SimulatedMs1.h
     sim/SimulatedRoModule.cpp
     sim/SimulatedRoModule.h
+    sim/SimulatedOrcDevices.cpp
+    sim/SimulatedOrcDevices.h
     sim/SimulatedStation.cpp
     sim/SimulatedStation.h
     sim/StationHandhelds.cpp
@@ -41,4 +43,4 @@ target_sources(stellwerk-simulator PRIVATE
     sim/StatusChannels.cpp
     sim/SystemCommands.cpp
 )
-target_link_libraries(stellwerk-simulator PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-handhelds stellwerk-mcan stellwerk-ro stellwerk-transport Qt6::Core Qt6::Network)
+target_link_libraries(stellwerk-simulator PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-handhelds stellwerk-mcan stellwerk-orc stellwerk-ro stellwerk-transport Qt6::Core Qt6::Network)

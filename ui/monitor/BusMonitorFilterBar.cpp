@@ -161,6 +161,7 @@ void BusMonitorFilterBar::retranslate() {
     m_protocolBox->setItemText(1 + int(bus::Protocol::Cs2), tr("CS2"));
     m_protocolBox->setItemText(1 + int(bus::Protocol::Mcan), tr("M-CAN"));
     m_protocolBox->setItemText(1 + int(bus::Protocol::Ro), tr("RO"));
+    m_protocolBox->setItemText(1 + int(bus::Protocol::Orc), tr("OpenRailCAN"));
     m_protocolBox->setItemText(1 + int(bus::Protocol::Foreign), tr("Foreign"));
     m_protocolBox->setToolTip(tr("Show only frames of one protocol; foreign frames belong to none that is "
                                  "expected on their bus"));

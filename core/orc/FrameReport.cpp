@@ -1,0 +1,303 @@
+#include "orc/FrameReport.h"
+
+#include "can/FrameText.h"
+#include "orc/Uid.h"
+
+#include <cstdio>
+
+namespace stellwerk::orc {
+namespace {
+
+// Collects a message's fields in the order they are shown.
+struct Fields {
+    Fields& number(std::string_view key, std::uint64_t value) {
+        return add({key, value, FieldFormat::Decimal, {}, 2});
+    }
+    Fields& hex(std::string_view key, std::uint64_t value, unsigned digits = 2) {
+        return add({key, value, FieldFormat::Hex, {}, digits});
+    }
+    Fields& flag(std::string_view key, bool value) {
+        return add({key, value ? 1u : 0u, FieldFormat::Bool, {}, 2});
+    }
+    Fields& text(std::string_view key, std::string_view value) {
+        return add({key, 0, FieldFormat::Text, std::string(value), 2});
+    }
+    Fields& add(Field field) {
+        list.push_back(std::move(field));
+        return *this;
+    }
+    std::vector<Field> list;
+};
+
+std::string hexDigits(std::uint64_t value, unsigned digits) {
+    char buffer[24];
+    std::snprintf(buffer, sizeof buffer, "%0*llX", int(digits), static_cast<unsigned long long>(value));
+    return buffer;
+}
+
+void origin(Fields& f, const Origin& from, bool answer) {
+    f.number("prio", from.prio).text("type", deviceTypeName(from.type)).hex("sender", from.busId, 4);
+    f.text("direction", answer ? "answer" : "command");
+}
+
+void target(Fields& f, const Target& t) {
+    if (t.kind == Target::Kind::All)
+        f.text("target", "all");
+    else if (t.kind == Target::Kind::BusId)
+        f.hex("target", t.value, 4);
+    else
+        f.hex("uid", t.value, 8);
+}
+
+// A Ziel-Id with what it means when it lies in a legacy range: "target=0x3005 legacy=mm2-decoder number=5".
+void targetId(Fields& f, std::uint16_t id) {
+    f.hex("target", id, 4);
+    if (const std::optional<LegacyAddress> legacy = legacyAddressOf(id))
+        f.text("legacy", legacy->range->name).number("number", legacy->number);
+}
+
+std::string_view actionName(GroupAction action) {
+    return action == GroupAction::On ? "on" : action == GroupAction::Restore ? "restore" : "off";
+}
+
+std::string_view overloadName(std::uint8_t kind) {
+    return kind == 0 ? "none" : kind == 1 ? "current" : kind == 2 ? "temperature" : "unknown";
+}
+
+std::string version(std::uint16_t v) {
+    return std::to_string(v >> 8) + "." + std::to_string(v & 0xFF);
+}
+
+void add(Fields& f, const AllOff& m) {
+    origin(f, m.from, false);
+    target(f, m.target);
+}
+void add(Fields& f, const AllOn& m) {
+    origin(f, m.from, false);
+    target(f, m.target);
+}
+void add(Fields& f, const Overload& m) {
+    origin(f, m.from, m.answer);
+    f.number("kind", m.kind).text("overload", overloadName(m.kind));
+    if (m.hasPort)
+        f.number("port", m.port);
+}
+void add(Fields& f, const LocoStop& m) {
+    origin(f, m.from, false);
+    target(f, m.target);
+}
+void add(Fields& f, const LocoSpeedQuery& m) {
+    origin(f, m.from, false);
+    targetId(f, m.target);
+}
+void speedFields(Fields& f, std::uint16_t speed) {
+    f.number("speed", speed & 0x7FFF).text("travel", (speed & 0x8000) != 0 ? "reverse" : "forward");
+}
+void add(Fields& f, const LocoSpeed& m) {
+    origin(f, m.from, m.answer);
+    targetId(f, m.target);
+    speedFields(f, m.speed);
+}
+void add(Fields& f, const LocoSpeedQueryByUid& m) {
+    origin(f, m.from, false);
+    f.hex("uid", m.uid, 8);
+}
+void add(Fields& f, const LocoSpeedByUid& m) {
+    origin(f, m.from, m.answer);
+    f.hex("uid", m.uid, 8);
+    speedFields(f, m.speed);
+    if (m.textForm)
+        f.flag("textForm", true);
+}
+void add(Fields& f, const LocoFunctionsQuery& m) {
+    origin(f, m.from, false);
+    targetId(f, m.target);
+}
+void add(Fields& f, const LocoFunctions& m) {
+    origin(f, m.from, m.answer);
+    targetId(f, m.target);
+    f.hex("functions", m.functions, 8);
+}
+void add(Fields& f, const LocoFunctionQuery& m) {
+    origin(f, m.from, false);
+    targetId(f, m.target);
+    f.number("function", m.function);
+}
+void add(Fields& f, const LocoFunction& m) {
+    origin(f, m.from, m.answer);
+    targetId(f, m.target);
+    f.number("function", m.function).number("value", m.value);
+}
+void add(Fields& f, const AllDecoders& m) {
+    origin(f, m.from, false);
+    f.text("action", actionName(m.action));
+}
+void add(Fields& f, const DecoderSwitch& m) {
+    origin(f, m.from, m.answer);
+    targetId(f, m.target);
+    f.number("position", m.position);
+}
+void add(Fields& f, const AllEncoders& m) {
+    origin(f, m.from, false);
+    f.text("action", actionName(m.action));
+}
+void add(Fields& f, const EncoderQuery& m) {
+    origin(f, m.from, false);
+    if (m.everyEncoder)
+        f.text("target", "all");
+    else
+        f.hex("target", m.target, 4);
+}
+void add(Fields& f, const EncoderStatus& m) {
+    origin(f, m.from, m.answer);
+    f.hex("encoder", m.encoder, 4).number("inputCount", 8u * m.bytes).hex("inputs", m.inputs, 2u * m.bytes);
+    f.text("event", m.answer ? "answer" : "event");
+}
+void add(Fields& f, const Ping& m) {
+    origin(f, m.from, false);
+    f.hex("uid", m.uid, 8);
+}
+void add(Fields& f, const PingAnswer& m) {
+    origin(f, m.from, true);
+    f.hex("uid", m.uid, 8).hex("version", m.version, 4).text("versionText", version(m.version));
+}
+void add(Fields& f, const Find& m) {
+    origin(f, m.from, false);
+    f.hex("uid", m.uid, 8);
+}
+void add(Fields& f, const FindAnswer& m) {
+    origin(f, m.from, true);
+    f.hex("uid", m.uid, 8).hex("version", m.version, 4).text("versionText", version(m.version));
+    f.flag("extension", true);
+}
+void add(Fields& f, const AssignBusId& m) {
+    origin(f, m.from, m.answer);
+    f.hex("uid", m.uid, 8).hex("busId", m.busId, 4).flag("extension", true);
+}
+void add(Fields& f, const FlashCancel& m) {
+    origin(f, m.from, false);
+}
+void add(Fields& f, const FlashInit& m) {
+    origin(f, m.from, false);
+    target(f, m.target);
+    f.number("version", m.version);
+}
+void add(Fields& f, const FlashAccepted& m) {
+    origin(f, m.from, true);
+    f.hex("target", m.target, 4).hex("uid", m.uid, 8).number("version", m.version);
+}
+void add(Fields& f, const FlashSize& m) {
+    origin(f, m.from, false);
+    f.hex("target", m.target, 4).hex("start", m.start, 6).number("size", m.size);
+    if (m.tableCode)
+        f.flag("tableCode", true);
+}
+void add(Fields& f, const FlashSizeAnswer& m) {
+    origin(f, m.from, true);
+    f.hex("target", m.target, 4).number("available", m.available).number("countMax", m.countMax);
+    if (m.tableCode)
+        f.flag("tableCode", true);
+}
+void add(Fields& f, const FlashData& m) {
+    origin(f, m.from, m.answer);
+    f.hex("target", m.target, 4).number("count", m.count);
+    f.text("bytes", hexDigits(m.bytes[0], 2) + hexDigits(m.bytes[1], 2) + hexDigits(m.bytes[2], 2) +
+                        hexDigits(m.bytes[3], 2));
+}
+void add(Fields& f, const FlashChecksum& m) {
+    origin(f, m.from, m.answer);
+    f.hex("target", m.target, 4).number("count", m.count).hex("crc", m.crc, 8);
+}
+void add(Fields& f, const Unknown& m) {
+    const Header h = readId(m.id);
+    f.number("prio", h.prio).number("type", h.type).hex("group", h.group).flag("answer", h.answer);
+    f.hex("sender", h.busId, 4).text("why", m.why);
+}
+
+std::string quoted(const std::string& text) {
+    std::string out = "\"";
+    for (const char c : text) {
+        if (c == '"' || c == '\\')
+            out += '\\';
+        out += c;
+    }
+    return out + "\"";
+}
+
+std::string textValue(const Field& field) {
+    switch (field.format) {
+    case FieldFormat::Hex:
+        return "0x" + hexDigits(field.number, field.digits);
+    case FieldFormat::Bool:
+        return field.number ? "true" : "false";
+    case FieldFormat::Text:
+        return field.text.find(' ') == std::string::npos && !field.text.empty() ? field.text
+                                                                                : quoted(field.text);
+    case FieldFormat::Decimal:
+        break;
+    }
+    return std::to_string(field.number);
+}
+
+std::string jsonValue(const Field& field) {
+    switch (field.format) {
+    case FieldFormat::Hex:
+        return "\"0x" + hexDigits(field.number, field.digits) + "\"";
+    case FieldFormat::Bool:
+        return field.number ? "true" : "false";
+    case FieldFormat::Text:
+        return quoted(field.text);
+    case FieldFormat::Decimal:
+        break;
+    }
+    return std::to_string(field.number);
+}
+
+} // namespace
+
+std::string_view deviceTypeName(std::uint8_t type) {
+    static constexpr std::string_view names[] = {"system",      "loco",           "can-decoder",
+                                                 "can-encoder", "legacy-decoder", "legacy-encoder",
+                                                 "free-6",      "free-7"};
+    return names[type & 7];
+}
+
+std::vector<Field> describe(const Message& message) {
+    Fields fields;
+    std::visit([&fields](const auto& m) { add(fields, m); }, message);
+    return std::move(fields.list);
+}
+
+FrameReport::FrameReport(const can::CanFrame& frame)
+    : frame_(frame), message_(decode(frame)), fields_(describe(message_)) {}
+
+std::string FrameReport::detailText() const {
+    std::string text;
+    for (const Field& field : fields_)
+        text += (text.empty() ? "" : " ") + std::string(field.key) + "=" + textValue(field);
+    return text;
+}
+
+std::string FrameReport::text() const {
+    return can::formatDocument(frame_) + "  " + std::string(name()) + "  " + detailText();
+}
+
+std::string FrameReport::json() const {
+    const std::string candump = can::formatCandump(frame_);
+    const std::size_t hash = candump.find('#');
+    std::string json = "{\"id\":\"" + candump.substr(0, hash) + "\",\"dlc\":" + std::to_string(frame_.dlc) +
+                       ",\"data\":\"" + candump.substr(hash + 1) + "\",\"name\":\"" + std::string(name()) +
+                       "\",\"fields\":{";
+    for (std::size_t i = 0; i < fields_.size(); ++i)
+        json += (i ? "," : "") + quoted(std::string(fields_[i].key)) + ":" + jsonValue(fields_[i]);
+    return json + "}}";
+}
+
+std::optional<std::uint64_t> FrameReport::number(std::string_view key) const {
+    for (const Field& field : fields_)
+        if (field.key == key && field.format != FieldFormat::Text)
+            return field.number;
+    return std::nullopt;
+}
+
+} // namespace stellwerk::orc
