@@ -51,6 +51,29 @@ TEST_P(RoModuleGoneAndBack, NothingIsReportedSwitchedAndTheModuleIsFoundAgain) {
 INSTANTIATE_TEST_SUITE_P(BackAfter, RoModuleGoneAndBack, ::testing::Values(1000, 20000),
                          [](const auto& info) { return std::to_string(info.param / 1000) + "s"; });
 
+// The module switches, its answer is lost and it goes away at once: Stellwerk cannot know, so it reports
+// the change as failed (never as done); when the module is back the relays are read, and show the truth.
+TEST(RoModuleGoneAndBackAfterSwitching, TheRelaysAreReadAgainAndShowWhatTheModuleDid) {
+    SessionTiming timing = RoRig::quickTiming();
+    timing.pollPeriod = std::chrono::milliseconds(250);
+    RoRig rig(timing);
+    ASSERT_TRUE(rig.started());
+    rig.module.loseAnswers(1);
+    QObject::connect(&rig.module, &sim::SimulatedRoModule::relaysChanged, &rig.module,
+                     [&] { rig.module.unplug(); });
+    ASSERT_TRUE(rig.session->setOutput(5, true));
+    ASSERT_TRUE(rig.waitFor([&] { return rig.session->state() == RoModuleSession::State::Offline; }));
+    EXPECT_EQ(rig.failed, 0x0010u);
+    EXPECT_NE(rig.session->outputs(), std::optional<std::uint32_t>(0x0010)) << "not reported as switched";
+    EXPECT_TRUE(rig.module.relay(5)) << "though the module did switch";
+
+    support::runEventsUntil([] { return false; }, 1000);
+    rig.module.plugIn();
+    ASSERT_TRUE(rig.waitFor([&] { return rig.session->outputs().has_value(); }));
+    EXPECT_EQ(rig.session->outputs(), 0x0010u) << "read again: now Stellwerk shows it";
+    EXPECT_EQ(rig.relayWrites(), Relays{0x0010}) << "and it was not switched a second time";
+}
+
 // Another program on the bus: a CS2 talking, frames of another RO module, and another master that reads
 // our module's inputs with its own job ids (so the module answers it on our answer id, and remembers its
 // job ids). Our relay changes are each carried out once and reported only when confirmed.
