@@ -35,20 +35,28 @@ RailwayDevices::~RailwayDevices() {
 }
 
 void RailwayDevices::setSessions(orccentral::OrcSession* orc, const std::vector<RoModuleSession*>& modules) {
-    finish([](const Pending&) { return true; }, QStringLiteral("the device's bus went away"));
     if (orc_)
         orc_->disconnect(this);
     for (const auto& module : modules_)
         if (module)
             module->disconnect(this);
+    if (orc != orc_.data())
+        decoderPositions_.clear(); // a new central: what the old one heard is not its knowledge
     orc_ = orc;
     modules_.assign(modules.begin(), modules.end());
-    decoderPositions_.clear();
+    finish([this](const Pending& p) { return !p.session || !holds(p.session.data()); },
+           QStringLiteral("the device's bus went away"));
     if (orc_)
         watchOrc();
     for (RoModuleSession* module : modules)
         watchModule(module);
     refresh();
+}
+
+// Whether `session` is one of the sessions there are now.
+bool RailwayDevices::holds(const QObject* session) const {
+    return session == orc_.data() || std::any_of(modules_.begin(), modules_.end(),
+                                                 [session](const auto& m) { return m.data() == session; });
 }
 
 bool RailwayDevices::drives(std::int64_t accessory) const {
@@ -73,7 +81,10 @@ void RailwayDevices::switchTo(std::int64_t accessory, int position,
         refused = switchOrc(std::get<OrcOutput>(binding->output), position);
     if (!refused.isEmpty())
         return done(refused);
-    pending_.push_back({accessory, position, std::move(done)});
+    QObject* session = orc_.data();
+    if (const auto* relay = std::get_if<RoRelay>(&binding->output))
+        session = module(relay->module);
+    pending_.push_back({accessory, position, std::move(done), session});
 }
 
 // Empty when the switching went out; else why not.

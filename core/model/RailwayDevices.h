@@ -46,6 +46,7 @@ private:
         std::int64_t accessory = 0;
         int position = 0;
         std::function<void(const QString&)> done;
+        QPointer<QObject> session; // the session it waits for
     };
 
     QString switchRelay(const RoRelay& relay, int position);
@@ -63,6 +64,7 @@ private:
     std::optional<bool> orcInput(const OrcInput& input) const;
     std::optional<bool> roInput(const RoInput& input) const;
     void finish(const std::function<bool(const Pending&)>& which, const QString& failure);
+    bool holds(const QObject* session) const;
     romodule::RoModuleSession* module(const QString& name) const;
 
     Railway& railway_;

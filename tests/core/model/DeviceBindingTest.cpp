@@ -155,6 +155,23 @@ TEST_F(DeviceBinding, SessionsThatAreGoneLeaveEveryBoundItemNotReported) {
     EXPECT_TRUE(reportedAt(1, 1)) << "the sessions still know the relays";
 }
 
+// A switching waits for its own session only: the module's session going fails the relay's switching, the
+// decoder's switching on the central that stays goes on to its acknowledgement.
+TEST_F(DeviceBinding, ASwitchingFailsWhenItsSessionGoesAndOnlyThen) {
+    QSignalSpy ended(&railway(), &Railway::switchingEnded);
+    railway().switchAccessory(1, 1);
+    railway().switchAccessory(5, 1);
+    ASSERT_EQ(ended.count(), 0);
+    bench.devices.setSessions(bench.orc.get(), {});
+    ASSERT_EQ(ended.count(), 1);
+    EXPECT_EQ(ended.at(0).at(0).toLongLong(), 1);
+    EXPECT_FALSE(ended.at(0).at(2).toBool());
+    ASSERT_TRUE(waitFor([&] { return ended.count() == 2; }));
+    EXPECT_EQ(ended.at(1).at(0).toLongLong(), 5);
+    EXPECT_TRUE(ended.at(1).at(2).toBool());
+    EXPECT_TRUE(reportedAt(5, 1));
+}
+
 TEST(DeviceBindingUnconfirmed, ADecoderThatDoesNotAcknowledgeLeavesThePositionNotReported) {
     DeviceBench bench(false);
     ASSERT_TRUE(bench.start());
