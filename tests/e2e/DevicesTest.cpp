@@ -212,6 +212,27 @@ TEST_P(DevicesOverWire, ARouteSwitchesAnRoRelayAndAnOpenRailCanDecoderOutput) {
     EXPECT_EQ(cs2Switches(app, 0x3005), 0) << "nor signal A (MM2 address 6)";
 }
 
+// Nothing reported switched that was not: with the module unplugged W1 is "not reported", the route stops
+// at it with the reason, and no relay write leaves Stellwerk for an offline module.
+TEST_P(DevicesOverWire, ARouteStopsAtARelayOfAnOfflineModule) {
+    DeviceStation station(GetParam());
+    ASSERT_TRUE(station.listen());
+    DeviceApp app;
+    app.connection.connectTo(station.url());
+    ASSERT_TRUE(app.ready());
+    station.module.unplug();
+    ASSERT_TRUE(waitFor([&] { return !app.railway->accessory(1)->isPositionReported(); }));
+    QSignalSpy failed(app.railway.get(), &model::Railway::routeFailed);
+    ASSERT_TRUE(app.railway->runRoute(1));
+    ASSERT_TRUE(waitFor([&] { return failed.count() == 1; }, 3 * WaitMs));
+    EXPECT_NE(failed.at(0).at(1).toString().indexOf(QStringLiteral("\"Demo RO\" is offline")), -1)
+        << failed.at(0).at(1).toString().toStdString();
+    EXPECT_TRUE(relayWrites(app).empty());
+    EXPECT_FALSE(station.module.relay(1));
+    EXPECT_FALSE(app.railway->accessory(1)->isPositionReported());
+    EXPECT_FALSE(app.railway->isRouteSet(1));
+}
+
 TEST_P(DevicesOverWire, AnEncoderInputLightsTheContactOnThePlan) {
     DeviceStation station(GetParam());
     ASSERT_TRUE(station.listen());
