@@ -3,6 +3,7 @@
 #include "DeviceCommands.h"
 #include "DriveCommands.h"
 #include "HandheldCommand.h"
+#include "OrcCommand.h"
 #include "RoCommand.h"
 #include "StationClient.h"
 #include "TransferCommands.h"
@@ -24,6 +25,8 @@ ParsedJob parseCommand(const std::vector<std::string>& arguments, std::ostream& 
     if (auto job = parseHandheldCommand(command, rest, out, err))
         return std::move(*job);
     if (auto job = parseRoCommand(command, rest, out, err))
+        return std::move(*job);
+    if (auto job = parseOrcCommand(command, rest, out, err))
         return std::move(*job);
     return "unknown station command '" + command + "'";
 }
@@ -68,7 +71,11 @@ const char* stationUsage() {
            "write\n"
            "                                       ADDRESS WIDTH VALUE, switch RELAY on|off, watch "
            "[--seconds\n"
-           "                                       N]; exit 0 done, 1 no answer, 4 refused (0xFE)\n";
+           "                                       N]; exit 0 done, 1 no answer, 4 refused (0xFE)\n"
+           "    orc [--json] [--seconds N] ACTION  Stellwerk as the OpenRailCAN central on the bus: find\n"
+           "                                       (devices that answer within N s, default 1), switch\n"
+           "                                       TARGET POS (dekoder schalten, waits for the ack), watch;\n"
+           "                                       exit 0 a device answered, 1 none did\n";
 }
 
 int runStation(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {

@@ -6,6 +6,7 @@
 #include "handhelds/HandheldBook.h"
 #include "model/OccupantBook.h"
 #include "model/Railway.h"
+#include "model/RailwayDevices.h"
 #include "monitor/FrameDecoderPanel.h"
 #include "shell/ApplicationInfo.h"
 #include "shell/LanguageSettings.h"
@@ -18,6 +19,7 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QPixmap>
+#include <QSettings>
 #include <QTimer>
 #include <cstdio>
 
@@ -170,6 +172,19 @@ void saveScreenshotAndQuit(QWidget& window, const StationConnection& connection,
     patience->start(ScreenshotPatienceMs);
 }
 
+// The railway's accessories and contacts that devices switch and light, following the connection's device
+// sessions as they come and go.
+void bindDevices(StationConnection& connection, stellwerk::model::Railway& railway,
+                 const stellwerk::model::DeviceBindings& saved) {
+    auto* devices = new stellwerk::model::RailwayDevices(
+        railway, connection.address().isEmpty() ? stellwerk::model::DeviceBindings::demo() : saved, &railway);
+    const auto follow = [&connection, devices] {
+        devices->setSessions(connection.orcSession(), connection.roModules());
+    };
+    QObject::connect(&connection, &StationConnection::devicesChanged, devices, follow);
+    follow();
+}
+
 } // namespace
 
 int main(int argc, char* argv[]) {
@@ -196,8 +211,20 @@ int main(int argc, char* argv[]) {
     stellwerk::handhelds::SettingsHandheldBook handheldBook(QCoreApplication::organizationName(),
                                                             QCoreApplication::applicationName());
     connectionSettings.handhelds.book = &handheldBook;
+    // The OpenRailCAN central and the RO modules, and what of the layout they switch and light (the
+    // embedded station brings its own demo devices).
+    QSettings deviceFile(QCoreApplication::organizationName(), QCoreApplication::applicationName());
+    connectionSettings.devices = stellwerk::connection::DeviceSettings::load(deviceFile);
+    connectionSettings.localStationDevices = stellwerk::connection::DeviceSettings::embeddedDemo();
+    const stellwerk::model::DeviceBindings deviceBindings =
+        stellwerk::model::DeviceBindings::load(deviceFile);
     StationConnection connection{std::move(connectionSettings)}; // outlives the railway and the window
     stellwerk::ui::RailwayBinding railways(connection);          // a railway model per session
+    QObject::connect(&railways, &stellwerk::ui::RailwayBinding::railwayChanged, &railways,
+                     [&connection, &deviceBindings](stellwerk::model::Railway* railway) {
+                         if (railway)
+                             bindDevices(connection, *railway, deviceBindings);
+                     });
     QObject::connect(
         &railways, &stellwerk::ui::RailwayBinding::railwayChanged, &railways,
         [&demoOccupants](stellwerk::model::Railway* railway) { demoOccupants.setRailway(railway); });

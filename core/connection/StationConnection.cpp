@@ -87,6 +87,11 @@ void StationConnection::connectTo(const QString& url, const QStringList& further
         return fail(station.error());
     }
     std::vector<transport::TransportSettings> further;
+    activeDevices_ = settings_.devices;
+    if (link_->local && settings_.localStationDevices) {
+        further = link_->local->deviceBuses();
+        activeDevices_ = *settings_.localStationDevices;
+    }
     for (const QString& address : furtherBuses) {
         const auto settings = furtherBusSettings(address);
         if (!settings) {
@@ -134,8 +139,10 @@ StationConnection::furtherBusSettings(const QString& address) {
 // inside one of their signals.
 void StationConnection::disconnectFromStation() {
     const bool hadBuses = link_ && !link_->buses.empty();
+    const bool hadDevices =
+        link_ && link_->devices && (link_->devices->orc() || !link_->devices->roModules().empty());
     if (link_) {
-        link_->detach(this);
+        link_->detach(this); // closing the transports below tears the device sessions down
         if (link_->session)
             link_->session->liveness().stop();
         for (const auto& transport : link_->transports)
@@ -153,6 +160,8 @@ void StationConnection::disconnectFromStation() {
     updateState();
     if (hadBuses)
         emit busesChanged();
+    if (hadDevices)
+        emit devicesChanged();
 }
 
 std::uint16_t StationConnection::embeddedPort() const {
@@ -204,19 +213,51 @@ void StationConnection::setHandheldRole(HandheldRole role) {
 
 void StationConnection::open(std::unique_ptr<transport::Transport> station,
                              const std::vector<transport::TransportSettings>& further) {
-    link_->addBus(std::move(station), bus::BusProfile::centralStation(), endpoint_.place);
+    const DeviceSettings& devices = activeDevices_;
+    link_->addBus(std::move(station), deviceBusProfile(devices, 0, bus::BusProfile::centralStation()),
+                  endpoint_.place);
     for (const transport::TransportSettings& settings : further)
-        link_->addBus(transport::createTransport(settings), settings_.furtherBusProfile,
+        link_->addBus(transport::createTransport(settings),
+                      deviceBusProfile(devices, int(link_->buses.size()), settings_.furtherBusProfile),
                       StationEndpoint::of(settings).place);
     link_->session = std::make_unique<station::StationSession>(link_->stationBus(), settings_.session);
     link_->handhelds = std::make_unique<HandheldConnection>(link_->stationBus(), settings_.handhelds);
     watchTransport();
     watchBuses();
+    openDevices();
     updateState();
     emit busesChanged();
     emit sessionStarted(link_->session.get());
     for (const auto& transport : link_->transports)
         transport->open();
+}
+
+// The device sessions of the settings, made as their buses connect; refusals are told at once.
+void StationConnection::openDevices() {
+    std::vector<buses::Bus*> buses;
+    for (const auto& bus : link_->buses)
+        buses.push_back(bus.get());
+    link_->devices = std::make_unique<DeviceSessions>(activeDevices_, std::move(buses));
+    connect(link_->devices.get(), &DeviceSessions::sessionsChanged, this, &StationConnection::devicesChanged);
+    connect(link_->devices.get(), &DeviceSessions::problem, this, &StationConnection::report);
+    for (const QString& refusal : link_->devices->refusals())
+        report(refusal);
+}
+
+orccentral::OrcSession* StationConnection::orcSession() const {
+    return link_ && link_->devices ? link_->devices->orc() : nullptr;
+}
+
+std::vector<romodule::RoModuleSession*> StationConnection::roModules() const {
+    return link_ && link_->devices ? link_->devices->roModules() : std::vector<romodule::RoModuleSession*>{};
+}
+
+romodule::RoModuleSession* StationConnection::roModule(const QString& name) const {
+    return link_ && link_->devices ? link_->devices->roModule(name) : nullptr;
+}
+
+QStringList StationConnection::deviceRefusals() const {
+    return link_ && link_->devices ? link_->devices->refusals() : QStringList{};
 }
 
 void StationConnection::fail(const QString& reason) {

@@ -2,6 +2,7 @@
 
 #include "base/Expected.h"
 #include "bus/FrameClassifier.h"
+#include "connection/DeviceSettings.h"
 #include "connection/HandheldConnection.h"
 #include "connection/LocomotivePictures.h"
 #include "connection/StationEndpoint.h"
@@ -53,8 +54,9 @@ struct StationCounts {
 // How patient the connection is; the defaults suit a CS2 on a LAN and the embedded simulator.
 // localStation is the station this program runs itself (the GUI program and tests hand over the embedded
 // simulated CS2); without one, connecting to "the simulated station" fails with a clear reason.
-// furtherBusProfile: the protocols expected on the further buses (none yet: until the module protocols
-// arrive, every frame there is foreign: counted and shown, never read as a CS2 command).
+// furtherBusProfile: the protocols expected on the further buses besides the devices' (none by default:
+// a frame no device session claims is foreign: counted and shown, never read as a CS2 command).
+// devices: which buses carry the OpenRailCAN central and which RO modules (see DeviceSessions).
 struct ConnectionSettings {
     station::StationSettings session{};
     station::StartupOptions startup{};
@@ -62,6 +64,10 @@ struct ConnectionSettings {
     bus::BusProfile furtherBusProfile{};
     LocomotivePictures::Settings pictures{};
     HandheldSettings handhelds{};
+    DeviceSettings devices{};
+    // The devices of the local station (its deviceBuses() become buses 1.. before the further buses
+    // given to connectTo()); used instead of `devices` when connected to it. None: it brings none.
+    std::optional<DeviceSettings> localStationDevices{};
 };
 
 // One bus of the connection, as the monitor shows it.
@@ -121,6 +127,19 @@ public:
     // The MS1 handhelds' master on the station's bus while connected (watching only when it may not be the
     // master), else null. Made with the session, gone with it.
     handhelds::HandheldMaster* handhelds() const;
+    // The OpenRailCAN central while its bus is connected and the settings want it, else null.
+    orccentral::OrcSession* orcSession() const;
+    // The RO module sessions whose bus is connected, in the settings' order; one by name (or null).
+    std::vector<romodule::RoModuleSession*> roModules() const;
+    romodule::RoModuleSession* roModule(const QString& name) const;
+    // Why devices of the settings were refused on this connection (an 11-bit module on a UDP/TCP
+    // gateway, a bus that is not open), one sentence each; also reported as problem().
+    QStringList deviceRefusals() const;
+    const DeviceSettings& deviceSettings() const { return settings_.devices; }
+    // The devices of the current connection (the local station's own when connected to it).
+    const DeviceSettings& activeDevices() const { return activeDevices_; }
+    // Devices for later connections (the current one keeps its own until connectTo() again).
+    void setDeviceSettings(DeviceSettings devices) { settings_.devices = std::move(devices); }
     // Whether Stellwerk answers the handhelds, from now on and for later connections.
     void setHandheldRole(HandheldRole role);
     HandheldRole handheldRole() const { return settings_.handhelds.role; }
@@ -156,6 +175,9 @@ signals:
     void busFramesSeen(int bus, const std::vector<stellwerk::can::CanFrame>& frames, bool outgoing);
     // The buses were opened (after connectTo) or closed.
     void busesChanged();
+    // Device sessions were made (their bus connected) or torn down (it went away, or the connection
+    // ended): whoever holds one asks orcSession() / roModules() again.
+    void devicesChanged();
 
 private:
     Expected<std::unique_ptr<transport::Transport>, QString> stationTransport();
@@ -165,6 +187,7 @@ private:
     void fail(const QString& reason);
     void watchTransport();
     void watchBuses();
+    void openDevices();
     void transportStateChanged(transport::Transport::State state);
     void stationSilent();
     void stationRecovered();
@@ -178,6 +201,7 @@ private:
     State evaluate() const;
 
     ConnectionSettings settings_;
+    DeviceSettings activeDevices_;
     LocomotivePictures* pictures_;
     std::unique_ptr<StationLink> link_;
     QString address_;

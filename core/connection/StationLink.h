@@ -1,6 +1,7 @@
 #pragma once
 
 #include "buses/Bus.h"
+#include "connection/DeviceSessions.h"
 #include "connection/HandheldConnection.h"
 #include "station/StartupSequence.h"
 #include "station/StationSession.h"
@@ -14,14 +15,16 @@
 namespace stellwerk::connection {
 
 // Everything one connection owns, torn down together: the start-up and the session before the buses they
-// read, the buses before their transports, the transports before the local station they talk to. Bus 0
-// is the station's; further ones (a USB-CAN adapter with modules) follow in the order given.
+// read, the buses before their transports, the transports before the local station they talk to. The device
+// sessions go before the buses too. Bus 0 is the station's; further ones (a USB-CAN adapter with modules)
+// follow in the order given.
 class StationLink final : public QObject {
 public:
     ~StationLink() override {
         startup.reset();
         session.reset();
         handhelds.reset();
+        devices.reset();
         buses.clear();
         transports.clear();
         local.reset();
@@ -49,6 +52,8 @@ public:
             QObject::disconnect(&session->liveness(), nullptr, receiver, nullptr);
         if (handhelds)
             QObject::disconnect(&handhelds->master(), nullptr, receiver, nullptr);
+        if (devices)
+            QObject::disconnect(devices.get(), nullptr, receiver, nullptr);
     }
 
     std::unique_ptr<transport::LocalPeer> local;
@@ -56,6 +61,7 @@ public:
     std::vector<std::unique_ptr<buses::Bus>> buses;
     std::unique_ptr<station::StationSession> session;
     std::unique_ptr<HandheldConnection> handhelds; // Stellwerk's part in the MS1 handhelds' conversation
+    std::unique_ptr<DeviceSessions> devices;       // the ORC central and the RO modules, on their buses
     std::unique_ptr<station::StartupSequence> startup;
 };
 

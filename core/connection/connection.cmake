@@ -2,6 +2,10 @@
 # user terms. The simulated CS2 reaches it only as a local peer from a factory (transport/LocalPeer.h).
 stellwerk_core_library(connection)
 target_sources(stellwerk-connection PRIVATE
+    connection/DeviceSessions.cpp
+    connection/DeviceSessions.h
+    connection/DeviceSettings.cpp
+    connection/DeviceSettings.h
     connection/HandheldConnection.cpp
     connection/HandheldConnection.h
     connection/LocomotivePictures.cpp
@@ -14,5 +18,5 @@ target_sources(stellwerk-connection PRIVATE
     connection/StationEndpoint.h
     connection/StationLink.h
 )
-target_link_libraries(stellwerk-connection PUBLIC stellwerk-buses stellwerk-handhelds stellwerk-station stellwerk-transport Qt6::Core
+target_link_libraries(stellwerk-connection PUBLIC stellwerk-buses stellwerk-handhelds stellwerk-orccentral stellwerk-romodule stellwerk-station stellwerk-transport Qt6::Core
     Qt6::Network)

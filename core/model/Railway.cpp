@@ -104,12 +104,26 @@ void Railway::updatePollerSources() {
 }
 
 void Railway::apply(const station::StationUpdates& updates) {
-    const RailwayChanges changes = state_.apply(updates, QDateTime::currentDateTime());
-    announce(changes);
+    if (switcher_ && !updates.contacts.empty()) {
+        station::StationUpdates own = updates; // a contact a device input lights is the device's alone
+        std::erase_if(own.contacts, [this](const station::FeedbackContactChange& change) {
+            return switcher_->lights(contactKey(change.device, change.contact));
+        });
+        return announce(state_.apply(own, QDateTime::currentDateTime()));
+    }
+    announce(state_.apply(updates, QDateTime::currentDateTime()));
 }
 
 void Railway::reportOccupant(ContactKey key, std::uint32_t locId) {
     announce(state_.setOccupant(key, locId));
+}
+
+void Railway::reportDevicePosition(std::int64_t accessory, std::optional<int> position) {
+    announce(state_.reportDevicePosition(accessory, position));
+}
+
+void Railway::reportDeviceContact(ContactKey key, std::optional<bool> occupied) {
+    announce(state_.reportDeviceContact(key, occupied, QDateTime::currentDateTime()));
 }
 
 void Railway::announce(const RailwayChanges& changes) {

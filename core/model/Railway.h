@@ -9,13 +9,27 @@
 #include <QObject>
 #include <QString>
 #include <cstdint>
+#include <functional>
 #include <map>
+#include <optional>
 
 namespace stellwerk::station {
 class StationSession;
 }
 
 namespace stellwerk::model {
+
+// Switches the accessories a device drives instead of the station (RailwayDevices: OpenRailCAN decoder
+// outputs, RO relays).
+class DeviceAccessories {
+public:
+    virtual ~DeviceAccessories() = default;
+    virtual bool drives(std::int64_t accessory) const = 0;
+    // Whether a device input lights the contact: the station's reports of it are then left out.
+    virtual bool lights(ContactKey contact) const = 0;
+    // `done` gets an empty text once the device confirmed the position, else a sentence saying what failed.
+    virtual void switchTo(std::int64_t accessory, int position, std::function<void(const QString&)> done) = 0;
+};
 
 // The railway as the UI sees it: locomotives, accessories, contacts, routes, track plan pages and
 // devices, and the intents a person has (drive, switch, run a route, stop). Intents become station
@@ -103,6 +117,13 @@ public:
     void stop();
     void go();
 
+    // Accessories `switcher` drives go to it, not to the station (null: all go to the station). Not owned.
+    void setDeviceAccessories(DeviceAccessories* switcher) { switcher_ = switcher; }
+    // What a device reported: an accessory's position (nullopt: no longer reported, the device is offline)
+    // and a contact (nullopt: not reported). Announced like the station's reports.
+    void reportDevicePosition(std::int64_t accessory, std::optional<int> position);
+    void reportDeviceContact(ContactKey key, std::optional<bool> occupied);
+
 signals:
     void loaded();
     // isStateReported() changed.
@@ -168,6 +189,7 @@ private:
     ReadingPoller* poller_;
     Programmer* programmer_;
     std::map<std::int64_t, RouteRunner*> runners_;
+    DeviceAccessories* switcher_ = nullptr;
     bool stateReported_ = false;
 };
 

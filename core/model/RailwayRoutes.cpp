@@ -74,6 +74,14 @@ void Railway::switchForRoute(std::int64_t id, int position, std::function<void(c
         done(QStringLiteral("%1 does not exist for a %2").arg(what, accessory->type()));
         return;
     }
+    if (switcher_ && switcher_->drives(id)) {
+        QPointer<Railway> self(this);
+        switcher_->switchTo(id, position, [self, what, done = std::move(done)](const QString& failure) {
+            if (self)
+                done(failure.isEmpty() ? QString() : QStringLiteral("%1: %2").arg(what, failure));
+        });
+        return;
+    }
     QPointer<Railway> self(this);
     session_.request(switchCommand(*accessory, *output),
                      [self, what, done = std::move(done)](const station::CommandResult& result) {

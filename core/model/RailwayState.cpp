@@ -175,6 +175,33 @@ RailwayChanges RailwayState::setOccupant(ContactKey key, std::uint32_t locId) {
     return changes;
 }
 
+RailwayChanges RailwayState::reportDevicePosition(std::int64_t id, std::optional<int> position) {
+    RailwayChanges changes;
+    Accessory* accessory = accessories_.find(id);
+    if (!accessory)
+        return changes;
+    if (position ? accessory->confirmPosition(*position) : accessory->isPositionReported()) {
+        if (!position)
+            accessory->forgetReported();
+        changes.accessories.add(id);
+    }
+    return changes;
+}
+
+RailwayChanges RailwayState::reportDeviceContact(ContactKey key, std::optional<bool> occupied,
+                                                 const QDateTime& now) {
+    RailwayChanges changes;
+    FeedbackContact* contact = contacts_.find(key);
+    if (!contact)
+        contact = &contacts_.put(key, FeedbackContact(std::uint16_t(key >> 16), std::uint16_t(key & 0xffff)));
+    if (occupied ? contact->confirm(*occupied, now) : contact->known()) {
+        if (!occupied)
+            contact->forgetReported();
+        changes.contacts.add(key);
+    }
+    return changes;
+}
+
 void RailwayState::applyDevices(const station::StationUpdates& updates, const QDateTime& now,
                                 RailwayChanges& changes) {
     for (const cs2::DeviceIdentity& identity : updates.devices)

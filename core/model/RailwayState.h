@@ -43,6 +43,10 @@ public:
     RailwayChanges apply(const station::StationUpdates& updates, const QDateTime& now);
     // Who is on a contact (FeedbackContact::occupant); a contact not reported yet is made for it.
     RailwayChanges setOccupant(ContactKey key, std::uint32_t locId);
+    // What a device (not the station) reported of an accessory or a contact; nullopt: not reported any
+    // more. A contact not known yet is made for it.
+    RailwayChanges reportDevicePosition(std::int64_t accessory, std::optional<int> position);
+    RailwayChanges reportDeviceContact(ContactKey key, std::optional<bool> occupied, const QDateTime& now);
 
     Registry<std::uint32_t, Locomotive>& locomotives() { return locomotives_; }
     const Registry<std::uint32_t, Locomotive>& locomotives() const { return locomotives_; }

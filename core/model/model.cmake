@@ -5,6 +5,8 @@ target_sources(stellwerk-model PRIVATE
     model/CommandProblem.cpp
     model/Commands.cpp
     model/Device.cpp
+    model/DeviceBindings.cpp
+    model/DeviceBindings.h
     model/FeedbackContact.cpp
     model/Locomotive.cpp
     model/OccupantBook.cpp
@@ -14,6 +16,8 @@ target_sources(stellwerk-model PRIVATE
     model/Railway.cpp
     model/Railway.h
     model/RailwayHandhelds.cpp
+    model/RailwayDevices.cpp
+    model/RailwayDevices.h
     model/RailwayHandhelds.h
     model/RailwayRoutes.cpp
     model/RailwayState.cpp
@@ -24,4 +28,4 @@ target_sources(stellwerk-model PRIVATE
     model/RoutePlan.cpp
     model/TrackLayout.cpp
 )
-target_link_libraries(stellwerk-model PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-station stellwerk-handhelds Qt6::Core)
+target_link_libraries(stellwerk-model PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-station stellwerk-handhelds stellwerk-orccentral stellwerk-romodule Qt6::Core)

@@ -2,9 +2,12 @@
 
 #include "cs2/Codec.h"
 #include "cs2/Request.h"
+#include "sim/BusGateway.h"
 #include "sim/HttpConfigServer.h"
 #include "sim/SimulatedBus.h"
 #include "sim/SimulatedMs1.h"
+#include "sim/SimulatedOrcDevices.h"
+#include "sim/SimulatedRoModule.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationHandhelds.h"
 #include "sim/StationLayout.h"
@@ -26,6 +29,7 @@ struct DemoRun {
 };
 constexpr DemoRun DemoRuns[] = {{0x4001, 600}, {0x4002, 600}};
 constexpr std::uint8_t Headlights = 0; // F0
+constexpr int SidingPeriodMs = 5000;
 
 // Commands the station as a controller on the bus would, before anyone connects.
 void command(SimulatedStation& station, cs2::MessageBody body) {
@@ -49,6 +53,12 @@ EmbeddedStation::EmbeddedStation() = default;
 
 // Trains first (they drive the station), then the server (it forwards the station's frames).
 EmbeddedStation::~EmbeddedStation() {
+    siding_.reset();
+    gateway_.reset();
+    encoder_.reset();
+    decoder_.reset();
+    roModule_.reset();
+    deviceBus_.reset();
     trains_.reset();
     web_.reset();
     server_.reset();
@@ -84,7 +94,7 @@ bool EmbeddedStation::start() {
         return false;
     }
     handheld_->plugIn();
-    if (!startWebServer())
+    if (!startWebServer() || !startDeviceBus())
         return false;
     trains_ = std::make_unique<TrainMovement>(*station_, TrainTrack::demo());
     if (report_)
@@ -117,6 +127,41 @@ bool EmbeddedStation::startWebServer() {
         return false;
     }
     return true;
+}
+
+// The demo's devices on a bus of their own behind a gateway: OpenRailCAN and the MS1 handheld cannot share
+// one bus (notes O26), and a real layout would put them on a USB-CAN adapter's bus the same way.
+bool EmbeddedStation::startDeviceBus() {
+    deviceBus_ = std::make_unique<SimulatedBus>();
+    roModule_ = std::make_unique<SimulatedRoModule>(ro::RoProfile::simulator(1));
+    decoder_ = std::make_unique<SimulatedOrcDecoder>(DemoOrcDecoder);
+    encoder_ = std::make_unique<SimulatedOrcEncoder>(DemoOrcEncoder);
+    deviceBus_->attach(*roModule_);
+    deviceBus_->attach(*decoder_);
+    deviceBus_->attach(*encoder_);
+    decoder_->plugIn();
+    encoder_->plugIn();
+    gateway_ = std::make_unique<BusGateway>(*deviceBus_);
+    if (!gateway_->listen()) {
+        error_ = gateway_->errorString();
+        return false;
+    }
+    siding_ = std::make_unique<QTimer>();
+    QObject::connect(siding_.get(), &QTimer::timeout, [this] {
+        encoder_->setInput(0, !(encoder_->inputs() & 1)); // a wagon pushed onto the siding and back
+        roModule_->setInput(1, !roModule_->input(1));
+    });
+    siding_->start(SidingPeriodMs);
+    return true;
+}
+
+std::vector<transport::TransportSettings> EmbeddedStation::deviceBuses() const {
+    if (!gateway_)
+        return {};
+    transport::TcpSettings tcp;
+    tcp.host = QStringLiteral("127.0.0.1");
+    tcp.port = gateway_->port();
+    return {tcp};
 }
 
 QString EmbeddedStation::webAddress() const {

@@ -3,13 +3,18 @@
 #include "transport/LocalPeer.h"
 
 #include <QString>
+#include <QTimer>
 #include <cstdint>
 #include <functional>
 #include <memory>
 
 namespace stellwerk::sim {
 
+class BusGateway;
 class HttpConfigServer;
+class SimulatedOrcDecoder;
+class SimulatedOrcEncoder;
+class SimulatedRoModule;
 class SimulatedBus;
 class SimulatedMs1;
 class SimulatedStation;
@@ -27,6 +32,11 @@ public:
     static constexpr std::uint32_t NewMfxDecoder = 0x7a3c1e10;
     // The UID of the demo's MS1 handheld.
     static constexpr std::uint32_t DemoHandheld = 0x000204B3;
+    // The demo's devices on its device bus (deviceBuses()): an OpenRailCAN 8-output decoder and 32-input
+    // encoder (UIDs of developer 0x3A2E, "Michael F. Schwarzer" in the document's example) and RO module 1
+    // of the simulator's profile (ro::RoProfile::simulator(1)).
+    static constexpr std::uint32_t DemoOrcDecoder = 0x3A2E0101;
+    static constexpr std::uint32_t DemoOrcEncoder = 0x3A2E0102;
 
     // Makes a new embedded station for each connection that asks for the simulated one.
     static transport::LocalPeerFactory factory();
@@ -47,6 +57,11 @@ public:
     QString url() const;
     // Its web server with the files and the locomotive pictures: "http://127.0.0.1:<port>".
     QString webAddress() const override;
+    // The gateway of its device bus: "tcp" to 127.0.0.1 and the gateway's port.
+    std::vector<transport::TransportSettings> deviceBuses() const override;
+    SimulatedRoModule* roModule() const { return roModule_.get(); }
+    SimulatedOrcDecoder* orcDecoder() const { return decoder_.get(); }
+    SimulatedOrcEncoder* orcEncoder() const { return encoder_.get(); }
 
     SimulatedStation* station() const { return station_.get(); }
     // The demo's MS1 handheld on the station's bus (it logs in to the station, which is its master, and takes
@@ -63,6 +78,7 @@ public:
 
 private:
     void putOnBus();
+    bool startDeviceBus();
     bool startWebServer();
 
     std::unique_ptr<SimulatedBus> bus_;
@@ -72,6 +88,12 @@ private:
     std::unique_ptr<StationServer> server_;
     std::unique_ptr<HttpConfigServer> web_;
     std::unique_ptr<TrainMovement> trains_;
+    std::unique_ptr<SimulatedBus> deviceBus_;
+    std::unique_ptr<SimulatedRoModule> roModule_;
+    std::unique_ptr<SimulatedOrcDecoder> decoder_;
+    std::unique_ptr<SimulatedOrcEncoder> encoder_;
+    std::unique_ptr<BusGateway> gateway_;
+    std::unique_ptr<QTimer> siding_; // the encoder's input 0 and the module's input 1 change now and then
     OccupantReport report_;
     QString error_;
 };

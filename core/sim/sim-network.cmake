@@ -1,6 +1,8 @@
 # The simulated CS2's world and network side (core/sim): moving trains, the UDP/TCP/HTTP servers and
 # the demo layout embedded as the Qt resources :/demo-layout/config/ and :/demo-layout/icons/.
 target_sources(stellwerk-simulator PRIVATE
+    sim/BusGateway.cpp
+    sim/BusGateway.h
     sim/DemoLayoutTrack.cpp
     sim/HttpConfigServer.cpp
     sim/HttpConfigServer.h

@@ -5,6 +5,7 @@
 #include <QString>
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace stellwerk::transport {
 
@@ -23,6 +24,9 @@ public:
     // Where the started peer serves files over HTTP like a station's web server ("http://127.0.0.1:8080"),
     // empty when it serves none.
     virtual QString webAddress() const { return {}; }
+    // Further buses the started peer has devices on (the embedded station's OpenRailCAN devices and RO
+    // module), reached like a further bus; none by default.
+    virtual std::vector<TransportSettings> deviceBuses() const { return {}; }
 };
 
 // Makes a new local peer for each connection; empty when the program has none.

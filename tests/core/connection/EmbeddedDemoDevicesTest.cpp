@@ -1,0 +1,112 @@
+// The app's demo (issue 15): the embedded station brings an OpenRailCAN decoder and encoder and an RO
+// module on a device bus of its own; with the demo's bindings a route of the demo plan switches turnout
+// W1 by an RO relay and signal A by a decoder output, and the siding's contact is an encoder input.
+
+#include "EmbeddedStationSupport.h"
+#include "model/RailwayDevices.h"
+#include "sim/SimulatedOrcDevices.h"
+#include "sim/SimulatedRoModule.h"
+
+#include <QSignalSpy>
+#include <QTest>
+#include <gtest/gtest.h>
+#include <memory>
+
+using namespace stellwerk;
+using connection::StationConnection;
+
+namespace {
+
+constexpr int WaitMs = 10000;
+
+// The GUI program's wiring: the demo devices with the embedded station, a railway per session and its
+// devices following the connection's sessions.
+struct DemoApp {
+    DemoApp() : connection(settings()) {
+        QObject::connect(&connection, &StationConnection::sessionStarted, &connection,
+                         [this](station::StationSession* session) {
+                             devices.reset();
+                             railway = std::make_unique<model::Railway>(*session);
+                             devices = std::make_unique<model::RailwayDevices>(*railway,
+                                                                               model::DeviceBindings::demo());
+                             follow();
+                         });
+        QObject::connect(&connection, &StationConnection::configurationLoaded, &connection,
+                         [this](const station::StartupResult& result) { railway->load(result); });
+        QObject::connect(&connection, &StationConnection::devicesChanged, &connection, [this] { follow(); });
+    }
+    static connection::ConnectionSettings settings() {
+        connection::ConnectionSettings settings = support::withEmbeddedStation();
+        settings.localStationDevices = connection::DeviceSettings::embeddedDemo();
+        return settings;
+    }
+    void follow() {
+        if (devices)
+            devices->setSessions(connection.orcSession(), connection.roModules());
+    }
+
+    StationConnection connection;
+    std::unique_ptr<model::Railway> railway;
+    std::unique_ptr<model::RailwayDevices> devices;
+};
+
+TEST(EmbeddedDemoDevices, TheDemoStationsDevicesAreOnItsDeviceBus) {
+    DemoApp app;
+    app.connection.connectTo(QString());
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] {
+            const orccentral::OrcSession* orc = app.connection.orcSession();
+            const romodule::RoModuleSession* module = app.connection.roModule(QStringLiteral("Demo RO"));
+            return app.connection.state() == StationConnection::State::Ready && orc &&
+                   orc->device(sim::EmbeddedStation::DemoOrcDecoder) &&
+                   orc->device(sim::EmbeddedStation::DemoOrcEncoder) && module &&
+                   module->state() == romodule::RoModuleSession::State::Online;
+        },
+        WaitMs))
+        << app.connection.lastProblem().toStdString();
+    ASSERT_EQ(app.connection.buses().size(), 2u);
+    EXPECT_TRUE(app.connection.buses()[0].profile.expects(bus::Protocol::Mcan))
+        << "the demo MS1 keeps its bus";
+    EXPECT_TRUE(app.connection.buses()[1].profile.expects(bus::Protocol::Orc));
+    EXPECT_EQ(app.connection.orcSession()->device(sim::EmbeddedStation::DemoOrcDecoder)->busId, 0x0101)
+        << "the demo bindings name the decoder by this bus id";
+    EXPECT_TRUE(app.connection.deviceRefusals().isEmpty());
+}
+
+// Route 1 "Einfahrt Gleis 1": A Einfahrsignal (6) green, W1 Einfahrt West (1) to position 1, P1 (7).
+TEST(EmbeddedDemoDevices, ARouteOfTheDemoPlanSwitchesTheRelayAndTheDecoderOutput) {
+    DemoApp app;
+    app.connection.connectTo(QString());
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] {
+            const orccentral::OrcSession* orc = app.connection.orcSession();
+            return app.railway && app.railway->isStateReported() && app.railway->accessory(1) &&
+                   app.railway->accessory(1)->isPositionReported() && orc &&
+                   orc->deviceAt(0x0101); // a decoder has no query: its outputs are known once switched
+        },
+        WaitMs));
+    EXPECT_FALSE(app.railway->accessory(6)->isPositionReported());
+    QSignalSpy finished(app.railway.get(), &model::Railway::routeFinished);
+    QSignalSpy failed(app.railway.get(), &model::Railway::routeFailed);
+    ASSERT_TRUE(app.railway->runRoute(1));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return finished.count() + failed.count() == 1; }, WaitMs));
+    ASSERT_EQ(finished.count(), 1) << failed.at(0).at(1).toString().toStdString();
+    EXPECT_EQ(app.railway->accessory(1)->position(), 1);
+    EXPECT_EQ(app.railway->accessory(6)->position(), 1);
+    EXPECT_TRUE(app.railway->accessory(6)->isPositionReported());
+    EXPECT_TRUE(app.railway->isRouteSet(1));
+}
+
+// The siding's contact follows encoder input 0, which the demo changes every 5 s.
+TEST(EmbeddedDemoDevices, TheSidingsContactIsTheEncodersInput) {
+    DemoApp app;
+    app.connection.connectTo(QString());
+    const model::ContactKey siding = model::contactKey(0, 9);
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return app.railway && app.railway->contact(siding) && app.railway->contact(siding)->known(); },
+        WaitMs));
+    const bool first = app.railway->contact(siding)->occupied();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return app.railway->contact(siding)->occupied() != first; }, WaitMs));
+}
+
+} // namespace
