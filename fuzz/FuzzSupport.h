@@ -70,6 +70,14 @@ inline bool isJsonDocument(std::string_view text, bool allowNewlines) {
     return error.error == QJsonParseError::NoError;
 }
 
+// True when `text` is printable ASCII only (0x20..0x7E): what the codecs' frame reports promise.
+inline bool isPrintableAscii(std::string_view text) {
+    for (const char c : text)
+        if (c < 0x20 || c > 0x7E)
+            return false;
+    return true;
+}
+
 // True when `text` can go to a terminal as it is: valid UTF-8 without control characters (C0, DEL, C1).
 inline bool isPrintableText(std::string_view text) {
     if (!cs2config::isValidUtf8(text))

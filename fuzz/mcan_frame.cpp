@@ -27,13 +27,6 @@ constexpr mcan::HandleRole Roles[] = {mcan::HandleRole::Unknown,      mcan::Hand
                                       mcan::HandleRole::Poll,         mcan::HandleRole::SlaveDescription,
                                       mcan::HandleRole::SystemStatus, mcan::HandleRole::Loco};
 
-bool isPrintableAscii(std::string_view text) {
-    for (const char c : text)
-        if (c < 0x20 || c > 0x7E)
-            return false;
-    return true;
-}
-
 // The details of a broken invariant are written only when it breaks: a run checks thousands of frames.
 void checkRoundTrip(const can::CanFrame& frame, const mcan::Message& message) {
     const can::CanFrame encoded = mcan::encode(message);
@@ -46,9 +39,9 @@ void checkRoundTrip(const can::CanFrame& frame, const mcan::Message& message) {
 void checkReport(const mcan::FrameReport& report) {
     const std::string text = report.text();
     const std::string json = report.json();
-    if (!isPrintableAscii(text))
+    if (!fuzz::isPrintableAscii(text))
         fuzz::fail("FrameReport::text() is not printable ASCII", text);
-    if (!isPrintableAscii(json) || !fuzz::isJsonDocument(json, false))
+    if (!fuzz::isPrintableAscii(json) || !fuzz::isJsonDocument(json, false))
         fuzz::fail("FrameReport::json() is not valid JSON in printable ASCII", json);
 }
 

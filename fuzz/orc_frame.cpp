@@ -20,13 +20,6 @@ namespace {
 
 constexpr std::size_t MaximumFrames = 64; // longer runs add no coverage, only time
 
-bool isPrintableAscii(std::string_view text) {
-    for (const char c : text)
-        if (c < 0x20 || c > 0x7E)
-            return false;
-    return true;
-}
-
 // The details of a broken invariant are written only when it breaks: a run checks thousands of frames.
 void checkRoundTrip(const can::CanFrame& frame, const orc::Message& message) {
     const can::CanFrame encoded = orc::encode(message);
@@ -49,9 +42,9 @@ void checkDefaultPriority(const orc::Message& message) {
 void checkReport(const orc::FrameReport& report) {
     const std::string text = report.text();
     const std::string json = report.json();
-    if (!isPrintableAscii(text))
+    if (!fuzz::isPrintableAscii(text))
         fuzz::fail("FrameReport::text() is not printable ASCII", text);
-    if (!isPrintableAscii(json) || !fuzz::isJsonDocument(json, false))
+    if (!fuzz::isPrintableAscii(json) || !fuzz::isJsonDocument(json, false))
         fuzz::fail("FrameReport::json() is not valid JSON in printable ASCII", json);
 }
 
