@@ -29,6 +29,11 @@ LANG=de_DE.UTF-8 app --size 1920x1080 --screenshot "$shots/main-window-de-1920x1
 app --decode docs/examples/bus-session.log --panel frameDecoderPanel --screenshot "$shots/frame-decoder.png"
 app --panel statusPanel --screenshot "$shots/status-gauges.png"
 app --panel busMonitorPanel --screenshot "$shots/bus-monitor.png"
+# The Devices panel with the demo's RO module and OpenRailCAN devices, at both sizes and in both languages.
+app --panel devicesPanel --size 1366x768 --screenshot "$shots/devices.png"
+LANG=de_DE.UTF-8 app --panel devicesPanel --size 1366x768 --screenshot "$shots/devices-de.png"
+app --panel devicesPanel --size 1920x1080 --screenshot "$shots/devices-1920x1080.png"
+LANG=de_DE.UTF-8 app --panel devicesPanel --size 1920x1080 --screenshot "$shots/devices-de-1920x1080.png"
 # The Handhelds panel with the demo's MS1, at both sizes and in both languages.
 app --panel handheldsPanel --size 1366x768 --screenshot "$shots/handhelds.png"
 LANG=de_DE.UTF-8 app --panel handheldsPanel --size 1366x768 --screenshot "$shots/handhelds-de.png"

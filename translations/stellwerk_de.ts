@@ -364,6 +364,133 @@
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::BindingsDialog</name>
+    <message>
+        <source>Device bindings</source>
+        <translation>Geräte-Zuordnungen</translation>
+    </message>
+    <message>
+        <source>Article</source>
+        <translation>Artikel</translation>
+    </message>
+    <message>
+        <source>Switched by</source>
+        <translation>Geschaltet von</translation>
+    </message>
+    <message>
+        <source>Contact</source>
+        <translation>Kontakt</translation>
+    </message>
+    <message>
+        <source>Lit by</source>
+        <translation>Gemeldet von</translation>
+    </message>
+    <message>
+        <source>Articles switched by a device instead of the station</source>
+        <translation>Artikel, die ein Gerät statt der Zentrale schaltet</translation>
+    </message>
+    <message>
+        <source>Contacts lit by a device instead of an S88 module</source>
+        <translation>Kontakte, die ein Gerät statt eines S88-Moduls meldet</translation>
+    </message>
+    <message>
+        <source>RO relay</source>
+        <translation>RO-Relais</translation>
+    </message>
+    <message>
+        <source>OpenRailCAN decoder output</source>
+        <translation>OpenRailCAN-Dekoderausgang</translation>
+    </message>
+    <message>
+        <source>OpenRailCAN decoder (its position)</source>
+        <translation>OpenRailCAN-Dekoder (seine Stellung)</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>RO input</source>
+        <translation>RO-Eingang</translation>
+    </message>
+    <message>
+        <source>OpenRailCAN encoder input</source>
+        <translation>OpenRailCAN-Enkodereingang</translation>
+    </message>
+    <message>
+        <source>The module&apos;s name</source>
+        <translation>Der Name des Moduls</translation>
+    </message>
+    <message>
+        <source>The decoder&apos;s bus id (Ziel-Id)</source>
+        <translation>Die Bus-ID des Dekoders (Ziel-Id)</translation>
+    </message>
+    <message>
+        <source>relay </source>
+        <translation>Relais </translation>
+    </message>
+    <message>
+        <source>output </source>
+        <translation>Ausgang </translation>
+    </message>
+    <message>
+        <source>The encoder&apos;s UID</source>
+        <translation>Die UID des Enkoders</translation>
+    </message>
+    <message>
+        <source>input </source>
+        <translation>Eingang </translation>
+    </message>
+    <message>
+        <source>Choose an article and the module or decoder that switches it.</source>
+        <translation>Wählen Sie einen Artikel und das Modul oder den Dekoder, der ihn schaltet.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no bus id: write it in hexadecimal, 0x0000 to 0xFFFF.</source>
+        <translation>„%1“ ist keine Bus-ID: bitte hexadezimal, 0x0000 bis 0xFFFF.</translation>
+    </message>
+    <message>
+        <source>Choose a contact and the module or encoder that lights it.</source>
+        <translation>Wählen Sie einen Kontakt und das Modul oder den Enkoder, der ihn meldet.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no UID: write it in hexadecimal.</source>
+        <translation>„%1“ ist keine UID: bitte hexadezimal.</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>module %1, contact %2</source>
+        <translation>Modul %1, Kontakt %2</translation>
+    </message>
+    <message>
+        <source>relay %1 of “%2”</source>
+        <translation>Relais %1 von „%2“</translation>
+    </message>
+    <message>
+        <source>OpenRailCAN decoder %1, output %2</source>
+        <translation>OpenRailCAN-Dekoder %1, Ausgang %2</translation>
+    </message>
+    <message>
+        <source>OpenRailCAN decoder %1 (its position)</source>
+        <translation>OpenRailCAN-Dekoder %1 (seine Stellung)</translation>
+    </message>
+    <message>
+        <source>input %1 of “%2”</source>
+        <translation>Eingang %1 von „%2“</translation>
+    </message>
+    <message>
+        <source>OpenRailCAN encoder %1, input %2</source>
+        <translation>OpenRailCAN-Enkoder %1, Eingang %2</translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::BusMonitorFilterBar</name>
     <message>
         <source>the Loc-ID is not understood; write e.g. 0xC003, 49155 or dcc 3</source>
@@ -917,6 +1044,185 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>The device did not answer; its setting is unknown. Try again.</source>
         <translation>Das Gerät hat nicht geantwortet; seine Einstellung ist unbekannt. Bitte erneut versuchen.</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::DeviceTableModel</name>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>booster / system device</source>
+        <translation>Booster / Systemgerät</translation>
+    </message>
+    <message>
+        <source>throttle</source>
+        <translation>Fahrpult</translation>
+    </message>
+    <message>
+        <source>decoder</source>
+        <translation>Dekoder</translation>
+    </message>
+    <message>
+        <source>encoder</source>
+        <translation>Enkoder</translation>
+    </message>
+    <message>
+        <source>legacy decoder</source>
+        <translation>Legacy-Dekoder</translation>
+    </message>
+    <message>
+        <source>legacy encoder</source>
+        <translation>Legacy-Enkoder</translation>
+    </message>
+    <message>
+        <source>type %1</source>
+        <translation>Typ %1</translation>
+    </message>
+    <message>
+        <source>gone</source>
+        <translation>verschwunden</translation>
+    </message>
+    <message>
+        <source>OpenRailCAN %1</source>
+        <translation>OpenRailCAN-%1</translation>
+    </message>
+    <message>
+        <source>bus id %1</source>
+        <translation>Bus-ID %1</translation>
+    </message>
+    <message>
+        <source>getting its bus id</source>
+        <translation>erhält seine Bus-ID</translation>
+    </message>
+    <message>
+        <source>online</source>
+        <translation>online</translation>
+    </message>
+    <message>
+        <source>offline: misses its pings</source>
+        <translation>offline: antwortet nicht auf Pings</translation>
+    </message>
+    <message>
+        <source>refused: its bus id is taken</source>
+        <translation>abgewiesen: seine Bus-ID ist vergeben</translation>
+    </message>
+    <message numerus="yes">
+        <source>RO module, %n relay(s), %1-bit</source>
+        <translation>
+            <numerusform>RO-Modul, %n Relais, %1 Bit</numerusform>
+            <numerusform>RO-Modul, %n Relais, %1 Bit</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>bus %1: %2 / %3</source>
+        <translation>Bus %1: %2 / %3</translation>
+    </message>
+    <message>
+        <source>refused</source>
+        <translation>abgewiesen</translation>
+    </message>
+    <message>
+        <source>bus not connected</source>
+        <translation>Bus nicht verbunden</translation>
+    </message>
+    <message>
+        <source>reading its relays</source>
+        <translation>liest seine Relais</translation>
+    </message>
+    <message>
+        <source>offline: does not answer</source>
+        <translation>offline: antwortet nicht</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::DevicesPanel</name>
+    <message>
+        <source>Not connected.</source>
+        <translation>Nicht verbunden.</translation>
+    </message>
+    <message>
+        <source>OpenRailCAN: Stellwerk is not the central.</source>
+        <translation>OpenRailCAN: Stellwerk ist nicht die Zentrale.</translation>
+    </message>
+    <message>
+        <source>OpenRailCAN: its bus is not connected.</source>
+        <translation>OpenRailCAN: sein Bus ist nicht verbunden.</translation>
+    </message>
+    <message numerus="yes">
+        <source>OpenRailCAN: %1 of %n device(s) online.</source>
+        <translation>
+            <numerusform>OpenRailCAN: %1 von %n Gerät online.</numerusform>
+            <numerusform>OpenRailCAN: %1 von %n Geräten online.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>RO modules: %1 of %n online.</source>
+        <translation>
+            <numerusform>RO-Module: %1 von %n online.</numerusform>
+            <numerusform>RO-Module: %1 von %n online.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Refused: %1.</source>
+        <translation>Abgewiesen: %1.</translation>
+    </message>
+    <message>
+        <source>Modules you add or change are used from the next connection (Station ▸ Connect).</source>
+        <translation>Hinzugefügte oder geänderte Module gelten ab der nächsten Verbindung (Zentrale ▸ Verbinden).</translation>
+    </message>
+    <message>
+        <source>Remove RO module</source>
+        <translation>RO-Modul entfernen</translation>
+    </message>
+    <message>
+        <source>Remove the module &quot;%1&quot; from the station settings? Its bindings stay until you remove them.</source>
+        <translation>Das Modul „%1“ aus den Einstellungen der Zentrale entfernen? Seine Zuordnungen bleiben, bis Sie sie entfernen.</translation>
+    </message>
+    <message>
+        <source>Add RO module…</source>
+        <translation>RO-Modul hinzufügen…</translation>
+    </message>
+    <message>
+        <source>Change…</source>
+        <translation>Ändern…</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Bindings…</source>
+        <translation>Zuordnungen…</translation>
+    </message>
+    <message>
+        <source>Choose a device to see its relays, outputs and inputs.</source>
+        <translation>Wählen Sie ein Gerät, um seine Relais, Ausgänge und Eingänge zu sehen.</translation>
+    </message>
+    <message>
+        <source>The demo station brings its own devices; modules you add are for your own station.</source>
+        <translation>Die Demo-Zentrale bringt eigene Geräte mit; hinzugefügte Module gelten für Ihre eigene Zentrale.</translation>
+    </message>
+    <message>
+        <source>The demo&apos;s bindings: what you change here lasts until you connect again.</source>
+        <translation>Die Zuordnungen der Demo: Änderungen gelten bis zur nächsten Verbindung.</translation>
+    </message>
+    <message>
+        <source>Saved with the station settings.</source>
+        <translation>Wird mit den Einstellungen der Zentrale gespeichert.</translation>
     </message>
 </context>
 <context>
@@ -1892,6 +2198,68 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>Handhelds</source>
         <translation>Handgeräte</translation>
     </message>
+    <message>
+        <source>Devices</source>
+        <translation>Geräte</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::OrcDeviceView</name>
+    <message>
+        <source>OpenRailCAN device %1</source>
+        <translation>OpenRailCAN-Gerät %1</translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation>Eingänge</translation>
+    </message>
+    <message>
+        <source>Outputs as the decoder last confirmed them (%1 until it confirms a switch)</source>
+        <translation>Ausgänge, wie der Dekoder sie zuletzt bestätigt hat (%1, bis er eine Schaltung bestätigt)</translation>
+    </message>
+    <message>
+        <source>The central no longer knows this device.</source>
+        <translation>Die Zentrale kennt dieses Gerät nicht mehr.</translation>
+    </message>
+    <message>
+        <source>%1, bus id %2, version %3.%4</source>
+        <translation>%1, Bus-ID %2, Version %3.%4</translation>
+    </message>
+    <message>
+        <source>Getting its bus id from the central.</source>
+        <translation>Erhält seine Bus-ID von der Zentrale.</translation>
+    </message>
+    <message>
+        <source>Online: answers the central&apos;s pings.</source>
+        <translation>Online: antwortet auf die Pings der Zentrale.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Offline: missed %n ping(s); what it reported is %1.</source>
+        <translation>
+            <numerusform>Offline: %n Ping verpasst; was es gemeldet hat, ist %1.</numerusform>
+            <numerusform>Offline: %n Pings verpasst; was es gemeldet hat, ist %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Refused: another device has its bus id and it did not take a new one.</source>
+        <translation>Abgewiesen: ein anderes Gerät hat seine Bus-ID, und es hat keine neue angenommen.</translation>
+    </message>
+    <message>
+        <source>the whole device</source>
+        <translation>das ganze Gerät</translation>
+    </message>
+    <message>
+        <source>output %1</source>
+        <translation>Ausgang %1</translation>
+    </message>
+    <message>
+        <source>No overload.</source>
+        <translation>Keine Überlast.</translation>
+    </message>
+    <message>
+        <source>OVERLOAD: %1</source>
+        <translation>ÜBERLAST: %1</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::PowerStatus</name>
@@ -2185,6 +2553,159 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Registered mfx decoder %1 on SID %2. It is a locomotive of the list now: name it and save it there; search again for more.</source>
         <translation>mfx-Decoder %1 auf SID %2 angemeldet. Er steht jetzt in der Lokliste: dort benennen und speichern; für weitere erneut suchen.</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::RoModuleDialog</name>
+    <message>
+        <source>Change flags at</source>
+        <translation>Änderungsbits bei</translation>
+    </message>
+    <message>
+        <source>Add RO module</source>
+        <translation>RO-Modul hinzufügen</translation>
+    </message>
+    <message>
+        <source>Edit RO module</source>
+        <translation>RO-Modul ändern</translation>
+    </message>
+    <message>
+        <source>0 (the station&apos;s bus)</source>
+        <translation>0 (der Bus der Zentrale)</translation>
+    </message>
+    <message>
+        <source>29-bit (extended)</source>
+        <translation>29 Bit (erweitert)</translation>
+    </message>
+    <message>
+        <source>11-bit (standard, CAN adapters only)</source>
+        <translation>11 Bit (Standard, nur CAN-Adapter)</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Bus</source>
+        <translation>Bus</translation>
+    </message>
+    <message>
+        <source>Frames</source>
+        <translation>Rahmen</translation>
+    </message>
+    <message>
+        <source>Request id</source>
+        <translation>Anfrage-ID</translation>
+    </message>
+    <message>
+        <source>Answer id</source>
+        <translation>Antwort-ID</translation>
+    </message>
+    <message>
+        <source>Relays at</source>
+        <translation>Relais bei</translation>
+    </message>
+    <message>
+        <source>Inputs at</source>
+        <translation>Eingänge bei</translation>
+    </message>
+    <message>
+        <source>Read inputs every</source>
+        <translation>Eingänge lesen alle</translation>
+    </message>
+    <message>
+        <source>RO modules name no ids and no register map; take them from the module&apos;s manual or its switches. The user guide (Help) lists Stellwerk&apos;s defaults.</source>
+        <translation>RO-Module nennen weder IDs noch Registerbelegung; entnehmen Sie sie der Anleitung des Moduls oder seinen Schaltern. Das Handbuch (Hilfe) nennt Stellwerks Vorgaben.</translation>
+    </message>
+    <message>
+        <source>count</source>
+        <translation>Anzahl</translation>
+    </message>
+    <message>
+        <source>The module needs a name.</source>
+        <translation>Das Modul braucht einen Namen.</translation>
+    </message>
+    <message>
+        <source>Another module is called &quot;%1&quot;.</source>
+        <translation>Ein anderes Modul heißt bereits „%1“.</translation>
+    </message>
+    <message>
+        <source>Every id and address is a hexadecimal number.</source>
+        <translation>Jede ID und Adresse ist eine Hexadezimalzahl.</translation>
+    </message>
+    <message>
+        <source>Register addresses go up to 0xFFFF.</source>
+        <translation>Registeradressen gehen bis 0xFFFF.</translation>
+    </message>
+    <message>
+        <source>The module cannot be used so: %1</source>
+        <translation>So kann das Modul nicht benutzt werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::RoModuleView</name>
+    <message>
+        <source>Relay %1 was not switched: the module does not answer.</source>
+        <translation>Relais %1 wurde nicht geschaltet: das Modul antwortet nicht.</translation>
+    </message>
+    <message>
+        <source>The relays were not switched off: the module does not answer.</source>
+        <translation>Die Relais wurden nicht ausgeschaltet: das Modul antwortet nicht.</translation>
+    </message>
+    <message>
+        <source>Not switched: %1</source>
+        <translation>Nicht geschaltet: %1</translation>
+    </message>
+    <message>
+        <source>Answers %1 · repeated %2 · timed out %3 · refused %4 · late or foreign %5 · unreadable %6</source>
+        <translation>Antworten %1 · wiederholt %2 · ohne Antwort %3 · abgelehnt %4 · verspätet oder fremd %5 · unlesbar %6</translation>
+    </message>
+    <message>
+        <source>Reading the relays…</source>
+        <translation>Liest die Relais…</translation>
+    </message>
+    <message>
+        <source>Online. A relay changes colour once the module confirmed it.</source>
+        <translation>Online. Ein Relais wechselt die Farbe, sobald das Modul es bestätigt hat.</translation>
+    </message>
+    <message>
+        <source>Offline: the module does not answer. Relays and inputs are %1 until it answers again.</source>
+        <translation>Offline: das Modul antwortet nicht. Relais und Eingänge sind %1, bis es wieder antwortet.</translation>
+    </message>
+    <message>
+        <source>Relays (click one to switch it)</source>
+        <translation>Relais (zum Schalten anklicken)</translation>
+    </message>
+    <message>
+        <source>All relays off</source>
+        <translation>Alle Relais aus</translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation>Eingänge</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::SignalGrid</name>
+    <message>
+        <source>on</source>
+        <translation>ein</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>%1: %2, waiting for the device to confirm the change</source>
+        <translation>%1: %2, wartet auf die Bestätigung des Geräts</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>

@@ -364,6 +364,133 @@
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::BindingsDialog</name>
+    <message>
+        <source>Device bindings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Article</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switched by</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lit by</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Articles switched by a device instead of the station</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contacts lit by a device instead of an S88 module</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RO relay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OpenRailCAN decoder output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OpenRailCAN decoder (its position)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RO input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OpenRailCAN encoder input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The module&apos;s name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The decoder&apos;s bus id (Ziel-Id)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>relay </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>output </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The encoder&apos;s UID</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>input </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose an article and the module or decoder that switches it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no bus id: write it in hexadecimal, 0x0000 to 0xFFFF.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose a contact and the module or encoder that lights it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no UID: write it in hexadecimal.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>module %1, contact %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>relay %1 of “%2”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OpenRailCAN decoder %1, output %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OpenRailCAN decoder %1 (its position)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>input %1 of “%2”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OpenRailCAN encoder %1, input %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::BusMonitorFilterBar</name>
     <message>
         <source>the Loc-ID is not understood; write e.g. 0xC003, 49155 or dcc 3</source>
@@ -391,6 +518,7 @@
     </message>
     <message>
         <source>OpenRailCAN</source>
+        <translation></translation>
     </message>
     <message>
         <source>RO</source>
@@ -912,6 +1040,185 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>The device did not answer; its setting is unknown. Try again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::DeviceTableModel</name>
+    <message>
+        <source>Device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>booster / system device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>throttle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>decoder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>encoder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>legacy decoder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>legacy encoder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>type %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gone</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OpenRailCAN %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bus id %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>getting its bus id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>online</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>offline: misses its pings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>refused: its bus id is taken</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>RO module, %n relay(s), %1-bit</source>
+        <translation>
+            <numerusform>RO module, %n relay, %1-bit</numerusform>
+            <numerusform>RO module, %n relays, %1-bit</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>bus %1: %2 / %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>refused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bus not connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading its relays</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>offline: does not answer</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::DevicesPanel</name>
+    <message>
+        <source>Not connected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OpenRailCAN: Stellwerk is not the central.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OpenRailCAN: its bus is not connected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>OpenRailCAN: %1 of %n device(s) online.</source>
+        <translation>
+            <numerusform>OpenRailCAN: %1 of %n device online.</numerusform>
+            <numerusform>OpenRailCAN: %1 of %n devices online.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>RO modules: %1 of %n online.</source>
+        <translation>
+            <numerusform>RO modules: %1 of %n online.</numerusform>
+            <numerusform>RO modules: %1 of %n online.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Refused: %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Modules you add or change are used from the next connection (Station ▸ Connect).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove RO module</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the module &quot;%1&quot; from the station settings? Its bindings stay until you remove them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add RO module…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bindings…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose a device to see its relays, outputs and inputs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The demo station brings its own devices; modules you add are for your own station.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The demo&apos;s bindings: what you change here lasts until you connect again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved with the station settings.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1888,6 +2195,68 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>Handhelds</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Devices</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::OrcDeviceView</name>
+    <message>
+        <source>OpenRailCAN device %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Outputs as the decoder last confirmed them (%1 until it confirms a switch)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The central no longer knows this device.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, bus id %2, version %3.%4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Getting its bus id from the central.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Online: answers the central&apos;s pings.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Offline: missed %n ping(s); what it reported is %1.</source>
+        <translation>
+            <numerusform>Offline: missed %n ping; what it reported is %1.</numerusform>
+            <numerusform>Offline: missed %n pings; what it reported is %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Refused: another device has its bus id and it did not take a new one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the whole device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>output %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No overload.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OVERLOAD: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::PowerStatus</name>
@@ -2180,6 +2549,159 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Registered mfx decoder %1 on SID %2. It is a locomotive of the list now: name it and save it there; search again for more.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::RoModuleDialog</name>
+    <message>
+        <source>Change flags at</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add RO module</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edit RO module</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>0 (the station&apos;s bus)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>29-bit (extended)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>11-bit (standard, CAN adapters only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bus</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Request id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Answer id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Relays at</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Inputs at</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read inputs every</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RO modules name no ids and no register map; take them from the module&apos;s manual or its switches. The user guide (Help) lists Stellwerk&apos;s defaults.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The module needs a name.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Another module is called &quot;%1&quot;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every id and address is a hexadecimal number.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Register addresses go up to 0xFFFF.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The module cannot be used so: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::RoModuleView</name>
+    <message>
+        <source>Relay %1 was not switched: the module does not answer.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The relays were not switched off: the module does not answer.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not switched: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Answers %1 · repeated %2 · timed out %3 · refused %4 · late or foreign %5 · unreadable %6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the relays…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Online. A relay changes colour once the module confirmed it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Offline: the module does not answer. Relays and inputs are %1 until it answers again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Relays (click one to switch it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All relays off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::SignalGrid</name>
+    <message>
+        <source>on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2, waiting for the device to confirm the change</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

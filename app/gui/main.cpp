@@ -174,10 +174,13 @@ void saveScreenshotAndQuit(QWidget& window, const StationConnection& connection,
 
 // The railway's accessories and contacts that devices switch and light, following the connection's device
 // sessions as they come and go.
-void bindDevices(StationConnection& connection, stellwerk::model::Railway& railway,
-                 const stellwerk::model::DeviceBindings& saved) {
-    auto* devices = new stellwerk::model::RailwayDevices(
-        railway, connection.address().isEmpty() ? stellwerk::model::DeviceBindings::demo() : saved, &railway);
+// The bindings are read anew for every railway: the Devices panel may have changed them.
+void bindDevices(StationConnection& connection, stellwerk::model::Railway& railway, QSettings& saved) {
+    auto* devices = new stellwerk::model::RailwayDevices(railway,
+                                                         connection.address().isEmpty()
+                                                             ? stellwerk::model::DeviceBindings::demo()
+                                                             : stellwerk::model::DeviceBindings::load(saved),
+                                                         &railway);
     const auto follow = [&connection, devices] {
         devices->setSessions(connection.orcSession(), connection.roModules());
     };
@@ -216,14 +219,12 @@ int main(int argc, char* argv[]) {
     QSettings deviceFile(QCoreApplication::organizationName(), QCoreApplication::applicationName());
     connectionSettings.devices = stellwerk::connection::DeviceSettings::load(deviceFile);
     connectionSettings.localStationDevices = stellwerk::connection::DeviceSettings::embeddedDemo();
-    const stellwerk::model::DeviceBindings deviceBindings =
-        stellwerk::model::DeviceBindings::load(deviceFile);
     StationConnection connection{std::move(connectionSettings)}; // outlives the railway and the window
     stellwerk::ui::RailwayBinding railways(connection);          // a railway model per session
     QObject::connect(&railways, &stellwerk::ui::RailwayBinding::railwayChanged, &railways,
-                     [&connection, &deviceBindings](stellwerk::model::Railway* railway) {
+                     [&connection, &deviceFile](stellwerk::model::Railway* railway) {
                          if (railway)
-                             bindDevices(connection, *railway, deviceBindings);
+                             bindDevices(connection, *railway, deviceFile);
                      });
     QObject::connect(
         &railways, &stellwerk::ui::RailwayBinding::railwayChanged, &railways,

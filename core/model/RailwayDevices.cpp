@@ -4,6 +4,7 @@
 #include "romodule/RoModuleSession.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace stellwerk::model {
 
@@ -51,6 +52,20 @@ void RailwayDevices::setSessions(orccentral::OrcSession* orc, const std::vector<
     for (RoModuleSession* module : modules)
         watchModule(module);
     refresh();
+}
+
+void RailwayDevices::setBindings(DeviceBindings bindings) {
+    const DeviceBindings old = std::exchange(bindings_, std::move(bindings));
+    finish([this](const Pending& p) { return !drives(p.accessory); },
+           QStringLiteral("no device switches it any more"));
+    for (const AccessoryBinding& binding : old.accessories)
+        if (!drives(binding.accessory))
+            railway_.reportDevicePosition(binding.accessory, std::nullopt);
+    for (const ContactBinding& binding : old.contacts)
+        if (!lights(binding.contact))
+            railway_.reportDeviceContact(binding.contact, std::nullopt);
+    refresh();
+    emit bindingsChanged();
 }
 
 // Whether `session` is one of the sessions there are now.

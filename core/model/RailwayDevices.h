@@ -36,10 +36,16 @@ public:
     // The device sessions there are now (null / none: gone). Switchings still waiting fail.
     void setSessions(orccentral::OrcSession* orc, const std::vector<romodule::RoModuleSession*>& modules);
     const DeviceBindings& bindings() const { return bindings_; }
+    // Other bindings (the Devices panel's editor): an item no longer bound is no longer reported (the
+    // station has not said where it stands), and its switchings waiting for a device fail.
+    void setBindings(DeviceBindings bindings);
 
     bool drives(std::int64_t accessory) const override;
     bool lights(ContactKey contact) const override;
     void switchTo(std::int64_t accessory, int position, std::function<void(const QString&)> done) override;
+
+signals:
+    void bindingsChanged();
 
 private:
     struct Pending {

@@ -9,6 +9,7 @@
 #include "connect/StationUrlSettings.h"
 #include "connect/TrafficStatus.h"
 #include "connection/StationConnection.h"
+#include "devices/DevicesPanel.h"
 #include "handheldpanel/HandheldsPanel.h"
 #include "keyboard/TurnoutPanel.h"
 #include "layout/LayoutOverview.h"
@@ -135,6 +136,8 @@ void MainWindow::createPanels() {
     m_workspace->addPanel(m_frameDecoder, Qt::BottomDockWidgetArea, m_layoutOverview);
     m_handhelds = new HandheldsPanel(this);
     m_workspace->addPanel(m_handhelds, Qt::BottomDockWidgetArea, m_layoutOverview);
+    m_devices = new DevicesPanel(this);
+    m_workspace->addPanel(m_devices, Qt::BottomDockWidgetArea, m_layoutOverview);
     for (QWidget* front : {static_cast<QWidget*>(m_turnoutPanel), static_cast<QWidget*>(m_throttlePanel),
                            static_cast<QWidget*>(m_layoutOverview)})
         m_workspace->showPanel(front);
@@ -205,6 +208,7 @@ void MainWindow::setConnection(connection::StationConnection* station) {
     m_busMonitor->setConnection(station);
     m_trackPlan->setConnection(station);
     m_handhelds->setConnection(station);
+    m_devices->setConnection(station);
     if (m_connection) {
         connect(m_connection, &connection::StationConnection::problem, this,
                 [this](const QString& message) { showStationProblem(message); });
@@ -223,6 +227,7 @@ void MainWindow::setRailway(model::Railway* railway) {
     m_locomotivePanel->setRailway(railway);
     m_programmingPanel->setRailway(railway);
     m_handhelds->setRailway(railway);
+    m_devices->setRailway(railway);
     m_stopGo->setRailway(railway);
     m_power->setRailway(railway);
 }
@@ -349,6 +354,7 @@ void MainWindow::retranslateDocks() {
     title(m_busMonitor, tr("Bus monitor"));
     title(m_frameDecoder, tr("Frame decoder"));
     title(m_handhelds, tr("Handhelds"));
+    title(m_devices, tr("Devices"));
 }
 
 void MainWindow::chooseLanguage(Language language) {

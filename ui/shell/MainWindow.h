@@ -20,6 +20,7 @@ class BusMonitorPanel;
 class ConnectionStatus;
 class EmergencyStopKeys;
 class FrameDecoderPanel;
+class DevicesPanel;
 class HandheldsPanel;
 class LanguageMenu;
 class LayoutFileActions;
@@ -54,6 +55,7 @@ public:
     Workspace* workspace() const { return m_workspace; }
     FrameDecoderPanel* frameDecoder() const { return m_frameDecoder; }
     HandheldsPanel* handhelds() const { return m_handhelds; }
+    DevicesPanel* devices() const { return m_devices; }
     LayoutOverview* layoutOverview() const { return m_layoutOverview; }
     StatusPanel* statusPanel() const { return m_statusPanel; }
     BusMonitorPanel* busMonitor() const { return m_busMonitor; }
@@ -102,6 +104,7 @@ private:
     Workspace* m_workspace = nullptr;
     LayoutOverview* m_layoutOverview = nullptr;
     HandheldsPanel* m_handhelds = nullptr;
+    DevicesPanel* m_devices = nullptr;
     FrameDecoderPanel* m_frameDecoder = nullptr;
     StatusPanel* m_statusPanel = nullptr;
     BusMonitorPanel* m_busMonitor = nullptr;
