@@ -124,6 +124,27 @@ TEST_F(DevicesPanelTest, AModuleAwayForTwentySecondsIsNotReportedAndSwitchesNoth
     goesAwayAndComesBack(std::chrono::seconds(20));
 }
 
+// The gateway of the device bus is unplugged: the module's row says its bus is not connected, the
+// OpenRailCAN devices leave the table with their central, and nothing is shown as on; plugged in again,
+// everything is read afresh.
+TEST_F(DevicesPanelTest, ABusThatGoesAwaySaysSoAndComesBackReadAfresh) {
+    click(2);
+    ASSERT_TRUE(waitUntil([&] { return relays().state(2) == true; }));
+    gateway.stop();
+    ASSERT_TRUE(
+        waitUntil([&] { return cell(rowOfModule(), Column::State) == QStringLiteral("bus not connected"); }));
+    EXPECT_FALSE(relays().state(2).has_value()) << "what the module said before is no longer vouched for";
+    EXPECT_FALSE(relays().cell(2)->isEnabled());
+    EXPECT_EQ(panel->table().rowCount(), 1) << "the OpenRailCAN devices went with their central";
+    EXPECT_NE(panel->summaryText().indexOf(QStringLiteral("OpenRailCAN: its bus is not connected.")), -1)
+        << panel->summaryText().toStdString();
+    ASSERT_TRUE(gateway.listen());
+    ASSERT_TRUE(waitUntil([&] { return everythingOnline() && relays().state(2).has_value(); }, 20000))
+        << panel->summaryText().toStdString();
+    EXPECT_EQ(relays().state(2), true) << "read back from the module, which kept its relay";
+    EXPECT_TRUE(module.relay(2));
+}
+
 // Frames on the module's answer id that are no RO answer (another program on the bus, a broken module)
 // change nothing on the screen and are counted.
 TEST_F(DevicesPanelTest, GarbageOnTheAnswerIdChangesNothing) {
