@@ -13,6 +13,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <functional>
 
 namespace stellwerk::ui {
 namespace {
@@ -76,21 +77,11 @@ QWidget* BindingsDialog::accessoryLine() {
     m_outputKind->addItem(tr("RO relay"), RoRelay);
     m_outputKind->addItem(tr("OpenRailCAN decoder output"), OrcOutput);
     m_outputKind->addItem(tr("OpenRailCAN decoder (its position)"), OrcPosition);
-    m_outputSource->setEditable(true);
-    auto* line = new QWidget(this);
-    auto* row = new QHBoxLayout(line);
-    row->setContentsMargins(0, 0, 0, 0);
-    auto* add = new QPushButton(tr("Add"), line);
-    add->setObjectName(QStringLiteral("addAccessoryBinding"));
-    auto* remove = new QPushButton(tr("Remove"), line);
-    for (QWidget* widget : std::initializer_list<QWidget*>{m_accessory, m_outputKind, m_outputSource,
-                                                           m_outputNumber, add, remove})
-        row->addWidget(widget, widget == m_accessory || widget == m_outputSource ? 1 : 0);
     connect(m_outputKind, &QComboBox::currentIndexChanged, this, &BindingsDialog::outputKindChanged);
-    connect(add, &QPushButton::clicked, this, &BindingsDialog::addAccessory);
-    connect(remove, &QPushButton::clicked, this, [this] { removeSelected(m_accessories); });
     outputKindChanged();
-    return line;
+    return bindingLine(
+        {m_accessory, m_outputKind, m_outputSource, m_outputNumber}, QStringLiteral("addAccessoryBinding"),
+        [this] { addAccessory(); }, [this] { removeSelected(m_accessories); });
 }
 
 QWidget* BindingsDialog::contactLine() {
@@ -98,20 +89,32 @@ QWidget* BindingsDialog::contactLine() {
         m_contact->addItem(contactName(contact.key()), quint32(contact.key()));
     m_inputKind->addItem(tr("RO input"), RoInput);
     m_inputKind->addItem(tr("OpenRailCAN encoder input"), OrcInput);
-    m_inputSource->setEditable(true);
+    connect(m_inputKind, &QComboBox::currentIndexChanged, this, &BindingsDialog::inputKindChanged);
+    inputKindChanged();
+    return bindingLine(
+        {m_contact, m_inputKind, m_inputSource, m_inputNumber}, QStringLiteral("addContactBinding"),
+        [this] { addContact(); }, [this] { removeSelected(m_contacts); });
+}
+
+// One line under a list: what is bound, the kind of device, which device (typed or chosen) and the
+// number on it, then Add and Remove.
+QWidget* BindingsDialog::bindingLine(const LineFields& fields, const QString& addName,
+                                     const std::function<void()>& add, const std::function<void()>& remove) {
+    fields.source->setEditable(true);
     auto* line = new QWidget(this);
     auto* row = new QHBoxLayout(line);
     row->setContentsMargins(0, 0, 0, 0);
-    auto* add = new QPushButton(tr("Add"), line);
-    add->setObjectName(QStringLiteral("addContactBinding"));
-    auto* remove = new QPushButton(tr("Remove"), line);
-    for (QWidget* widget :
-         std::initializer_list<QWidget*>{m_contact, m_inputKind, m_inputSource, m_inputNumber, add, remove})
-        row->addWidget(widget, widget == m_contact || widget == m_inputSource ? 1 : 0);
-    connect(m_inputKind, &QComboBox::currentIndexChanged, this, &BindingsDialog::inputKindChanged);
-    connect(add, &QPushButton::clicked, this, &BindingsDialog::addContact);
-    connect(remove, &QPushButton::clicked, this, [this] { removeSelected(m_contacts); });
-    inputKindChanged();
+    auto* addButton = new QPushButton(tr("Add"), line);
+    addButton->setObjectName(addName);
+    auto* removeButton = new QPushButton(tr("Remove"), line);
+    row->addWidget(fields.item, 1);
+    row->addWidget(fields.kind);
+    row->addWidget(fields.source, 1);
+    row->addWidget(fields.number);
+    row->addWidget(addButton);
+    row->addWidget(removeButton);
+    connect(addButton, &QPushButton::clicked, this, add);
+    connect(removeButton, &QPushButton::clicked, this, remove);
     return line;
 }
 

@@ -4,6 +4,7 @@
 
 #include <QDialog>
 #include <QStringList>
+#include <functional>
 
 class QComboBox;
 class QLabel;
@@ -56,7 +57,15 @@ public:
     static QString describe(const model::ContactBinding& binding);
 
 private:
+    struct LineFields {
+        QComboBox* item;
+        QComboBox* kind;
+        QComboBox* source;
+        QSpinBox* number;
+    };
     QWidget* accessoryLine();
+    QWidget* bindingLine(const LineFields& fields, const QString& addName, const std::function<void()>& add,
+                         const std::function<void()>& remove);
     QWidget* contactLine();
     void outputKindChanged();
     void inputKindChanged();
