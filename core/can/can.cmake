@@ -5,5 +5,7 @@ target_sources(stellwerk-can PRIVATE
     can/CanFrame.h
     can/FrameText.cpp
     can/FrameText.h
+    can/ReportFields.cpp
+    can/ReportFields.h
 )
 target_link_libraries(stellwerk-can PUBLIC stellwerk-base)

@@ -9,27 +9,7 @@
 namespace stellwerk::mcan {
 namespace {
 
-// Collects a message's fields in the order they are shown.
-class Fields {
-public:
-    Fields& number(std::string_view key, std::uint64_t value) {
-        return add({key, value, FieldFormat::Decimal, {}, 2});
-    }
-    Fields& hex(std::string_view key, std::uint64_t value, unsigned digits = 2) {
-        return add({key, value, FieldFormat::Hex, {}, digits});
-    }
-    Fields& flag(std::string_view key, bool value) {
-        return add({key, value ? 1u : 0u, FieldFormat::Bool, {}, 2});
-    }
-    Fields& text(std::string_view key, std::string value) {
-        return add({key, 0, FieldFormat::Text, std::move(value), 2});
-    }
-    Fields& add(Field field) {
-        list.push_back(std::move(field));
-        return *this;
-    }
-    std::vector<Field> list;
-};
+using Fields = can::FieldList;
 
 void address(Fields& f, const Address& at) {
     f.text("from", isSlaveNode(at.node) ? "slave" : "master")
@@ -242,51 +222,6 @@ void add(Fields& f, const Unknown& m) {
     f.text("why", std::string(m.why));
 }
 
-std::string hexDigits(std::uint64_t value, unsigned digits) {
-    char buffer[24];
-    std::snprintf(buffer, sizeof buffer, "%0*llX", int(digits), static_cast<unsigned long long>(value));
-    return buffer;
-}
-
-std::string quoted(const std::string& text) {
-    std::string out = "\"";
-    for (const char c : text) {
-        if (c == '"' || c == '\\')
-            out += '\\';
-        out += c;
-    }
-    return out + "\"";
-}
-
-std::string textValue(const Field& field) {
-    switch (field.format) {
-    case FieldFormat::Hex:
-        return "0x" + hexDigits(field.number, field.digits);
-    case FieldFormat::Bool:
-        return field.number ? "true" : "false";
-    case FieldFormat::Text:
-        return field.text.find(' ') == std::string::npos && !field.text.empty() ? field.text
-                                                                                : quoted(field.text);
-    case FieldFormat::Decimal:
-        break;
-    }
-    return std::to_string(field.number);
-}
-
-std::string jsonValue(const Field& field) {
-    switch (field.format) {
-    case FieldFormat::Hex:
-        return "\"0x" + hexDigits(field.number, field.digits) + "\"";
-    case FieldFormat::Bool:
-        return field.number ? "true" : "false";
-    case FieldFormat::Text:
-        return quoted(field.text);
-    case FieldFormat::Decimal:
-        break;
-    }
-    return std::to_string(field.number);
-}
-
 // What the frame's handle is, when the roles know it: "object=loco loco=\"003 131-0\"".
 void roleFields(std::vector<Field>& fields, const can::CanFrame& frame, const HandleRoles& roles) {
     const HandleRole role = roles.roleOf(frame);
@@ -315,7 +250,7 @@ std::string printable(std::string_view bytes) {
         if (byte >= 0x20 && byte < 0x7F && c != '\\')
             text += c;
         else
-            text += "\\x" + hexDigits(byte, 2);
+            text += "\\x" + can::hexDigits(byte, 2);
     }
     return text;
 }
@@ -327,10 +262,7 @@ FrameReport::FrameReport(const can::CanFrame& frame, const HandleRoles* roles)
 }
 
 std::string FrameReport::detailText() const {
-    std::string text;
-    for (const Field& field : fields_)
-        text += (text.empty() ? "" : " ") + std::string(field.key) + "=" + textValue(field);
-    return text;
+    return can::fieldsText(fields_);
 }
 
 std::string FrameReport::text() const {
@@ -338,21 +270,11 @@ std::string FrameReport::text() const {
 }
 
 std::string FrameReport::json() const {
-    const std::string candump = can::formatCandump(frame_);
-    const std::size_t hash = candump.find('#');
-    std::string json = "{\"id\":\"" + candump.substr(0, hash) + "\",\"dlc\":" + std::to_string(frame_.dlc) +
-                       ",\"data\":\"" + candump.substr(hash + 1) + "\",\"name\":\"" + std::string(name()) +
-                       "\",\"fields\":{";
-    for (std::size_t i = 0; i < fields_.size(); ++i)
-        json += (i ? "," : "") + quoted(std::string(fields_[i].key)) + ":" + jsonValue(fields_[i]);
-    return json + "}}";
+    return can::reportJson(frame_, name(), fields_);
 }
 
 std::optional<std::uint64_t> FrameReport::number(std::string_view key) const {
-    for (const Field& field : fields_)
-        if (field.key == key && field.format != FieldFormat::Text)
-            return field.number;
-    return std::nullopt;
+    return can::fieldNumber(fields_, key);
 }
 
 } // namespace stellwerk::mcan

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "can/CanFrame.h"
+#include "can/ReportFields.h"
 #include "mcan/Codec.h"
 
 #include <cstdint>
@@ -13,17 +14,9 @@ namespace stellwerk::mcan {
 
 class HandleRoles;
 
-// How a field's number is shown: quantities in decimal, identifiers in hex, flags as booleans.
-enum class FieldFormat : std::uint8_t { Decimal, Hex, Bool, Text };
-
-// One field of a message as people and scripts read it.
-struct Field {
-    std::string_view key;
-    std::uint64_t number = 0;
-    FieldFormat format = FieldFormat::Decimal;
-    std::string text;    // Text fields only: printable ASCII, any other byte written as \xNN
-    unsigned digits = 2; // Hex fields: at least this many digits
-};
+// One field of a message as people and scripts read it (shared with the other protocols' reports).
+using Field = can::Field;
+using FieldFormat = can::FieldFormat;
 
 // Every field of a message, the id's first (sender, node, handle, priority; or stage, UID byte and MID).
 std::vector<Field> describe(const Message& message);

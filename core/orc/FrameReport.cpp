@@ -8,32 +8,7 @@
 namespace stellwerk::orc {
 namespace {
 
-// Collects a message's fields in the order they are shown.
-struct Fields {
-    Fields& number(std::string_view key, std::uint64_t value) {
-        return add({key, value, FieldFormat::Decimal, {}, 2});
-    }
-    Fields& hex(std::string_view key, std::uint64_t value, unsigned digits = 2) {
-        return add({key, value, FieldFormat::Hex, {}, digits});
-    }
-    Fields& flag(std::string_view key, bool value) {
-        return add({key, value ? 1u : 0u, FieldFormat::Bool, {}, 2});
-    }
-    Fields& text(std::string_view key, std::string_view value) {
-        return add({key, 0, FieldFormat::Text, std::string(value), 2});
-    }
-    Fields& add(Field field) {
-        list.push_back(std::move(field));
-        return *this;
-    }
-    std::vector<Field> list;
-};
-
-std::string hexDigits(std::uint64_t value, unsigned digits) {
-    char buffer[24];
-    std::snprintf(buffer, sizeof buffer, "%0*llX", int(digits), static_cast<unsigned long long>(value));
-    return buffer;
-}
+using Fields = can::FieldList;
 
 void origin(Fields& f, const Origin& from, bool answer) {
     f.number("prio", from.prio).text("type", deviceTypeName(from.type)).hex("sender", from.busId, 4);
@@ -201,8 +176,8 @@ void add(Fields& f, const FlashSizeAnswer& m) {
 void add(Fields& f, const FlashData& m) {
     origin(f, m.from, m.answer);
     f.hex("target", m.target, 4).number("count", m.count);
-    f.text("bytes", hexDigits(m.bytes[0], 2) + hexDigits(m.bytes[1], 2) + hexDigits(m.bytes[2], 2) +
-                        hexDigits(m.bytes[3], 2));
+    f.text("bytes", can::hexDigits(m.bytes[0], 2) + can::hexDigits(m.bytes[1], 2) +
+                        can::hexDigits(m.bytes[2], 2) + can::hexDigits(m.bytes[3], 2));
 }
 void add(Fields& f, const FlashChecksum& m) {
     origin(f, m.from, m.answer);
@@ -212,45 +187,6 @@ void add(Fields& f, const Unknown& m) {
     const Header h = readId(m.id);
     f.number("prio", h.prio).number("type", h.type).hex("group", h.group).flag("answer", h.answer);
     f.hex("sender", h.busId, 4).text("why", m.why);
-}
-
-std::string quoted(const std::string& text) {
-    std::string out = "\"";
-    for (const char c : text) {
-        if (c == '"' || c == '\\')
-            out += '\\';
-        out += c;
-    }
-    return out + "\"";
-}
-
-std::string textValue(const Field& field) {
-    switch (field.format) {
-    case FieldFormat::Hex:
-        return "0x" + hexDigits(field.number, field.digits);
-    case FieldFormat::Bool:
-        return field.number ? "true" : "false";
-    case FieldFormat::Text:
-        return field.text.find(' ') == std::string::npos && !field.text.empty() ? field.text
-                                                                                : quoted(field.text);
-    case FieldFormat::Decimal:
-        break;
-    }
-    return std::to_string(field.number);
-}
-
-std::string jsonValue(const Field& field) {
-    switch (field.format) {
-    case FieldFormat::Hex:
-        return "\"0x" + hexDigits(field.number, field.digits) + "\"";
-    case FieldFormat::Bool:
-        return field.number ? "true" : "false";
-    case FieldFormat::Text:
-        return quoted(field.text);
-    case FieldFormat::Decimal:
-        break;
-    }
-    return std::to_string(field.number);
 }
 
 } // namespace
@@ -272,10 +208,7 @@ FrameReport::FrameReport(const can::CanFrame& frame)
     : frame_(frame), message_(decode(frame)), fields_(describe(message_)) {}
 
 std::string FrameReport::detailText() const {
-    std::string text;
-    for (const Field& field : fields_)
-        text += (text.empty() ? "" : " ") + std::string(field.key) + "=" + textValue(field);
-    return text;
+    return can::fieldsText(fields_);
 }
 
 std::string FrameReport::text() const {
@@ -283,21 +216,11 @@ std::string FrameReport::text() const {
 }
 
 std::string FrameReport::json() const {
-    const std::string candump = can::formatCandump(frame_);
-    const std::size_t hash = candump.find('#');
-    std::string json = "{\"id\":\"" + candump.substr(0, hash) + "\",\"dlc\":" + std::to_string(frame_.dlc) +
-                       ",\"data\":\"" + candump.substr(hash + 1) + "\",\"name\":\"" + std::string(name()) +
-                       "\",\"fields\":{";
-    for (std::size_t i = 0; i < fields_.size(); ++i)
-        json += (i ? "," : "") + quoted(std::string(fields_[i].key)) + ":" + jsonValue(fields_[i]);
-    return json + "}}";
+    return can::reportJson(frame_, name(), fields_);
 }
 
 std::optional<std::uint64_t> FrameReport::number(std::string_view key) const {
-    for (const Field& field : fields_)
-        if (field.key == key && field.format != FieldFormat::Text)
-            return field.number;
-    return std::nullopt;
+    return can::fieldNumber(fields_, key);
 }
 
 } // namespace stellwerk::orc
