@@ -1,27 +1,16 @@
 #include "LocArgument.h"
 
+#include "CliNumber.h"
+
 #include <array>
 #include <charconv>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <utility>
 
 namespace stellwerk::cli {
 namespace {
-
-// A whole decimal number, or hex with 0x; nullopt for anything else (signs, junk, overflow).
-std::optional<std::uint32_t> parseNumber(std::string_view text, bool* wasHex = nullptr) {
-    const bool hex = text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X');
-    if (wasHex)
-        *wasHex = hex;
-    if (hex)
-        text.remove_prefix(2);
-    std::uint32_t value = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value, hex ? 16 : 10);
-    if (text.empty() || error != std::errc() || end != text.data() + text.size())
-        return std::nullopt;
-    return value;
-}
 
 std::string quoted(std::string_view text) {
     return "'" + std::string(text) + "'";
@@ -78,7 +67,7 @@ Expected<cs2::LocId, std::string> parseLocomotive(std::string_view text) {
 Expected<cs2::LocId, std::string> parseAccessory(std::string_view text) {
     const auto [protocolName, addressText] = splitProtocol(text);
     bool hex = false;
-    const auto address = parseNumber(addressText, &hex);
+    const auto address = parseNumber(addressText, std::numeric_limits<std::uint32_t>::max(), &hex);
     if (protocolName.empty() && hex && address && *address <= 0xFFFF)
         return cs2::LocId(*address);
     const auto protocol = accessoryProtocol(protocolName);

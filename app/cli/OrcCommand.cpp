@@ -1,5 +1,6 @@
 #include "OrcCommand.h"
 
+#include "CliNumber.h"
 #include "buses/Bus.h"
 #include "orccentral/OrcSession.h"
 
@@ -24,30 +25,13 @@ struct OrcJob {
 
 const char* Usage = "orc: takes [--json] [--seconds N] and find, switch TARGET POS or watch";
 
-std::optional<std::uint32_t> number(const std::string& text, std::uint32_t max) {
-    const bool hex = text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X');
-    std::uint32_t value = 0;
-    const char* begin = text.data() + (hex ? 2 : 0);
-    const auto [end, error] = std::from_chars(begin, text.data() + text.size(), value, hex ? 16 : 10);
-    if (begin == text.data() + text.size() || error != std::errc() || end != text.data() + text.size() ||
-        value > max)
-        return std::nullopt;
-    return value;
-}
-
-std::string hex(std::uint32_t value, int digits) {
-    char text[16];
-    std::snprintf(text, sizeof text, "0x%0*X", digits, unsigned(value));
-    return text;
-}
-
 Expected<OrcJob, std::string> readAction(OrcJob job, const std::vector<std::string>& words) {
     job.action = words.empty() ? "" : words[0];
     if ((job.action == "find" || job.action == "watch") && words.size() == 1)
         return job;
     if (job.action == "switch" && words.size() == 3) {
-        const auto target = number(words[1], 0xFFFF);
-        const auto position = number(words[2], 0xFF);
+        const auto target = parseNumber(words[1], 0xFFFF);
+        const auto position = parseNumber(words[2], 0xFF);
         if (!target || !position)
             return std::string("orc switch: TARGET is a Ziel-Id 0..0xFFFF, POS 0..255");
         job.target = std::uint16_t(*target);
@@ -65,8 +49,8 @@ Expected<OrcJob, std::string> parse(const std::vector<std::string>& arguments) {
         if (word == "--json") {
             job.json = true;
         } else if (word == "--seconds" && i + 1 < arguments.size() &&
-                   number(arguments[i + 1], 86400).value_or(0) > 0) {
-            job.seconds = int(*number(arguments[++i], 86400));
+                   parseNumber(arguments[i + 1], 86400).value_or(0) > 0) {
+            job.seconds = int(*parseNumber(arguments[++i], 86400));
         } else {
             return "orc: unknown option '" + word + "'; " + Usage;
         }
@@ -126,13 +110,13 @@ private:
 
     void printDevice(const OrcDevice& device) {
         if (job_.json)
-            out_ << "{\"event\":\"device\",\"uid\":\"" << hex(device.uid, 8) << "\",\"busId\":\""
-                 << hex(device.busId, 4) << "\",\"type\":\"" << typeName(device.type) << "\",\"version\":\""
-                 << hex(device.version, 4) << "\",\"state\":\"" << stateName(device.state) << "\"}"
-                 << std::endl;
+            out_ << "{\"event\":\"device\",\"uid\":\"" << hexNumber(device.uid, 8) << "\",\"busId\":\""
+                 << hexNumber(device.busId, 4) << "\",\"type\":\"" << typeName(device.type)
+                 << "\",\"version\":\"" << hexNumber(device.version, 4) << "\",\"state\":\""
+                 << stateName(device.state) << "\"}" << std::endl;
         else
-            out_ << "device uid=" << hex(device.uid, 8) << " busId=" << hex(device.busId, 4)
-                 << " type=" << typeName(device.type) << " version=" << hex(device.version, 4) << ' '
+            out_ << "device uid=" << hexNumber(device.uid, 8) << " busId=" << hexNumber(device.busId, 4)
+                 << " type=" << typeName(device.type) << " version=" << hexNumber(device.version, 4) << ' '
                  << stateName(device.state) << std::endl;
     }
 
@@ -144,13 +128,13 @@ private:
                     const bool confirmed = result == OrcSession::SwitchResult::Confirmed;
                     const char* outcome = confirmed ? "confirmed" : "sent, unconfirmed";
                     if (job_.json)
-                        out_ << "{\"command\":\"switch\",\"target\":\"" << hex(target, 4)
-                             << "\",\"position\":\"" << hex(position, 2)
+                        out_ << "{\"command\":\"switch\",\"target\":\"" << hexNumber(target, 4)
+                             << "\",\"position\":\"" << hexNumber(position, 2)
                              << "\",\"answered\":" << (confirmed ? "true" : "false") << ",\"outcome\":\""
                              << outcome << "\"}\n";
                     else
-                        out_ << "switch target=" << hex(target, 4) << " position=" << hex(position, 2) << ": "
-                             << outcome << '\n';
+                        out_ << "switch target=" << hexNumber(target, 4)
+                             << " position=" << hexNumber(position, 2) << ": " << outcome << '\n';
                     client_.finish(confirmed ? Acknowledged : NotAcknowledged);
                 });
         session_->switchOutputs(job_.target, job_.position);
@@ -166,17 +150,18 @@ private:
         connect(session_.get(), &OrcSession::inputsChanged, this,
                 [this](std::uint16_t encoder, std::uint32_t inputs, std::uint32_t changed) {
                     if (job_.json)
-                        out_ << "{\"event\":\"inputs\",\"encoder\":\"" << hex(encoder, 4)
-                             << "\",\"inputs\":\"" << hex(inputs, 8) << "\",\"changed\":\"" << hex(changed, 8)
-                             << "\"}" << std::endl;
+                        out_ << "{\"event\":\"inputs\",\"encoder\":\"" << hexNumber(encoder, 4)
+                             << "\",\"inputs\":\"" << hexNumber(inputs, 8) << "\",\"changed\":\""
+                             << hexNumber(changed, 8) << "\"}" << std::endl;
                     else
-                        out_ << "inputs encoder=" << hex(encoder, 4) << " inputs=" << hex(inputs, 8)
-                             << " changed=" << hex(changed, 8) << std::endl;
+                        out_ << "inputs encoder=" << hexNumber(encoder, 4)
+                             << " inputs=" << hexNumber(inputs, 8) << " changed=" << hexNumber(changed, 8)
+                             << std::endl;
                 });
         connect(session_.get(), &OrcSession::overloadChanged, this,
                 [this](std::uint16_t busId, std::uint8_t port, std::uint8_t kind) {
                     out_ << (job_.json ? "{\"event\":\"overload\",\"busId\":\"" : "overload busId=")
-                         << hex(busId, 4) << (job_.json ? "\",\"port\":" : " port=") << int(port)
+                         << hexNumber(busId, 4) << (job_.json ? "\",\"port\":" : " port=") << int(port)
                          << (job_.json ? ",\"kind\":" : " kind=") << int(kind) << (job_.json ? "}" : "")
                          << std::endl;
                 });

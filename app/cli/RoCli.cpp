@@ -1,5 +1,6 @@
 #include "RoCli.h"
 
+#include "CliNumber.h"
 #include "can/FrameText.h"
 #include "ro/Codec.h"
 
@@ -10,19 +11,6 @@ namespace stellwerk::cli {
 namespace {
 
 using KeyValues = std::map<std::string, std::string, std::less<>>;
-
-std::optional<std::uint32_t> parseNumber(std::string_view text) {
-    int base = 10;
-    if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X')) {
-        text.remove_prefix(2);
-        base = 16;
-    }
-    std::uint32_t value = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value, base);
-    if (text.empty() || error != std::errc() || end != text.data() + text.size())
-        return std::nullopt;
-    return value;
-}
 
 // A number key within `max`; the error names the key and what it got.
 Expected<std::uint32_t, std::string> numberOf(const KeyValues& keys, std::string_view key, std::uint32_t max,

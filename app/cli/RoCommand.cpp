@@ -1,5 +1,6 @@
 #include "RoCommand.h"
 
+#include "CliNumber.h"
 #include "RoCli.h"
 #include "buses/Bus.h"
 #include "romodule/RoModuleSession.h"
@@ -28,23 +29,6 @@ struct RoJob {
     std::optional<int> seconds;
 };
 
-std::optional<std::uint32_t> number(const std::string& text, std::uint32_t max) {
-    const bool hex = text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X');
-    std::uint32_t value = 0;
-    const char* begin = text.data() + (hex ? 2 : 0);
-    const auto [end, error] = std::from_chars(begin, text.data() + text.size(), value, hex ? 16 : 10);
-    if (begin == text.data() + text.size() || error != std::errc() || end != text.data() + text.size() ||
-        value > max)
-        return std::nullopt;
-    return value;
-}
-
-std::string hex(std::uint32_t value, int digits) {
-    char text[16];
-    std::snprintf(text, sizeof text, "0x%0*X", digits, unsigned(value));
-    return text;
-}
-
 const char* Usage = "ro: takes --module req=ID,resp=ID[,std] [--json] [--timeout MS] and read ADDRESS WIDTH, "
                     "write ADDRESS WIDTH VALUE, switch RELAY on|off or watch [--seconds N]";
 
@@ -53,19 +37,19 @@ Expected<RoJob, std::string> readAction(RoJob job, const std::vector<std::string
     const auto count = words.size();
     job.action = count ? words[0] : "";
     if ((job.action == "read" && count == 3) || (job.action == "write" && count == 4)) {
-        const auto address = number(words[1], 0xFFFF);
+        const auto address = parseNumber(words[1], 0xFFFF);
         if (!address || !ro::widthFromName(words[2], job.width))
             return std::string("ro ") + job.action + ": ADDRESS is 0..0xFFFF, WIDTH bit, byte, word or long";
         job.address = std::uint16_t(*address);
         const auto value =
-            count == 4 ? number(words[3], ro::maxValue(job.width)) : std::optional<std::uint32_t>(0);
+            count == 4 ? parseNumber(words[3], ro::maxValue(job.width)) : std::optional<std::uint32_t>(0);
         if (!value)
             return "ro write: VALUE " + words[3] + " does not fit a " + std::string(ro::widthName(job.width));
         job.value = *value;
         return job;
     }
     if (job.action == "switch" && count == 3 && (words[2] == "on" || words[2] == "off")) {
-        const auto relay = number(words[1], 16);
+        const auto relay = parseNumber(words[1], 16);
         if (!relay || *relay == 0)
             return std::string("ro switch: RELAY is 1..16");
         job.value = *relay;
@@ -73,8 +57,8 @@ Expected<RoJob, std::string> readAction(RoJob job, const std::vector<std::string
         return job;
     }
     if (job.action == "watch" && count == 3 && words[1] == "--seconds" &&
-        number(words[2], 86400).value_or(0) > 0)
-        job.seconds = int(*number(words[2], 86400));
+        parseNumber(words[2], 86400).value_or(0) > 0)
+        job.seconds = int(*parseNumber(words[2], 86400));
     if (job.action == "watch" && (count == 1 || job.seconds))
         return job;
     return std::string(Usage);
@@ -93,10 +77,10 @@ Expected<RoJob, std::string> parse(const std::vector<std::string>& arguments) {
             if (!ids)
                 return "ro: " + ids.error();
             job.ids = *ids, job.haveIds = true;
-        } else if (word == "--timeout" && hasValue && number(arguments[i + 1], 10000).value_or(0) > 0) {
-            job.timeoutMs = int(*number(arguments[++i], 10000));
-        } else if (word == "--seconds" && hasValue && number(arguments[i + 1], 86400).value_or(0) > 0) {
-            job.seconds = int(*number(arguments[++i], 86400));
+        } else if (word == "--timeout" && hasValue && parseNumber(arguments[i + 1], 10000).value_or(0) > 0) {
+            job.timeoutMs = int(*parseNumber(arguments[++i], 10000));
+        } else if (word == "--seconds" && hasValue && parseNumber(arguments[i + 1], 86400).value_or(0) > 0) {
+            job.seconds = int(*parseNumber(arguments[++i], 86400));
         } else {
             return "ro: unknown option '" + word + "'; " + Usage;
         }
@@ -157,14 +141,14 @@ private:
 
     void print(const ro::Outcome& outcome, std::optional<std::uint32_t> value) {
         const int digits = 2 * int(std::max(1u, ro::byteCount(job_.width)));
-        const std::string valueText = hex(value.value_or(job_.value), digits);
+        const std::string valueText = hexNumber(value.value_or(job_.value), digits);
         if (job_.json)
-            out_ << "{\"command\":\"" << job_.action << "\",\"address\":\"" << hex(job_.address, 4)
+            out_ << "{\"command\":\"" << job_.action << "\",\"address\":\"" << hexNumber(job_.address, 4)
                  << "\",\"width\":\"" << ro::widthName(job_.width) << "\",\"value\":\"" << valueText
                  << "\",\"answered\":" << (outcome.kind == ro::Outcome::Kind::NoAnswer ? "false" : "true")
                  << ",\"outcome\":\"" << outcome.text() << "\"}\n";
         else
-            out_ << job_.action << " address=" << hex(job_.address, 4)
+            out_ << job_.action << " address=" << hexNumber(job_.address, 4)
                  << " width=" << ro::widthName(job_.width) << " value=" << valueText << ": " << outcome.text()
                  << '\n';
     }
@@ -176,11 +160,11 @@ private:
                 return;
             if (job_.json)
                 out_ << "{\"command\":\"switch\",\"relay\":" << job_.value
-                     << ",\"on\":" << (job_.on ? "true" : "false") << ",\"relays\":\"" << hex(relays, 4)
+                     << ",\"on\":" << (job_.on ? "true" : "false") << ",\"relays\":\"" << hexNumber(relays, 4)
                      << "\",\"outcome\":\"" << outcome << "\"}\n";
             else
                 out_ << "switch relay=" << job_.value << (job_.on ? " on" : " off") << ": " << outcome
-                     << " relays=" << hex(relays, 4) << '\n';
+                     << " relays=" << hexNumber(relays, 4) << '\n';
             client_.finish(status);
         };
         connect(session_.get(), &RoModuleSession::outputsChanged, this,
@@ -215,10 +199,11 @@ private:
         connect(session_.get(), &RoModuleSession::inputsChanged, this,
                 [this](std::uint32_t inputs, std::uint32_t changed) {
                     if (job_.json)
-                        out_ << "{\"event\":\"inputs\",\"inputs\":\"" << hex(inputs, 4) << "\",\"changed\":\""
-                             << hex(changed, 4) << "\"}" << std::endl;
+                        out_ << "{\"event\":\"inputs\",\"inputs\":\"" << hexNumber(inputs, 4)
+                             << "\",\"changed\":\"" << hexNumber(changed, 4) << "\"}" << std::endl;
                     else
-                        out_ << "inputs=" << hex(inputs, 4) << " changed=" << hex(changed, 4) << std::endl;
+                        out_ << "inputs=" << hexNumber(inputs, 4) << " changed=" << hexNumber(changed, 4)
+                             << std::endl;
                 });
         client_.finishOnInterrupt(Acknowledged);
         session_->start();

@@ -1,5 +1,6 @@
 #include "StreamCommand.h"
 
+#include "CliNumber.h"
 #include "can/FrameText.h"
 #include "cs2/Codec.h"
 #include "cs2config/ConfigStreamKeys.h"
@@ -34,14 +35,8 @@ std::string hex16(std::uint16_t value) {
 }
 
 std::optional<std::uint16_t> parseHash(std::string_view text) {
-    int base = 10;
-    if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X'))
-        text.remove_prefix(2), base = 16;
-    unsigned value = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value, base);
-    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || value > 0xFFFF)
-        return std::nullopt;
-    return std::uint16_t(value);
+    const auto value = parseNumber(text, 0xFFFF);
+    return value ? std::optional(std::uint16_t(*value)) : std::nullopt;
 }
 
 bool isSkippable(const std::string& line) {
