@@ -14,6 +14,7 @@ namespace stellwerk::simapp {
 // Everything stellwerk-sim is told on its command line.
 inline constexpr int MaximumHandhelds = 31; // M-CAN logins that may run at once (document 6.2)
 inline constexpr int MaximumRoModules = 64; // far more than one bus polls at 10 Hz (docs/guide/ro-modules.md)
+inline constexpr int MaximumOrcDevices = 64; // decoders, and encoders, each (bus ids 0x0101.., 0x0201..)
 
 struct SimOptions {
     sim::StationServerSettings server;
@@ -26,7 +27,16 @@ struct SimOptions {
     bool handheldMaster = true; // the station is the MS1s' M-CAN master (off: --no-handheld-master)
     int roModules = 0;          // simulated RO relay/IO modules on the station's bus (--ro)
     int roLoseEvery = 0;        // every Nth answer of each RO module lost (--ro-lose-every; 0: none)
-    std::chrono::milliseconds roDelay{0}; // RO answers this late (--ro-delay)
+    std::chrono::milliseconds roDelay{0};          // RO answers this late (--ro-delay)
+    bool orcBooster = false;                       // a simulated OpenRailCAN booster (--orc-booster)
+    std::chrono::milliseconds orcOverloadAfter{0}; // its port overloads, then clears, this often (0: never)
+    int orcOverloadPort = 1;                       // the port that overloads (--orc-overload-port)
+    int orcDecoders = 0;                           // 8-output ORC decoders (--orc-decoders)
+    int orcEncoders = 0;                           // 32-input ORC encoders (--orc-encoders)
+    std::chrono::milliseconds orcEncoderToggle{
+        2000}; // an input of each encoder changes this often (0: never)
+
+    bool hasOrcDevices() const { return orcBooster || orcDecoders > 0 || orcEncoders > 0; }
 };
 
 // The result of reading the command line: options, or a message for the user (and whether it is an error).

@@ -132,6 +132,7 @@ void SimulatedOrcDecoder::act(const orc::Message& message) {
     ++switches_;
     if (acknowledges_)
         say(orc::DecoderSwitch{origin(), true, busId(), outputs_});
+    emit switched(outputs_);
 }
 
 // ---- encoder ---------------------------------------------------------------------------------------------

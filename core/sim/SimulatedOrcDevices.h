@@ -92,6 +92,10 @@ public:
     bool enabled() const { return enabled_; }
     int switchCount() const { return switches_; }
 
+signals:
+    // A dekoder schalten it carried out: its outputs now.
+    void switched(std::uint8_t outputs);
+
 protected:
     void act(const orc::Message& message) override;
 
