@@ -7,6 +7,7 @@
 #include "model/OccupantBook.h"
 #include "model/Railway.h"
 #include "model/RailwayDevices.h"
+#include "model/RailwayThrottles.h"
 #include "monitor/FrameDecoderPanel.h"
 #include "shell/ApplicationInfo.h"
 #include "shell/LanguageSettings.h"
@@ -172,14 +173,16 @@ void saveScreenshotAndQuit(QWidget& window, const StationConnection& connection,
     patience->start(ScreenshotPatienceMs);
 }
 
-// The railway's accessories and contacts that devices switch and light, following the connection's device
-// sessions as they come and go.
+// The railway's accessories and contacts that devices switch and light, and the locos OpenRailCAN throttles
+// drive, following the connection's device sessions as they come and go.
 void bindDevices(StationConnection& connection, stellwerk::model::Railway& railway,
                  const stellwerk::model::DeviceBindings& saved) {
     auto* devices = new stellwerk::model::RailwayDevices(
         railway, connection.address().isEmpty() ? stellwerk::model::DeviceBindings::demo() : saved, &railway);
-    const auto follow = [&connection, devices] {
+    auto* throttles = new stellwerk::model::RailwayThrottles(railway, &railway);
+    const auto follow = [&connection, devices, throttles] {
         devices->setSessions(connection.orcSession(), connection.roModules());
+        throttles->setSession(connection.orcSession());
     };
     QObject::connect(&connection, &StationConnection::devicesChanged, devices, follow);
     follow();
