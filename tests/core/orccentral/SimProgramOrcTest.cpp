@@ -7,7 +7,9 @@
 #include "transport/TcpTransport.h"
 
 #include <QSignalSpy>
+#include <algorithm>
 #include <bit>
+#include <memory>
 
 namespace stellwerk::orccentral::test {
 namespace {
@@ -44,48 +46,63 @@ TEST(SimProgramOrc, BadValuesAreRefusedWithTheReason) {
     }
 }
 
+// The simulator with every kind of device, and the central on its TCP port.
 class SimProgramWithDevices : public ::testing::Test {
 protected:
+    void SetUp() override {
+        const std::uint16_t port = sim.tcpPort();
+        ASSERT_NE(port, 0) << sim.output().toStdString();
+        EXPECT_TRUE(sim.printed("OpenRailCAN: a booster, 2 decoder(s), 1 encoder(s) on the station's bus"));
+        wire = std::make_unique<transport::TcpTransport>(
+            transport::TcpSettings{QStringLiteral("127.0.0.1"), port, {}});
+        bus = std::make_unique<buses::Bus>(*wire, bus::BusProfile::openRailCan(), QStringLiteral("CS2"));
+        central = std::make_unique<OrcSession>(*bus, fastSettings());
+        wire->open();
+        ASSERT_TRUE(waitFor([&] { return wire->state() == transport::Transport::State::Connected; }));
+        central->start();
+        ASSERT_TRUE(waitFor([&] { return onlineCount() == 4; })) << central->devices().size();
+    }
+    std::size_t onlineCount() const {
+        return std::size_t(std::ranges::count_if(
+            central->devices(), [](const OrcDevice& d) { return d.state == OrcDevice::State::Online; }));
+    }
+
     SimProgram sim{QStringList{"--orc-booster", "--orc-overload-after", "300", "--orc-overload-port", "2",
                                "--orc-decoders", "2", "--orc-encoders", "1", "--orc-encoder-toggle", "200"} +
                    Quiet};
+    std::unique_ptr<transport::TcpTransport> wire;
+    std::unique_ptr<buses::Bus> bus;
+    std::unique_ptr<OrcSession> central;
 };
 
 TEST_F(SimProgramWithDevices, TheCentralFindsTheBoosterDecodersAndEncoderOverTcp) {
-    const std::uint16_t port = sim.tcpPort();
-    ASSERT_NE(port, 0) << sim.output().toStdString();
-    EXPECT_TRUE(sim.printed("OpenRailCAN: a booster, 2 decoder(s), 1 encoder(s) on the station's bus"));
-
-    transport::TcpTransport wire(transport::TcpSettings{QStringLiteral("127.0.0.1"), port, {}});
-    buses::Bus bus(wire, bus::BusProfile::openRailCan(), QStringLiteral("CS2"));
-    OrcSession central(bus, fastSettings());
-    QSignalSpy inputs(&central, &OrcSession::inputsChanged);
-    QSignalSpy overloads(&central, &OrcSession::overloadChanged);
-    wire.open();
-    ASSERT_TRUE(waitFor([&] { return wire.state() == transport::Transport::State::Connected; }));
-    central.start();
-    ASSERT_TRUE(waitFor([&] { return central.devices().size() == 4; })) << central.devices().size();
     const std::vector<std::tuple<std::uint32_t, std::uint16_t, orc::DeviceType>> expected{
         {0x3A2E0300, 0x0300, orc::DeviceType::System},
         {0x3A2E0101, 0x0101, orc::DeviceType::CanDecoder},
         {0x3A2E0102, 0x0102, orc::DeviceType::CanDecoder},
         {0x3A2E0201, 0x0201, orc::DeviceType::CanEncoder}};
     for (const auto& [uid, busId, type] : expected) {
-        ASSERT_TRUE(waitFor([&] { return central.device(uid) && central.device(uid)->busId == busId; }))
-            << std::hex << uid;
-        EXPECT_EQ(central.device(uid)->state, OrcDevice::State::Online) << std::hex << uid;
-        EXPECT_EQ(central.device(uid)->type, std::uint8_t(type)) << std::hex << uid;
+        const OrcDevice* device = central->device(uid);
+        ASSERT_NE(device, nullptr) << std::hex << uid;
+        EXPECT_EQ(device->busId, busId) << "the low 16 bits of its UID, which are free";
+        EXPECT_EQ(device->state, OrcDevice::State::Online) << std::hex << uid;
+        EXPECT_EQ(device->type, std::uint8_t(type)) << std::hex << uid;
     }
+}
 
-    QSignalSpy switched(&central, &OrcSession::switchReported);
-    central.switchOutputs(0x0102, 0x05);
+TEST_F(SimProgramWithDevices, TheSecondDecoderConfirmsASwitchTheSimulatorPrints) {
+    QSignalSpy switched(central.get(), &OrcSession::switchReported);
+    central->switchOutputs(0x0102, 0x05);
     ASSERT_TRUE(waitFor([&] { return switched.count() == 1; }));
     EXPECT_EQ(switched.at(0).at(2).value<OrcSession::SwitchResult>(), OrcSession::SwitchResult::Confirmed);
     EXPECT_TRUE(sim.printed("ORC decoder 0x0102: outputs 00000101")) << sim.output().toStdString();
     EXPECT_FALSE(sim.output().contains("ORC decoder 0x0101: outputs")) << "decoder 1 was not switched";
+}
 
-    // The clocks started with the simulator, and the central asks the encoder for its inputs once when it
-    // comes online: the later changes are events of one input each, inputs 0..31 in turn.
+// The clock started with the simulator, and the central asks the encoder for its inputs once when it comes
+// online: the later changes are events of one input each, inputs 0..31 in turn.
+TEST_F(SimProgramWithDevices, TheEncodersInputsChangeOneAtATime) {
+    QSignalSpy inputs(central.get(), &OrcSession::inputsChanged);
     const auto changes = [&inputs] {
         std::vector<std::uint32_t> changed;
         for (const QList<QVariant>& report : inputs)
@@ -93,12 +110,17 @@ TEST_F(SimProgramWithDevices, TheCentralFindsTheBoosterDecodersAndEncoderOverTcp
                 changed.push_back(report.at(2).toUInt());
         return changed;
     };
-    ASSERT_TRUE(waitFor([&] { return changes().size() >= 3; })) << "an input changes every 200 ms";
+    ASSERT_TRUE(waitFor([&] { return changes().size() >= 2; })) << "an input changes every 200 ms";
     EXPECT_EQ(inputs.at(0).at(0).toUInt(), 0x0201u);
     const std::vector<std::uint32_t> changed = changes();
     const std::uint32_t first = changed[changed.size() - 2], second = changed.back();
     EXPECT_EQ(std::popcount(first), 1) << "one input at a time";
     EXPECT_TRUE(second == first << 1 || (first == 0x80000000u && second == 1u)) << "inputs 0..31 in turn";
+}
+
+// Überlast on the port --orc-overload-port named, then "Nix" (cleared).
+TEST_F(SimProgramWithDevices, TheBoostersOverloadComesAndGoes) {
+    QSignalSpy overloads(central.get(), &OrcSession::overloadChanged);
     const auto seen = [&overloads](std::uint8_t kind, qsizetype after) {
         for (qsizetype i = after + 1; i < overloads.count(); ++i)
             if (overloads.at(i).at(2).toUInt() == kind)
@@ -108,7 +130,7 @@ TEST_F(SimProgramWithDevices, TheCentralFindsTheBoosterDecodersAndEncoderOverTcp
     ASSERT_TRUE(waitFor([&] { return seen(1, -1) >= 0 && seen(0, seen(1, -1)) >= 0; }));
     const QList<QVariant> report = overloads.at(seen(1, -1));
     EXPECT_EQ(report.at(0).toUInt(), 0x0300u);
-    EXPECT_EQ(report.at(1).toUInt(), 2u) << "the port --orc-overload-port named";
+    EXPECT_EQ(report.at(1).toUInt(), 2u);
     EXPECT_TRUE(sim.printed("ORC booster: port 2 overloaded"));
 }
 
