@@ -16,7 +16,9 @@
 #include "sim/SimulatedOrcDevices.h"
 #include "transport/TransportAddress.h"
 
+#include <QElapsedTimer>
 #include <QTest>
+#include <iostream>
 
 namespace stellwerk::e2e {
 namespace {
@@ -152,8 +154,13 @@ TEST_P(ThrottlesOverWire, AThrottleDrivesAndStopsTheCs2sLoco) {
     app.connection.connectTo(station.url());
     ASSERT_TRUE(app.ready()) << app.connection.lastProblem().toStdString();
 
+    QElapsedTimer clock;
+    clock.start();
     station.throttle.drive(MfxLoco, 300);
     ASSERT_TRUE(waitFor([&] { return station.station.loco(MfxLoco)->speed == 300; }));
+    // A figure for the record: the throttle's frame to Stellwerk and its CS2 command back to the station.
+    std::cout << "throttle to station over " << wireName(GetParam()) << ": " << clock.nsecsElapsed() / 1000
+              << " us" << std::endl;
     EXPECT_EQ(log.speedsSet(MfxLoco), std::vector<std::uint16_t>{300});
     ASSERT_TRUE(waitFor([&] { return app.railway->locomotive(MfxLoco)->speed() == 300; }));
     station.throttle.querySpeed(MfxLoco);
