@@ -183,5 +183,25 @@ TEST_F(ThrottleBridgeTest, ACommandGivenUpOnIsNotDeliveredWhenTheStationIsBackAf
     stationGoneFor(bench, throttle, station, 20s);
 }
 
+// The station's end of the link is closed (the station is gone; the app's transport reconnects): the
+// throttle's commands, which still reach the central on the device bus, fail at once and none is kept for
+// the station's return.
+TEST_F(ThrottleBridgeTest, CommandsWhileTheStationIsGoneAreNotKeptForItsReturn) {
+    QSignalSpy failed(&railway(), &Railway::locomotiveCommandFailed);
+    bench.railway.stationEnd.close();
+    throttle.drive(0x4006, 555);
+    throttle.setFunction(0x4006, 1, true);
+    ASSERT_TRUE(waitFor([&] { return failed.count() >= 2; })) << "refused while the station is gone";
+    QTest::qWait(1000);
+    bench.railway.stationEnd.open();
+    ASSERT_TRUE(
+        waitFor([&] { return bench.railway.appEnd.state() == transport::Transport::State::Connected; }));
+    QTest::qWait(500);
+    EXPECT_TRUE(station.heard.empty()) << station.heard.front();
+    throttle.drive(0x4006, 120);
+    ASSERT_TRUE(waitFor([&] { return station.has("speed 0x4006 120"); })) << "and drives again";
+    EXPECT_FALSE(station.has("speed 0x4006 555"));
+}
+
 } // namespace
 } // namespace stellwerk::model::test
