@@ -78,6 +78,16 @@ struct Parser {
         "never).",
         "ms", "2000"};
 
+    QCommandLineOption orcThrottle{
+        "orc-throttle",
+        "Also put a simulated OpenRailCAN throttle (UID 0x3A2E0400, bus id 0x0400) on the station's bus that "
+        "drives the loco with this Ziel-Id (e.g. 0x4001, mfx; 0x0018, MM; 0xC003, DCC) now and then, for a "
+        "central that forwards it to the station.",
+        "ziel-id"};
+    QCommandLineOption orcThrottleEvery{
+        "orc-throttle-every", "The throttle changes the speed every MS milliseconds (default 3000).", "ms",
+        "3000"};
+
     Parser() {
         parser.setApplicationDescription(
             "A simulated Märklin Central Station 2 on UDP, TCP, HTTP and optionally CAN.");
@@ -103,7 +113,9 @@ struct Parser {
                            orcOverloadPort,
                            orcDecoders,
                            orcEncoders,
-                           orcEncoderToggle});
+                           orcEncoderToggle,
+                           orcThrottle,
+                           orcThrottleEvery});
     }
 };
 
@@ -142,6 +154,23 @@ QString notIn(const QCommandLineParser& parser, const QCommandLineOption& option
     return "--" + option.names().front() + ": '" + parser.value(option) + "' is not " + range;
 }
 
+std::optional<QString> readOrcThrottle(const Parser& p, SimOptions& options) {
+    const auto every = numberIn(p.parser, p.orcThrottleEvery, 1, 600000);
+    if (!every)
+        return notIn(p.parser, p.orcThrottleEvery, "1..600000 milliseconds");
+    options.orcThrottleEvery = std::chrono::milliseconds(*every);
+    if (!p.parser.isSet(p.orcThrottle))
+        return p.parser.isSet(p.orcThrottleEvery)
+                   ? std::optional<QString>("--orc-throttle-every needs --orc-throttle")
+                   : std::nullopt;
+    bool ok = false;
+    const uint zielId = p.parser.value(p.orcThrottle).toUInt(&ok, 0);
+    if (!ok || zielId > 0xFFFF)
+        return notIn(p.parser, p.orcThrottle, "a Ziel-Id 0..0xFFFF");
+    options.orcThrottleLoco = std::uint16_t(zielId);
+    return std::nullopt;
+}
+
 // OpenRailCAN devices share the station's bus; M-CAN overlaps ORC there (docs/guide/openrailcan.md), so
 // they exclude MS1 handhelds and the station is not the M-CAN master.
 std::optional<QString> readOrc(const Parser& p, SimOptions& options) {
@@ -162,6 +191,8 @@ std::optional<QString> readOrc(const Parser& p, SimOptions& options) {
         return notIn(p.parser, p.orcEncoders, devices);
     if (!toggle)
         return notIn(p.parser, p.orcEncoderToggle, "0..600000 milliseconds");
+    if (const auto problem = readOrcThrottle(p, options))
+        return problem;
     options.orcBooster = p.parser.isSet(p.orcBooster);
     if (!options.orcBooster && (p.parser.isSet(p.orcOverloadAfter) || p.parser.isSet(p.orcOverloadPort)))
         return QString("--orc-overload-after and --orc-overload-port need --orc-booster");

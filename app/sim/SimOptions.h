@@ -27,16 +27,22 @@ struct SimOptions {
     bool handheldMaster = true; // the station is the MS1s' M-CAN master (off: --no-handheld-master)
     int roModules = 0;          // simulated RO relay/IO modules on the station's bus (--ro)
     int roLoseEvery = 0;        // every Nth answer of each RO module lost (--ro-lose-every; 0: none)
-    std::chrono::milliseconds roDelay{0};          // RO answers this late (--ro-delay)
-    bool orcBooster = false;                       // a simulated OpenRailCAN booster (--orc-booster)
-    std::chrono::milliseconds orcOverloadAfter{0}; // its port overloads, then clears, this often (0: never)
-    int orcOverloadPort = 1;                       // the port that overloads (--orc-overload-port)
-    int orcDecoders = 0;                           // 8-output ORC decoders (--orc-decoders)
-    int orcEncoders = 0;                           // 32-input ORC encoders (--orc-encoders)
-    std::chrono::milliseconds orcEncoderToggle{
-        2000}; // an input of each encoder changes this often (0: never)
+    std::chrono::milliseconds roDelay{0}; // RO answers this late (--ro-delay)
+    // OpenRailCAN devices on the station's bus (--orc-*): a booster whose port overloads and clears every
+    // orcOverloadAfter (0: never), decoders, encoders of which an input changes every orcEncoderToggle (0:
+    // never), and a throttle that changes the speed of its loco every orcThrottleEvery.
+    bool orcBooster = false;
+    std::chrono::milliseconds orcOverloadAfter{0};
+    int orcOverloadPort = 1;
+    int orcDecoders = 0;
+    int orcEncoders = 0;
+    std::chrono::milliseconds orcEncoderToggle{2000};
+    std::optional<std::uint16_t> orcThrottleLoco; // its loco's Ziel-Id
+    std::chrono::milliseconds orcThrottleEvery{3000};
 
-    bool hasOrcDevices() const { return orcBooster || orcDecoders > 0 || orcEncoders > 0; }
+    bool hasOrcDevices() const {
+        return orcBooster || orcDecoders > 0 || orcEncoders > 0 || orcThrottleLoco.has_value();
+    }
 };
 
 // The result of reading the command line: options, or a message for the user (and whether it is an error).

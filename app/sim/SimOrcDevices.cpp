@@ -37,7 +37,12 @@ SimOrcDevices::SimOrcDevices(sim::SimulatedBus& bus, const SimOptions& options) 
             std::make_unique<sim::SimulatedOrcEncoder>(FirstEncoderUid + std::uint32_t(n)));
         bus.attach(*encoder);
     }
+    if (options.orcThrottleLoco) {
+        throttle_ = std::make_unique<sim::SimulatedOrcThrottle>(ThrottleUid);
+        bus.attach(*throttle_);
+    }
     QObject::connect(&overloadClock_, &QTimer::timeout, [this] { toggleOverload(); });
+    QObject::connect(&throttleClock_, &QTimer::timeout, [this] { driveNow(); });
     QObject::connect(&inputClock_, &QTimer::timeout, [this] { toggleInputs(); });
 }
 
@@ -48,10 +53,15 @@ void SimOrcDevices::plugIn() {
         decoder->plugIn();
     for (const auto& encoder : encoders_)
         encoder->plugIn();
+    if (throttle_)
+        throttle_->plugIn();
     if (empty())
         return;
     out() << "OpenRailCAN: " << (booster_ ? "a booster, " : "") << decoders_.size() << " decoder(s), "
-          << encoders_.size() << " encoder(s) on the station's bus (no M-CAN master there)" << Qt::endl;
+          << encoders_.size() << " encoder(s)" << (throttle_ ? ", a throttle" : "")
+          << " on the station's bus (no M-CAN master there)" << Qt::endl;
+    if (throttle_)
+        throttleClock_.start(options_.orcThrottleEvery);
     if (booster_ && options_.orcOverloadAfter.count() > 0)
         overloadClock_.start(options_.orcOverloadAfter);
     if (!encoders_.empty() && options_.orcEncoderToggle.count() > 0)
@@ -68,6 +78,13 @@ void SimOrcDevices::toggleOverload() {
         booster_->clearOverload(port);
     out() << "ORC booster: port " << int(port) << (overloaded_ ? " overloaded" : " overload cleared")
           << Qt::endl;
+}
+
+// Lok Speed for its loco: 300, 0, 300, ... (forward).
+void SimOrcDevices::driveNow() {
+    nextSpeed_ = nextSpeed_ == 0 ? 300 : 0;
+    throttle_->drive(*options_.orcThrottleLoco, std::uint16_t(nextSpeed_));
+    out() << "ORC throttle: Lok Speed " << hex(*options_.orcThrottleLoco, 4) << ' ' << nextSpeed_ << Qt::endl;
 }
 
 void SimOrcDevices::toggleInputs() {

@@ -4,6 +4,7 @@
 // input change and the booster's overload come and go.
 #include "OrcRig.h"
 #include "SimProgram.h"
+#include "orc/Codec.h"
 #include "transport/TcpTransport.h"
 
 #include <QSignalSpy>
@@ -21,7 +22,8 @@ TEST(SimProgramOrc, HelpListsTheOrcOptions) {
     SimProgram help({"--help"});
     EXPECT_EQ(help.exitCode(), 0);
     for (const char* option : {"--orc-booster", "--orc-overload-after <ms>", "--orc-overload-port <port>",
-                               "--orc-decoders <N>", "--orc-encoders <N>", "--orc-encoder-toggle <ms>"})
+                               "--orc-decoders <N>", "--orc-encoders <N>", "--orc-encoder-toggle <ms>",
+                               "--orc-throttle <ziel-id>", "--orc-throttle-every <ms>"})
         EXPECT_TRUE(help.output().contains(QString::fromLatin1(option))) << option;
 }
 
@@ -36,6 +38,10 @@ TEST(SimProgramOrc, BadValuesAreRefusedWithTheReason) {
         {{"--orc-encoders", "1", "--orc-encoder-toggle", "1.5"},
          "--orc-encoder-toggle: '1.5' is not 0..600000 milliseconds"},
         {{"--orc-overload-after", "100"}, "--orc-overload-after and --orc-overload-port need --orc-booster"},
+        {{"--orc-throttle", "0x10000"}, "--orc-throttle: '0x10000' is not a Ziel-Id 0..0xFFFF"},
+        {{"--orc-throttle", "0x4001", "--orc-throttle-every", "0"},
+         "--orc-throttle-every: '0' is not 1..600000 milliseconds"},
+        {{"--orc-throttle-every", "100"}, "--orc-throttle-every needs --orc-throttle"},
         {{"--ms1", "1", "--orc-decoders", "1"},
          "--ms1 and OpenRailCAN devices cannot share the station's bus: M-CAN overlaps OpenRailCAN there"},
     };
@@ -132,6 +138,36 @@ TEST_F(SimProgramWithDevices, TheBoostersOverloadComesAndGoes) {
     EXPECT_EQ(report.at(0).toUInt(), 0x0300u);
     EXPECT_EQ(report.at(1).toUInt(), 2u);
     EXPECT_TRUE(sim.printed("ORC booster: port 2 overloaded"));
+}
+
+// --orc-throttle: a throttle (device type 1) that the central finds, sending Lok Speed (D=0) for its loco,
+// 300 and 0 in turn, for a central that forwards it to the station.
+TEST(SimProgramOrc, TheThrottleDrivesItsLocoNowAndThen) {
+    SimProgram sim(QStringList{"--orc-throttle", "0x4001", "--orc-throttle-every", "200"} + Quiet);
+    const std::uint16_t port = sim.tcpPort();
+    ASSERT_NE(port, 0) << sim.output().toStdString();
+    transport::TcpTransport wire(transport::TcpSettings{QStringLiteral("127.0.0.1"), port, {}});
+    buses::Bus bus(wire, bus::BusProfile::openRailCan(), QStringLiteral("CS2"));
+    OrcSession central(bus, fastSettings());
+    std::vector<orc::LocoSpeed> speeds;
+    QObject context;
+    bus.subscribe(bus::Protocol::Orc, &context, [&speeds](const std::vector<can::CanFrame>& frames) {
+        for (const can::CanFrame& frame : frames)
+            if (const auto message = orc::decode(frame); std::holds_alternative<orc::LocoSpeed>(message))
+                speeds.push_back(std::get<orc::LocoSpeed>(message));
+    });
+    wire.open();
+    ASSERT_TRUE(waitFor([&] { return wire.state() == transport::Transport::State::Connected; }));
+    central.start();
+    ASSERT_TRUE(waitFor([&] { return speeds.size() >= 2 && central.device(0x3A2E0400); }));
+    EXPECT_EQ(central.device(0x3A2E0400)->type, std::uint8_t(orc::DeviceType::Loco));
+    for (const orc::LocoSpeed& speed : speeds) {
+        EXPECT_FALSE(speed.answer);
+        EXPECT_EQ(speed.target, 0x4001);
+        EXPECT_EQ(speed.from.busId, 0x0400);
+    }
+    EXPECT_NE(speeds[0].speed, speeds[1].speed) << "300 and 0 in turn";
+    EXPECT_TRUE(sim.printed("ORC throttle: Lok Speed 0x4001 300"));
 }
 
 } // namespace
