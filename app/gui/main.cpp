@@ -7,6 +7,7 @@
 #include "model/OccupantBook.h"
 #include "model/Railway.h"
 #include "model/RailwayDevices.h"
+#include "model/RailwayThrottles.h"
 #include "monitor/FrameDecoderPanel.h"
 #include "shell/ApplicationInfo.h"
 #include "shell/LanguageSettings.h"
@@ -172,17 +173,19 @@ void saveScreenshotAndQuit(QWidget& window, const StationConnection& connection,
     patience->start(ScreenshotPatienceMs);
 }
 
-// The railway's accessories and contacts that devices switch and light, following the connection's device
-// sessions as they come and go.
-// The bindings are read anew for every railway: the Devices panel may have changed them.
+// The railway's accessories and contacts that devices switch and light, and the locos OpenRailCAN throttles
+// drive, following the connection's device sessions as they come and go. The bindings are read anew for
+// every railway: the Devices panel may have changed them.
 void bindDevices(StationConnection& connection, stellwerk::model::Railway& railway, QSettings& saved) {
     auto* devices = new stellwerk::model::RailwayDevices(railway,
                                                          connection.address().isEmpty()
                                                              ? stellwerk::model::DeviceBindings::demo()
                                                              : stellwerk::model::DeviceBindings::load(saved),
                                                          &railway);
-    const auto follow = [&connection, devices] {
+    auto* throttles = new stellwerk::model::RailwayThrottles(railway, &railway);
+    const auto follow = [&connection, devices, throttles] {
         devices->setSessions(connection.orcSession(), connection.roModules());
+        throttles->setSession(connection.orcSession());
     };
     QObject::connect(&connection, &StationConnection::devicesChanged, devices, follow);
     follow();

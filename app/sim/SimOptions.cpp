@@ -52,12 +52,70 @@ struct Parser {
     QCommandLineOption roDelay{"ro-delay", "RO modules answer this many milliseconds late (default 0).", "ms",
                                "0"};
 
+    QCommandLineOption orcBooster{
+        "orc-booster", "Also put a simulated OpenRailCAN booster (UID 0x3A2E0300, bus id 0x0300) on the "
+                       "station's bus; it follows Alles EIN / Aus and keeps the loco commands it is sent."};
+    QCommandLineOption orcOverloadAfter{
+        "orc-overload-after",
+        "The booster reports an overload on its port every MS milliseconds and clears it MS later "
+        "(default 0: never).",
+        "ms", "0"};
+    QCommandLineOption orcOverloadPort{"orc-overload-port", "The booster port that overloads (default 1).",
+                                       "port", "1"};
+    QCommandLineOption orcDecoders{
+        "orc-decoders",
+        "Also put N simulated OpenRailCAN decoders with 8 outputs on the station's bus: decoder n has UID "
+        "0x3A2E0100+n and asks for bus id 0x0100+n; Pos is its outputs, bit n = output n (default 0).",
+        "N", "0"};
+    QCommandLineOption orcEncoders{
+        "orc-encoders",
+        "Also put N simulated OpenRailCAN encoders with 32 inputs on the station's bus: encoder n has UID "
+        "0x3A2E0200+n and asks for bus id 0x0200+n (default 0).",
+        "N", "0"};
+    QCommandLineOption orcEncoderToggle{
+        "orc-encoder-toggle",
+        "Every MS milliseconds one input of each encoder changes, inputs 0 to 31 in turn (default 2000; 0: "
+        "never).",
+        "ms", "2000"};
+
+    QCommandLineOption orcThrottle{
+        "orc-throttle",
+        "Also put a simulated OpenRailCAN throttle (UID 0x3A2E0400, bus id 0x0400) on the station's bus that "
+        "drives the loco with this Ziel-Id (e.g. 0x4001, mfx; 0x0018, MM; 0xC003, DCC) now and then, for a "
+        "central that forwards it to the station.",
+        "ziel-id"};
+    QCommandLineOption orcThrottleEvery{
+        "orc-throttle-every", "The throttle changes the speed every MS milliseconds (default 3000).", "ms",
+        "3000"};
+
     Parser() {
         parser.setApplicationDescription(
             "A simulated Märklin Central Station 2 on UDP, TCP, HTTP and optionally CAN.");
         parser.addHelpOption();
-        parser.addOptions({listen, udpPort, udpReplyHost, udpReplyPort, tcpPort, httpPort, can, layout,
-                           gleisbox, noTrains, tick, ms1, noHandheldMaster, ro, roLoseEvery, roDelay});
+        parser.addOptions({listen,
+                           udpPort,
+                           udpReplyHost,
+                           udpReplyPort,
+                           tcpPort,
+                           httpPort,
+                           can,
+                           layout,
+                           gleisbox,
+                           noTrains,
+                           tick,
+                           ms1,
+                           noHandheldMaster,
+                           ro,
+                           roLoseEvery,
+                           roDelay,
+                           orcBooster,
+                           orcOverloadAfter,
+                           orcOverloadPort,
+                           orcDecoders,
+                           orcEncoders,
+                           orcEncoderToggle,
+                           orcThrottle,
+                           orcThrottleEvery});
     }
 };
 
@@ -88,6 +146,66 @@ std::optional<QString> readRo(const Parser& p, SimOptions& options) {
     options.roModules = *modules;
     options.roLoseEvery = *loseEvery;
     options.roDelay = std::chrono::milliseconds(*delay);
+    return std::nullopt;
+}
+
+// What is wrong with an option's value: "--name: 'value' is not RANGE".
+QString notIn(const QCommandLineParser& parser, const QCommandLineOption& option, const QString& range) {
+    return "--" + option.names().front() + ": '" + parser.value(option) + "' is not " + range;
+}
+
+std::optional<QString> readOrcThrottle(const Parser& p, SimOptions& options) {
+    const auto every = numberIn(p.parser, p.orcThrottleEvery, 1, 600000);
+    if (!every)
+        return notIn(p.parser, p.orcThrottleEvery, "1..600000 milliseconds");
+    options.orcThrottleEvery = std::chrono::milliseconds(*every);
+    if (!p.parser.isSet(p.orcThrottle))
+        return p.parser.isSet(p.orcThrottleEvery)
+                   ? std::optional<QString>("--orc-throttle-every needs --orc-throttle")
+                   : std::nullopt;
+    bool ok = false;
+    const uint zielId = p.parser.value(p.orcThrottle).toUInt(&ok, 0);
+    if (!ok || zielId > 0xFFFF)
+        return notIn(p.parser, p.orcThrottle, "a Ziel-Id 0..0xFFFF");
+    options.orcThrottleLoco = std::uint16_t(zielId);
+    return std::nullopt;
+}
+
+// OpenRailCAN devices share the station's bus; M-CAN overlaps ORC there (docs/guide/openrailcan.md), so
+// they exclude MS1 handhelds and the station is not the M-CAN master.
+std::optional<QString> readOrc(const Parser& p, SimOptions& options) {
+    constexpr int Longest = 600000;
+    const auto overloadAfter = numberIn(p.parser, p.orcOverloadAfter, 0, Longest);
+    const auto overloadPort = numberIn(p.parser, p.orcOverloadPort, 0, 254);
+    const auto decoders = numberIn(p.parser, p.orcDecoders, 0, MaximumOrcDevices);
+    const auto encoders = numberIn(p.parser, p.orcEncoders, 0, MaximumOrcDevices);
+    const auto toggle = numberIn(p.parser, p.orcEncoderToggle, 0, Longest);
+    const QString devices = "0.." + QString::number(MaximumOrcDevices);
+    if (!overloadAfter)
+        return notIn(p.parser, p.orcOverloadAfter, "0..600000 milliseconds");
+    if (!overloadPort)
+        return notIn(p.parser, p.orcOverloadPort, "a port 0..254");
+    if (!decoders)
+        return notIn(p.parser, p.orcDecoders, devices);
+    if (!encoders)
+        return notIn(p.parser, p.orcEncoders, devices);
+    if (!toggle)
+        return notIn(p.parser, p.orcEncoderToggle, "0..600000 milliseconds");
+    if (const auto problem = readOrcThrottle(p, options))
+        return problem;
+    options.orcBooster = p.parser.isSet(p.orcBooster);
+    if (!options.orcBooster && (p.parser.isSet(p.orcOverloadAfter) || p.parser.isSet(p.orcOverloadPort)))
+        return QString("--orc-overload-after and --orc-overload-port need --orc-booster");
+    options.orcOverloadAfter = std::chrono::milliseconds(*overloadAfter);
+    options.orcOverloadPort = *overloadPort;
+    options.orcDecoders = *decoders;
+    options.orcEncoders = *encoders;
+    options.orcEncoderToggle = std::chrono::milliseconds(*toggle);
+    if (options.hasOrcDevices() && options.handhelds > 0)
+        return QString("--ms1 and OpenRailCAN devices cannot share the station's bus: M-CAN overlaps "
+                       "OpenRailCAN there");
+    if (options.hasOrcDevices())
+        options.handheldMaster = false;
     return std::nullopt;
 }
 
@@ -165,6 +283,8 @@ ParsedOptions parseSimOptions(const QStringList& arguments) {
     options.layoutDirectory = p.parser.value(p.layout);
     options.gleisbox = p.parser.isSet(p.gleisbox);
     options.handheldMaster = !p.parser.isSet(p.noHandheldMaster);
+    if (const auto problem = readOrc(p, options))
+        return failure(*problem);
     options.trains = !p.parser.isSet(p.noTrains);
     return {std::move(options), {}, false};
 }

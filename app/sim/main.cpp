@@ -1,9 +1,10 @@
 // stellwerk-sim: the simulated CS2 as a process, for other programs (and Stellwerk itself) to talk to
 // over UDP, TCP, HTTP and optionally a CAN interface; with --ms1 N, MS1 handhelds share its bus, with --ro N,
-// RO relay/IO modules.
+// RO relay/IO modules, with --orc-booster, --orc-decoders N and --orc-encoders N, OpenRailCAN devices.
 
 #include "ShutdownSignal.h"
 #include "SimOptions.h"
+#include "SimOrcDevices.h"
 #include "sim/HttpConfigServer.h"
 #include "sim/SimulatedBus.h"
 #include "sim/SimulatedMs1.h"
@@ -71,6 +72,7 @@ struct Simulator {
     std::vector<std::unique_ptr<sim::SimulatedMs1>> handhelds;
     std::vector<std::unique_ptr<sim::SimulatedRoModule>> roModules;
     std::unique_ptr<QTimer> roInputs; // an input of each RO module changes now and then
+    std::unique_ptr<simapp::SimOrcDevices> orcDevices;
     std::unique_ptr<sim::StationServer> server;
     std::unique_ptr<sim::HttpConfigServer> http;
     std::unique_ptr<sim::TrainMovement> trains;
@@ -140,6 +142,7 @@ void addHandhelds(Simulator& simulator, const simapp::SimOptions& options) {
         reportHandheld(*ms1);
     }
     addRoModules(simulator, options);
+    simulator.orcDevices = std::make_unique<simapp::SimOrcDevices>(*simulator.bus, options);
     simulator.server =
         std::make_unique<sim::StationServer>(*simulator.station, *simulator.bus, options.server);
 }
@@ -149,6 +152,8 @@ void plugInHandhelds(const Simulator& simulator) {
         ms1->plugIn();
     if (!simulator.handhelds.empty())
         out() << "handhelds: " << simulator.handhelds.size() << " MS1 on the bus, logging in" << Qt::endl;
+    if (simulator.orcDevices)
+        simulator.orcDevices->plugIn();
 }
 
 bool start(Simulator& simulator, const simapp::SimOptions& options, sim::StationLayout layout) {
@@ -156,7 +161,7 @@ bool start(Simulator& simulator, const simapp::SimOptions& options, sim::Station
     stationOptions.gleisbox = options.gleisbox;
     stationOptions.handheldMaster = options.handheldMaster;
     simulator.station = std::make_unique<sim::SimulatedStation>(std::move(layout), stationOptions);
-    if (options.handhelds > 0 || options.handheldMaster || options.roModules > 0)
+    if (options.handhelds > 0 || options.handheldMaster || options.roModules > 0 || options.hasOrcDevices())
         addHandhelds(simulator, options);
     else
         simulator.server = std::make_unique<sim::StationServer>(*simulator.station, options.server);

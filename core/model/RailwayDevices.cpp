@@ -141,7 +141,16 @@ void RailwayDevices::watchOrc() {
     connect(
         orc_, &OrcSession::inputsChanged, this,
         [this](std::uint16_t encoder, std::uint32_t inputs, std::uint32_t) { orcInputs(encoder, inputs); });
-    connect(orc_, &OrcSession::deviceChanged, this, &RailwayDevices::refresh);
+    connect(orc_, &OrcSession::deviceChanged, this, &RailwayDevices::orcDeviceChanged);
+}
+
+// A decoder that is not online may lose its outputs (powered off, reset); what it confirmed before is
+// forgotten, so that its articles stay "not reported" until it confirms a switching again.
+void RailwayDevices::orcDeviceChanged(std::uint32_t uid) {
+    const orccentral::OrcDevice* device = orc_ ? orc_->device(uid) : nullptr;
+    if (device && device->state != orccentral::OrcDevice::State::Online)
+        decoderPositions_.erase(device->busId);
+    refresh();
 }
 
 void RailwayDevices::watchModule(RoModuleSession* module) {
@@ -155,16 +164,18 @@ void RailwayDevices::watchModule(RoModuleSession* module) {
     connect(module, &RoModuleSession::stateChanged, this, &RailwayDevices::refresh);
 }
 
-// A confirmed Pos is the decoder's state; an unconfirmed one says nothing, and the switching waiting for it
-// did not reach a confirmed position.
+// A confirmed Pos is the decoder's state. After an unconfirmed one the decoder may have switched or not: its
+// articles are "not reported", and the switching waiting for it did not reach a confirmed position.
 void RailwayDevices::orcSwitched(std::uint16_t target, std::uint8_t position, bool confirmed) {
     if (confirmed)
         decoderPositions_[target] = position;
+    else
+        decoderPositions_.erase(target);
     for (const AccessoryBinding& binding : bindings_.accessories)
         if (const auto* output = std::get_if<OrcOutput>(&binding.output);
             output && output->target == target) {
-            if (confirmed)
-                railway_.reportDevicePosition(binding.accessory, positionOf(*output, position));
+            railway_.reportDevicePosition(binding.accessory,
+                                          confirmed ? positionOf(*output, position) : std::optional<int>());
             finish([&](const Pending& p) { return p.accessory == binding.accessory; },
                    confirmed ? QString() : QStringLiteral("sent, but the decoder did not confirm it"));
         }

@@ -59,6 +59,7 @@ private:
     QString switchOrc(const OrcOutput& output, int position);
     void watchOrc();
     void watchModule(romodule::RoModuleSession* module);
+    void orcDeviceChanged(std::uint32_t uid);
     void orcSwitched(std::uint16_t target, std::uint8_t position, bool confirmed);
     void orcInputs(std::uint16_t encoder, std::uint32_t inputs);
     void moduleOutputs(const QString& module, std::uint32_t outputs);

@@ -19,6 +19,8 @@ target_sources(stellwerk-model PRIVATE
     model/RailwayDevices.cpp
     model/RailwayDevices.h
     model/RailwayHandhelds.h
+    model/RailwayThrottles.cpp
+    model/RailwayThrottles.h
     model/RailwayRoutes.cpp
     model/RailwayState.cpp
     model/ReadingPoller.cpp

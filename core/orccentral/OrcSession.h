@@ -64,6 +64,9 @@ public:
     const OrcDevice* device(std::uint32_t uid) const;
     const OrcDevice* deviceAt(std::uint16_t busId) const;
     bool powerOn() const { return powerOn_; }
+    // The bus it is the central of, and its own bus id there (for the ThrottleBridge beside it).
+    buses::Bus& bus() const { return bus_; }
+    std::uint16_t busId() const { return settings_.busId; }
     // ORC frames no documented form fits (orc.unknown), read and ignored.
     std::uint64_t unreadableFrames() const { return unreadable_; }
 

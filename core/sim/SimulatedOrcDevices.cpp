@@ -132,6 +132,7 @@ void SimulatedOrcDecoder::act(const orc::Message& message) {
     ++switches_;
     if (acknowledges_)
         say(orc::DecoderSwitch{origin(), true, busId(), outputs_});
+    emit switched(outputs_);
 }
 
 // ---- encoder ---------------------------------------------------------------------------------------------
@@ -155,6 +156,52 @@ void SimulatedOrcEncoder::act(const orc::Message& message) {
 
 orc::EncoderStatus SimulatedOrcEncoder::status(bool answer) const {
     return {origin(), answer, busId(), 4, inputs_};
+}
+
+// ---- throttle --------------------------------------------------------------------------------------------
+
+SimulatedOrcThrottle::SimulatedOrcThrottle(std::uint32_t uid, QObject* parent)
+    : SimulatedOrcDevice(uid, orc::DeviceType::Loco, parent) {}
+
+void SimulatedOrcThrottle::drive(std::uint16_t loco, std::uint16_t speed, bool forward) {
+    say(orc::LocoSpeed{origin(), false, loco, std::uint16_t(speed | (forward ? 0 : 0x8000))});
+}
+
+void SimulatedOrcThrottle::setFunction(std::uint16_t loco, std::uint8_t function, bool on) {
+    say(orc::LocoFunction{origin(), false, loco, function, std::uint8_t(on ? 1 : 0)});
+}
+
+void SimulatedOrcThrottle::setFunctions(std::uint16_t loco, std::uint32_t functions) {
+    say(orc::LocoFunctions{origin(), false, loco, functions});
+}
+
+void SimulatedOrcThrottle::emergencyStop(std::optional<std::uint16_t> loco) {
+    say(orc::LocoStop{origin(), loco ? orc::Target::busId(*loco) : orc::Target::all()});
+}
+
+void SimulatedOrcThrottle::querySpeed(std::uint16_t loco) {
+    say(orc::LocoSpeedQuery{origin(), loco});
+}
+
+void SimulatedOrcThrottle::queryFunctions(std::uint16_t loco) {
+    say(orc::LocoFunctionsQuery{origin(), loco});
+}
+
+std::optional<std::uint16_t> SimulatedOrcThrottle::answeredSpeed(std::uint16_t loco) const {
+    const auto found = speeds_.find(loco);
+    return found == speeds_.end() ? std::nullopt : std::optional(found->second);
+}
+
+std::optional<std::uint32_t> SimulatedOrcThrottle::answeredFunctions(std::uint16_t loco) const {
+    const auto found = functions_.find(loco);
+    return found == functions_.end() ? std::nullopt : std::optional(found->second);
+}
+
+void SimulatedOrcThrottle::act(const orc::Message& message) {
+    if (const auto* speed = std::get_if<orc::LocoSpeed>(&message); speed && speed->answer)
+        speeds_[speed->target] = speed->speed;
+    else if (const auto* all = std::get_if<orc::LocoFunctions>(&message); all && all->answer)
+        functions_[all->target] = all->functions;
 }
 
 } // namespace stellwerk::sim

@@ -6,6 +6,7 @@
 #include <QObject>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <vector>
 
 namespace stellwerk::sim {
@@ -92,6 +93,10 @@ public:
     bool enabled() const { return enabled_; }
     int switchCount() const { return switches_; }
 
+signals:
+    // A dekoder schalten it carried out: its outputs now.
+    void switched(std::uint8_t outputs);
+
 protected:
     void act(const orc::Message& message) override;
 
@@ -119,6 +124,35 @@ private:
     orc::EncoderStatus status(bool answer) const;
 
     std::uint32_t inputs_ = 0;
+};
+
+// A throttle (Fahrpult, device type 1): what its user does goes out as loco control (0x81) with D=0, and the
+// answers to its queries (D=1, from whoever holds the loco's state, notes O24) are kept.
+class SimulatedOrcThrottle final : public SimulatedOrcDevice {
+    Q_OBJECT
+
+public:
+    explicit SimulatedOrcThrottle(std::uint32_t uid, QObject* parent = nullptr);
+
+    // Speed 0..1000; `forward` false sets bit 15 (notes O13).
+    void drive(std::uint16_t loco, std::uint16_t speed, bool forward = true);
+    void setFunction(std::uint16_t loco, std::uint8_t function, bool on);
+    void setFunctions(std::uint16_t loco, std::uint32_t functions);
+    // Lok(s) Nothalt for one loco, or (nullopt) all.
+    void emergencyStop(std::optional<std::uint16_t> loco = std::nullopt);
+    void querySpeed(std::uint16_t loco);
+    void queryFunctions(std::uint16_t loco);
+
+    // The last answer for the loco, if one came.
+    std::optional<std::uint16_t> answeredSpeed(std::uint16_t loco) const;
+    std::optional<std::uint32_t> answeredFunctions(std::uint16_t loco) const;
+
+protected:
+    void act(const orc::Message& message) override;
+
+private:
+    std::map<std::uint16_t, std::uint16_t> speeds_;
+    std::map<std::uint16_t, std::uint32_t> functions_;
 };
 
 } // namespace stellwerk::sim

@@ -63,6 +63,8 @@ void OrcDeviceView::attach(orccentral::OrcSession* session) {
             [this](std::uint16_t target, std::uint8_t position, orccentral::OrcSession::SwitchResult result) {
                 if (result == orccentral::OrcSession::SwitchResult::Confirmed)
                     m_confirmed[target] = position;
+                else
+                    m_confirmed.erase(target); // sent, not confirmed: where its outputs stand is unknown
                 update();
             });
 }
@@ -72,6 +74,8 @@ void OrcDeviceView::update() {
     m_title->setText(tr("OpenRailCAN device %1").arg(hexText::of(m_uid, 8)));
     m_details->setText(detailsText());
     const bool online = device && device->state == OrcDevice::State::Online;
+    if (device && !online)
+        m_confirmed.erase(device->busId); // back online, it has confirmed nothing yet
     if (device && device->type == Encoder) {
         m_signalsLabel->setText(tr("Inputs"));
         m_signals->setCount(device->inputCount ? device->inputCount : EncoderInputs);

@@ -139,6 +139,28 @@ TEST_F(DeviceBinding, AnOfflineDecodersAccessoryIsNotReported) {
     EXPECT_EQ(bench.decoder.outputs(), 0x04);
 }
 
+// Like a CS2 article before the station reported it: the decoder has not confirmed any Pos yet.
+TEST_F(DeviceBinding, ADecoderOutputIsNotReportedBeforeItsFirstConfirmedSwitch) {
+    QTest::qWait(300); // pings and their answers pass
+    EXPECT_FALSE(railway().accessory(5)->isPositionReported());
+}
+
+// A decoder powered up again may have lost its outputs: back online, it is "not reported" until it
+// confirms a switching again.
+TEST_F(DeviceBinding, ADecoderThatCameBackIsNotReportedUntilItConfirmsASwitchAgain) {
+    railway().switchAccessory(5, 1);
+    ASSERT_TRUE(waitFor([&] { return reportedAt(5, 1); }));
+    bench.decoder.unplug();
+    ASSERT_TRUE(waitFor([&] { return !railway().accessory(5)->isPositionReported(); }));
+    bench.decoder.plugIn();
+    ASSERT_TRUE(waitFor(
+        [&] { return bench.orc->device(DecoderUid)->state == orccentral::OrcDevice::State::Online; }));
+    QTest::qWait(300); // a few pings answered
+    EXPECT_FALSE(railway().accessory(5)->isPositionReported()) << "claimed what it confirmed before";
+    railway().switchAccessory(5, 1);
+    ASSERT_TRUE(waitFor([&] { return reportedAt(5, 1); }));
+}
+
 TEST_F(DeviceBinding, SessionsThatAreGoneLeaveEveryBoundItemNotReported) {
     railway().switchAccessory(1, 1);
     bench.encoder.setInput(3, true);
@@ -181,6 +203,22 @@ TEST(DeviceBindingUnconfirmed, ADecoderThatDoesNotAcknowledgeLeavesThePositionNo
     ASSERT_TRUE(waitFor([&] { return ended.count() == 1; }));
     EXPECT_FALSE(ended.at(0).at(2).toBool());
     EXPECT_EQ(bench.decoder.outputs(), 0x04) << "the decoder did switch";
+    EXPECT_FALSE(railway.accessory(5)->isPositionReported());
+}
+
+// A decoder that confirmed a Pos and then leaves a switching unconfirmed may be in either: not reported.
+TEST(DeviceBindingUnconfirmed, AnUnconfirmedSwitchingForgetsTheConfirmedPosition) {
+    DeviceBench bench;
+    ASSERT_TRUE(bench.start());
+    Railway& railway = bench.railway.railway;
+    QSignalSpy ended(&railway, &Railway::switchingEnded);
+    railway.switchAccessory(5, 1);
+    ASSERT_TRUE(waitFor([&] { return ended.count() == 1; }));
+    ASSERT_TRUE(railway.accessory(5)->isPositionReported());
+    bench.simulatedBus.detach(bench.decoder); // it hears nothing more, and answers no ping
+    railway.switchAccessory(5, 0);
+    ASSERT_TRUE(waitFor([&] { return ended.count() == 2; }));
+    EXPECT_FALSE(ended.at(1).at(2).toBool());
     EXPECT_FALSE(railway.accessory(5)->isPositionReported());
 }
 
