@@ -27,6 +27,7 @@ list(APPEND STELLWERK_FUZZED_SOURCES
     ${STELLWERK_ROOT}/core/transport/NetworkFraming.cpp
     ${STELLWERK_ROOT}/core/station/DeviceDescription.cpp
     ${STELLWERK_ROOT}/core/station/StatusDataPackets.cpp
+    ${STELLWERK_ROOT}/app/cli/CliNumber.cpp
     ${STELLWERK_ROOT}/app/cli/DecodeCommand.cpp
     ${STELLWERK_ROOT}/app/cli/LocArgument.cpp
     ${STELLWERK_ROOT}/app/cli/RoCli.cpp)
