@@ -5,12 +5,12 @@
 #
 #   scripts/sanitize.sh [core | REGEX]
 #
-# Without an argument every test runs. `core` builds and runs only the tests of tests/core and tests/e2e
-# (what CI runs: the parsers and sessions under the sanitizers; the command-line programs' own tests run
-# in the main build and their parsers in the fuzz targets); any other argument is a ctest -R regex over the
-# test names. The sanitizer
-# options are the environment of the "sanitize" test preset in CMakePresets.json. The last lines printed
-# are ctest's summary, and the exit code is ctest's.
+# Without an argument every test runs. `core` builds and runs the tests of the sessions, transports, model
+# and simulator (tests/core, label "sessions") and tests/e2e: what CI runs. The pure codecs and file
+# formats (label "codec") are left to the main build and to the fuzz targets, which run their parsers under
+# these same sanitizers; the command-line programs' tests to the main build. Any other argument is a ctest
+# -R regex over the test names. The sanitizer options are the environment of the "sanitize" test preset
+# in CMakePresets.json. The last lines printed are ctest's summary, and the exit code is ctest's.
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -24,8 +24,8 @@ case "${1:-}" in
     exit 0
     ;;
 core)
-    build=(--target stellwerk-tests-core --target stellwerk-tests-e2e)
-    selection=(--label-regex '^(core|e2e)$')
+    build=(--target stellwerk-tests-sessions --target stellwerk-tests-e2e)
+    selection=(--label-regex '^(sessions|e2e)$')
     ;;
 *) selection=(--tests-regex "$1") ;;
 esac
