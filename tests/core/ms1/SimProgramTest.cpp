@@ -1,58 +1,20 @@
 // The real stellwerk-sim with --ms1 N: the option is listed and checked, and its handhelds log in over the
 // station's TCP port to a master on the network side (the test's), each with its own UID, name and node.
 
+#include "SimProgram.h"
+
 #include "Ms1TestSupport.h"
 #include "TestMaster.h"
 #include "transport/FrameAssembler.h"
 #include "transport/NetworkFraming.h"
 
-#include <QProcess>
-#include <QRegularExpression>
 #include <QTcpSocket>
 
 namespace stellwerk::sim::test {
 namespace {
 
-// stellwerk-sim on free loopback ports, without trains; its output collected.
-class SimProgram {
-public:
-    explicit SimProgram(const QStringList& arguments) {
-        process_.setProcessChannelMode(QProcess::MergedChannels);
-        process_.start(QStringLiteral(STELLWERK_SIM), arguments);
-    }
-    ~SimProgram() {
-        if (process_.state() != QProcess::NotRunning) {
-            process_.terminate();
-            process_.waitForFinished(WaitMs);
-        }
-    }
-
-    QString output() {
-        out_ += QString::fromUtf8(process_.readAll());
-        return out_;
-    }
-    bool printed(const QString& text) {
-        return waitFor([&] { return output().contains(text); }, 15000);
-    }
-    int exitCode() {
-        process_.waitForFinished(WaitMs);
-        output();
-        return process_.exitCode();
-    }
-    std::uint16_t tcpPort() {
-        const QRegularExpression listening(QStringLiteral("listening: tcp 127\\.0\\.0\\.1:(\\d+)"));
-        QRegularExpressionMatch match;
-        waitFor([&] { return (match = listening.match(output())).hasMatch(); });
-        return match.hasMatch() ? std::uint16_t(match.captured(1).toUInt()) : 0;
-    }
-
-private:
-    QProcess process_;
-    QString out_;
-};
-
-const QStringList Quiet = {"--listen",   "127.0.0.1", "--udp-port",  "0", "--udp-reply-host", "127.0.0.1",
-                           "--tcp-port", "0",         "--http-port", "0", "--no-trains"};
+using support::Quiet;
+using support::SimProgram;
 
 TEST(SimProgram, HelpListsTheMs1Option) {
     SimProgram sim({"--help"});
