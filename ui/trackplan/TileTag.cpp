@@ -159,17 +159,79 @@ QFont TileTag::tagFont(const QFont& font, int tileSize) {
 }
 
 void TileTag::paint(QPainter& painter, const TrackColors& colors) const {
+    paintBacking(painter, colors);
+    paintText(painter, colors);
+}
+
+void TileTag::paintBacking(QPainter& painter, const TrackColors& colors) const {
     if (!shown())
         return;
     QColor backing = m_occupant ? colors.occupied : colors.background;
     backing.setAlpha(m_occupant ? 255 : 215);
     painter.fillRect(m_rect, backing);
-    painter.setPen(m_occupant ? (colors.occupied.lightness() < 150 ? QColor(Qt::white) : QColor(Qt::black))
-                              : colors.text);
+}
+
+QColor TileTag::textColor(const TrackColors& colors) const {
+    if (!m_occupant)
+        return colors.text;
+    return colors.occupied.lightness() < 150 ? QColor(Qt::white) : QColor(Qt::black);
+}
+
+void TileTag::paintText(QPainter& painter, const TrackColors& colors) const {
+    if (!shown())
+        return;
+    painter.setPen(textColor(colors));
     if (!m_glyphs.isEmpty())
         painter.drawGlyphRun(m_rect.topLeft(), m_glyphs);
     else if (m_shaped)
         painter.drawStaticText(m_rect.topLeft() + QPoint(2, 0), *m_shaped);
+}
+
+TileTagBatch::TileTagBatch(const QFont& font) : m_font(font) {}
+
+void TileTagBatch::add(const TileTag& tag) {
+    if (!tag.shown())
+        return;
+    m_tags.push_back(&tag);
+    if (tag.m_glyphs.isEmpty()) {
+        m_shaped.push_back(&tag);
+        return;
+    }
+    m_glyphIndexes.append(tag.m_glyphs.glyphIndexes());
+    const QPointF corner = tag.m_rect.topLeft();
+    for (const QPointF& position : tag.m_glyphs.positions())
+        m_glyphPositions.append(position + corner);
+}
+
+void TileTagBatch::paintBackings(QPainter& painter, const TrackColors& colors, const QRect& area) const {
+    for (const TileTag* tag : m_tags)
+        if (tag->rect().intersects(area))
+            tag->paintBacking(painter, colors);
+}
+
+// Every thread draws with a font of its own: Qt's fonts are made per thread, and a glyph cache must not be
+// shared between threads. The same font gives the same glyph numbers on every thread.
+void TileTagBatch::paintGlyphs(QPainter& painter, const TrackColors& colors) const {
+    if (m_glyphIndexes.isEmpty())
+        return;
+    thread_local QFont madeFrom;
+    thread_local QRawFont font;
+    if (!font.isValid() || madeFrom != m_font) {
+        font = QRawFont::fromFont(m_font);
+        madeFrom = m_font;
+    }
+    QGlyphRun run;
+    run.setRawFont(font);
+    run.setGlyphIndexes(m_glyphIndexes);
+    run.setPositions(m_glyphPositions);
+    painter.setPen(colors.text);
+    painter.drawGlyphRun(QPointF(0, 0), run);
+}
+
+void TileTagBatch::paintShaped(QPainter& painter, const TrackColors& colors) const {
+    painter.setFont(m_font);
+    for (const TileTag* tag : m_shaped)
+        tag->paintText(painter, colors);
 }
 
 } // namespace stellwerk::ui

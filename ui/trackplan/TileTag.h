@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QColor>
 #include <QFont>
 #include <QGlyphRun>
 #include <QRect>
@@ -46,8 +47,14 @@ public:
     // Draws the tag; the painter's font must be font() (the tags of a page share it: setting it once
     // for all saves a font lookup per tag).
     void paint(QPainter& painter, const TrackColors& colors) const;
+    // paint() in two steps: the backing (on any thread), then the text (on the GUI thread, which owns
+    // the font's glyphs).
+    void paintBacking(QPainter& painter, const TrackColors& colors) const;
+    void paintText(QPainter& painter, const TrackColors& colors) const;
 
 private:
+    friend class TileTagBatch;
+    QColor textColor(const TrackColors& colors) const;
     explicit TileTag(const QFont& font) : m_font(font) {}
     int laidOut(const QString& text);
     int laidOutByQt(const QString& text);
@@ -61,6 +68,28 @@ private:
     // m_text laid out by Qt, when m_font lacks one of its characters (made only then: 2,000 tags would
     // otherwise touch a megabyte of new memory for nothing)
     std::optional<QStaticText> m_shaped;
+};
+
+// The names of a page painted in two calls instead of two per tag: every backing, then every glyph in one
+// run; both may be painted on any thread (the paint bands do them on all cores). Names stay inside their
+// tiles, so none covers another's and the order does not change the picture. A name with a character the
+// tags' font lacks is laid out by Qt and drawn on the GUI thread (paintShaped). Occupants run over their
+// neighbours and are drawn on their own, after.
+class TileTagBatch final {
+public:
+    explicit TileTagBatch(const QFont& font);
+    // The tag must outlive the batch (the page's TileTagCache keeps it).
+    void add(const TileTag& tag);
+    void paintBackings(QPainter& painter, const TrackColors& colors, const QRect& area) const;
+    void paintGlyphs(QPainter& painter, const TrackColors& colors) const;
+    void paintShaped(QPainter& painter, const TrackColors& colors) const;
+
+private:
+    QFont m_font;
+    std::vector<const TileTag*> m_tags;
+    std::vector<const TileTag*> m_shaped;
+    QList<quint32> m_glyphIndexes;
+    QList<QPointF> m_glyphPositions;
 };
 
 // The tags of one page laid out once per zoom: a repaint draws each tag's known text at its known place

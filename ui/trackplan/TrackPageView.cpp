@@ -1,13 +1,16 @@
 #include "trackplan/TrackPageView.h"
 
 #include "model/TrackLayout.h"
+#include "trackplan/PaintBands.h"
 #include "trackplan/TileTag.h"
 
 #include <QContextMenuEvent>
+#include <QElapsedTimer>
 #include <QHelpEvent>
 #include <QPaintEvent>
 #include <QPainter>
 #include <QToolTip>
+#include <cstdio>
 
 namespace stellwerk::ui {
 namespace {
@@ -99,9 +102,20 @@ void TrackPageView::paintEvent(QPaintEvent* event) {
     QPainter painter(this);
     const QRect area = event->rect();
     painter.setClipRect(area);
-    paintGrid(painter, area);
-    paintTiles(painter, area);
-    paintTags(painter, area);
+    const std::vector<TrackTileCache::Placed> pictures = picturesIn(area);
+    const TagsInArea tags = tagsIn(area);
+    // The grid, the tiles and the names on all cores; names that Qt laid out and occupants on this thread.
+    PaintBands::paint(painter, area, [this, &pictures, &tags](QPainter& band, const QRect& part) {
+        paintGrid(band, part);
+        for (const TrackTileCache::Placed& picture : pictures)
+            if (picture.area().intersects(part))
+                picture.paint(band);
+        tags.names.paintBackings(band, m_colors, part);
+        tags.names.paintGlyphs(band, m_colors);
+    });
+    tags.names.paintShaped(painter, m_colors);
+    for (const TileTag& occupant : tags.occupants)
+        occupant.paint(painter, m_colors);
     if (m_dimmed) { // a wash of the background over every state: "not reported", at a glance
         QColor wash = m_colors.background;
         wash.setAlpha(150);
@@ -109,8 +123,9 @@ void TrackPageView::paintEvent(QPaintEvent* event) {
     }
 }
 
-// The pictures of the tiles that reach into the area; those not drawn yet are drawn first, all at once.
-void TrackPageView::paintTiles(QPainter& painter, const QRect& area) {
+// The pictures of the tiles that reach into the area, in the page's order; those not drawn yet are drawn
+// first, all at once.
+std::vector<TrackTileCache::Placed> TrackPageView::picturesIn(const QRect& area) {
     m_pictures.prepare(m_tileSize, devicePixelRatioF(), m_colors, font());
     std::vector<int> tiles;
     std::vector<TrackTileLook> looks;
@@ -123,37 +138,36 @@ void TrackPageView::paintTiles(QPainter& painter, const QRect& area) {
         }
     }
     m_pictures.drawAhead(looks);
+    std::vector<TrackTileCache::Placed> pictures;
+    pictures.reserve(tiles.size());
     for (std::size_t k = 0; k < tiles.size(); ++k) {
-        const QPoint cell = tileRect(tiles[k]).topLeft();
-        const bool label = looks[k].category == cs2config::TrackCategory::Text;
-        if (label && !m_pictures.area(looks[k], cell).intersects(area))
-            continue; // labels may reach into the area from elsewhere
-        m_pictures.paint(painter, cell, looks[k]);
+        TrackTileCache::Placed picture = m_pictures.placed(looks[k], tileRect(tiles[k]).topLeft());
+        if (!picture.image.isNull() && picture.area().intersects(area)) // labels may reach in from elsewhere
+            pictures.push_back(std::move(picture));
     }
+    return pictures;
 }
 
-// The names from the file over the drawings, where they reach into the area.
-void TrackPageView::paintTags(QPainter& painter, const QRect& area) {
-    if (m_tileSize < TileTag::MinimumTile)
-        return;
+// The names from the file that reach into the area, and the locomotives on occupied contacts there.
+TrackPageView::TagsInArea TrackPageView::tagsIn(const QRect& area) {
     const QFont font = tagFont();
-    painter.setFont(font);
-    std::vector<TileTag> occupants; // drawn last: they run over their neighbours' names
+    TagsInArea tags{TileTagBatch(font), {}};
+    if (m_tileSize < TileTag::MinimumTile)
+        return tags;
     const int tiles = int(m_page.tiles.size());
     for (int i = 0; i < tiles; ++i) {
         const QRect cell = tileRect(i);
         if (m_page.tiles[std::size_t(i)].category == cs2config::TrackCategory::Feedback &&
             TileTag::occupantReach(cell).intersects(area))
             if (const QString occupant = m_look(i).occupant; !occupant.isEmpty()) {
-                occupants.push_back(TileTag::occupant(occupant, cell, font));
+                tags.occupants.push_back(TileTag::occupant(occupant, cell, font));
                 continue;
             }
         if (cell.intersects(area)) // a name stays on its tile
-            m_tags.tag(i, tiles, [&] { return TileTag(m_page.tiles[std::size_t(i)], cell, font); })
-                .paint(painter, m_colors);
+            tags.names.add(
+                m_tags.tag(i, tiles, [&] { return TileTag(m_page.tiles[std::size_t(i)], cell, font); }));
     }
-    for (const TileTag& tag : occupants)
-        tag.paint(painter, m_colors);
+    return tags;
 }
 
 QFont TrackPageView::tagFont() const {

@@ -9,6 +9,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace stellwerk::model {
 struct LayoutPage;
@@ -65,8 +66,14 @@ protected:
 
 private:
     void paintGrid(QPainter& painter, const QRect& area) const;
-    void paintTiles(QPainter& painter, const QRect& area);
-    void paintTags(QPainter& painter, const QRect& area);
+    std::vector<TrackTileCache::Placed> picturesIn(const QRect& area);
+    // The tags a paint draws: names from the file, and locomotives, which run over their neighbours and
+    // are drawn last.
+    struct TagsInArea {
+        TileTagBatch names;
+        std::vector<TileTag> occupants;
+    };
+    TagsInArea tagsIn(const QRect& area);
     QFont tagFont() const;
 
     std::shared_ptr<const model::LayoutPage> m_pageOwner;

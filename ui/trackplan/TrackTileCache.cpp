@@ -1,32 +1,15 @@
 #include "trackplan/TrackTileCache.h"
 
+#include "trackplan/PaintThreads.h"
 #include "trackplan/TrackTilePainter.h"
 
 #include <QImage>
 #include <QPainter>
-#include <QSemaphore>
 #include <QSet>
-#include <QThreadPool>
 #include <algorithm>
 #include <cmath>
-#include <thread>
 
 namespace stellwerk::ui {
-namespace {
-
-// The threads that help the GUI thread draw pictures ahead. They are kept, not started per paint: a new
-// thread also starts with new memory, and touching new memory is what a first paint spends most on.
-QThreadPool& helpers(int count) {
-    static QThreadPool pool;
-    if (pool.maxThreadCount() != count) {
-        pool.setMaxThreadCount(count);
-        pool.setExpiryTimeout(-1);
-    }
-    return pool;
-}
-
-} // namespace
-
 void TrackTileCache::prepare(int tileSize, qreal devicePixelRatio, const TrackColors& colors,
                              const QFont& font) {
     if (tileSize == m_tileSize && devicePixelRatio == m_devicePixelRatio && colors == m_colors &&
@@ -40,14 +23,21 @@ void TrackTileCache::prepare(int tileSize, qreal devicePixelRatio, const TrackCo
 }
 
 QRect TrackTileCache::area(const TrackTileLook& look, QPoint cell) {
-    const Picture& picture = pictureOf(look);
-    return {cell + picture.offset, picture.image.deviceIndependentSize().toSize()};
+    return placed(look, cell).area();
 }
 
 void TrackTileCache::paint(QPainter& painter, QPoint cell, const TrackTileLook& look) {
+    placed(look, cell).paint(painter);
+}
+
+TrackTileCache::Placed TrackTileCache::placed(const TrackTileLook& look, QPoint cell) {
     const Picture& picture = pictureOf(look);
-    if (!picture.image.isNull())
-        painter.drawImage(cell + picture.offset, picture.image);
+    return {picture.image, cell + picture.offset};
+}
+
+void TrackTileCache::Placed::paint(QPainter& painter) const {
+    if (!image.isNull())
+        painter.drawImage(at, image);
 }
 
 TrackTileCache::Key TrackTileCache::keyOf(const TrackTileLook& look) {
@@ -125,22 +115,11 @@ void TrackTileCache::drawAhead(const std::vector<TrackTileLook>& looks) {
 template <class Make>
 std::vector<TrackTileCache::Picture> TrackTileCache::onAllCores(std::size_t count, Make make) {
     std::vector<Picture> pictures(count);
-    const auto range = [&](std::size_t from, std::size_t step) {
-        for (std::size_t i = from; i < count; i += step)
+    const std::size_t threads = std::min(PaintThreads::count(), count);
+    PaintThreads::run(threads, [&](std::size_t from) {
+        for (std::size_t i = from; i < count; i += threads)
             pictures[i] = make(i);
-    };
-    const std::size_t threads =
-        std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, MaximumThreads);
-    QThreadPool& pool = helpers(int(threads) - 1);
-    QSemaphore done;
-    int started = 0;
-    for (std::size_t t = 1; t < threads && t < count; ++t, ++started)
-        pool.start([&range, &done, t, threads] {
-            range(t, threads);
-            done.release();
-        });
-    range(0, threads);
-    done.acquire(started);
+    });
     return pictures;
 }
 

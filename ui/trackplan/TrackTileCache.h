@@ -28,8 +28,18 @@ public:
     // beyond their cell).
     QRect area(const TrackTileLook& look, QPoint cell);
     void paint(QPainter& painter, QPoint cell, const TrackTileLook& look);
+    // A tile's picture where it lands: a copy that stays valid whatever the cache does next, so that
+    // other threads may blit it (QImage copies share their pixels).
+    struct Placed {
+        QImage image; // null where the tile draws nothing
+        QPoint at;
+        QRect area() const { return {at, image.deviceIndependentSize().toSize()}; }
+        void paint(QPainter& painter) const;
+    };
+    Placed placed(const TrackTileLook& look, QPoint cell);
     // Draws the pictures `looks` will need and that are not drawn yet, on all of the machine's cores (up
-    // to four): a page's first paint draws hundreds at once. Labels are left to paint(), on this thread.
+    // to four: PaintThreads): a page's first paint draws hundreds at once. Labels are left to paint(), on
+    // this thread.
     void drawAhead(const std::vector<TrackTileLook>& looks);
     int size() const { return int(m_pictures.size()); }
 
@@ -61,15 +71,14 @@ private:
     bool turnsExactly(const TrackTileLook& look) const;
     Picture turned(const TrackTileLook& look);
     Picture turn(const Picture& upright, int rotation) const;
-    // make(0) .. make(count - 1), spread over up to MaximumThreads threads (this one among them).
+    // make(0) .. make(count - 1), spread over the paint threads (this one among them).
     template <class Make>
     static std::vector<Picture> onAllCores(std::size_t count, Make make);
     void insert(const std::vector<TrackTileLook>& looks, std::vector<Picture> pictures);
     QRectF cell() const { return {0, 0, double(m_tileSize), double(m_tileSize)}; }
     Picture cropped(const QImage& image, QPoint offset) const;
 
-    static constexpr int MinimumAhead = 32; // fewer missing pictures are drawn as they are met
-    static constexpr std::size_t MaximumThreads = 4;
+    static constexpr int MinimumAhead = 32;      // fewer missing pictures are drawn as they are met
     static constexpr int MaximumPictures = 8192; // labels each have their own; start afresh beyond this
 
     QHash<Key, Picture> m_pictures;

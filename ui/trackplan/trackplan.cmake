@@ -6,6 +6,8 @@ target_sources(stellwerk-ui PRIVATE
     trackplan/SignalShapes.cpp
     trackplan/TrackColors.cpp trackplan/TrackColors.h
     trackplan/PageZoom.cpp trackplan/PageZoom.h
+    trackplan/PaintBands.cpp trackplan/PaintBands.h
+    trackplan/PaintThreads.cpp trackplan/PaintThreads.h
     trackplan/SetRoutes.cpp trackplan/SetRoutes.h
     trackplan/TileMenu.cpp trackplan/TileMenu.h
     trackplan/TileTag.cpp trackplan/TileTag.h

@@ -132,3 +132,36 @@ TEST(TileTag, ANameIsDrawnAsWideAsItsTextAndOneTheFontLacksStillShows) {
     EXPECT_GT(foreign.rect().width(), 4);
     EXPECT_GT(darkPixelsOf(foreign), 4);
 }
+
+TEST(TileTag, ABatchDrawsTheNamesAsEveryTagDrawnOnItsOwn) {
+    const QFont font = TileTag::tagFont(QApplication::font(), Cell.width());
+    std::vector<TileTag> tags;
+    for (const QString& name : {QStringLiteral("W12"), QString::fromUtf8("\xF0\x9F\x9A\x82 3"),
+                                QStringLiteral("Einfahrt West"), QStringLiteral("S")})
+        tags.emplace_back(tile(Category::Signal, name), Cell.translated(int(tags.size()) * Cell.width(), 0),
+                          font);
+    const TrackColors colors = TrackColors::from(QApplication::palette());
+    const auto picture = [&](const auto& paint) {
+        QImage image(Cell.right() + 5 * Cell.width(), Cell.bottom() + 10,
+                     QImage::Format_ARGB32_Premultiplied);
+        image.fill(colors.track);
+        QPainter painter(&image);
+        painter.setFont(font);
+        paint(painter);
+        return image;
+    };
+    const QImage alone = picture([&](QPainter& painter) {
+        for (const TileTag& tag : tags)
+            tag.paint(painter, colors);
+    });
+    const QImage batched = picture([&](QPainter& painter) {
+        TileTagBatch batch(font);
+        for (const TileTag& tag : tags)
+            batch.add(tag);
+        batch.paintBackings(painter, colors, QRect(QPoint(0, 0), QSize(10000, 10000)));
+        batch.paintGlyphs(painter, colors);
+        batch.paintShaped(painter, colors);
+    });
+    EXPECT_TRUE(alone == batched);
+    EXPECT_GT(darkPixelsOf(tags[0]), 8);
+}

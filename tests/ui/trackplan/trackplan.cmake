@@ -1,6 +1,7 @@
 # The track plan tab against the simulated station, each page's zoom and fit, the names on the tiles, and every tile type drawn in every rotation.
 target_sources(stellwerk-ui-tests PRIVATE
     trackplan/PageZoomTest.cpp
+    trackplan/PaintBandsTest.cpp
     trackplan/TileTagTest.cpp
     trackplan/TrackPlanPanelTest.cpp
     trackplan/TrackTileCacheTest.cpp
