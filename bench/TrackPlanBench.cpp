@@ -14,6 +14,7 @@
 #include "sim/StationServer.h"
 #include "station/StationSession.h"
 #include "station/StationUpdates.h"
+#include "trackplan/PaintBands.h"
 #include "trackplan/TrackColors.h"
 #include "trackplan/TrackPageView.h"
 #include "trackplan/TrackPlanPanel.h"
@@ -71,6 +72,39 @@ Figures timed(int runs, Draw draw) {
     return {times[times.size() / 2], times.back()};
 }
 
+// A page's first paint on fresh views: in bands on all cores, in one band (as before PaintBands), and in
+// memory nothing touched before.
+void benchFirstPaints(const std::shared_ptr<const model::LayoutPage>& shared,
+                      const ui::TrackPageView::LookOf& lookOf, QImage& image) {
+    // Each first paint on a view of its own, so that nothing is drawn yet (the memory the view before freed
+    // is drawn into again, as when the program shows another page).
+    const auto freshPaint = [&] {
+        ui::TrackPageView fresh(shared, lookOf, [](int) { return QString(); });
+        fresh.resize(fresh.sizeHint());
+        fresh.render(&image);
+    };
+    const Figures first = timed(7, freshPaint);
+    std::printf("  first paint (draws pictures):   median %6.2f ms, worst %6.2f ms\n", first.median,
+                first.worst);
+    ui::PaintBands::setEnabled(false);
+    const Figures oneBand = timed(7, freshPaint);
+    ui::PaintBands::setEnabled(true);
+    std::printf("  first paint in one band:        median %6.2f ms, worst %6.2f ms\n", oneBand.median,
+                oneBand.worst);
+    // The same with every view kept: nothing freed before is drawn into again, as on a program's very first
+    // page. On a virtual machine each first touch of a memory page costs (12 us per page seen here).
+    std::vector<std::unique_ptr<ui::TrackPageView>> kept;
+    for (int i = 0; i < 7; ++i) {
+        kept.push_back(std::make_unique<ui::TrackPageView>(shared, lookOf, [](int) { return QString(); }));
+        kept.back()->resize(kept.back()->sizeHint());
+    }
+    std::size_t next = 0;
+    const Figures cold = timed(7, [&] { kept[next++]->render(&image); });
+    kept.clear();
+    std::printf("  first paint in untouched memory: median %6.2f ms, worst %6.2f ms\n", cold.median,
+                cold.worst);
+}
+
 void benchDrawing(bool ownNames) {
     const model::TrackLayout layout = bigLayout(ownNames);
     const auto shared = std::make_shared<const model::LayoutPage>(layout.pages()[0]);
@@ -97,31 +131,16 @@ void benchDrawing(bool ownNames) {
     });
     std::printf("  every tile stroked:             median %6.2f ms, worst %6.2f ms\n", direct.median,
                 direct.worst);
-    // Each first paint on a view of its own, so that nothing is drawn yet (the memory the view before freed
-    // is drawn into again, as when the program shows another page).
-    const Figures first = timed(7, [&] {
-        ui::TrackPageView fresh(shared, lookOf, [](int) { return QString(); });
-        fresh.resize(fresh.sizeHint());
-        fresh.render(&image);
-    });
-    std::printf("  first paint (draws pictures):   median %6.2f ms, worst %6.2f ms\n", first.median,
-                first.worst);
-    // The same with every view kept: nothing freed before is drawn into again, as on a program's very first
-    // page. On a virtual machine each first touch of a memory page costs (12 us per page seen here).
-    std::vector<std::unique_ptr<ui::TrackPageView>> kept;
-    for (int i = 0; i < 7; ++i) {
-        kept.push_back(std::make_unique<ui::TrackPageView>(shared, lookOf, [](int) { return QString(); }));
-        kept.back()->resize(kept.back()->sizeHint());
-    }
-    std::size_t next = 0;
-    const Figures cold = timed(7, [&] { kept[next++]->render(&image); });
-    kept.clear();
-    std::printf("  first paint in untouched memory: median %6.2f ms, worst %6.2f ms\n", cold.median,
-                cold.worst);
+    benchFirstPaints(shared, lookOf, image);
     view.render(&image);
     const Figures repaint = timed(30, [&] { view.render(&image); });
     std::printf("  full repaint:                   median %6.2f ms, worst %6.2f ms\n", repaint.median,
                 repaint.worst);
+    ui::PaintBands::setEnabled(false);
+    const Figures oneBand = timed(30, [&] { view.render(&image); });
+    ui::PaintBands::setEnabled(true);
+    std::printf("  full repaint in one band:       median %6.2f ms, worst %6.2f ms\n", oneBand.median,
+                oneBand.worst);
     int step = 0; // zooming in and out by 4 px, each size new to the view
     const Figures zoomed = timed(7, [&] {
         ++step;
