@@ -1,49 +1,69 @@
 #include "can/ReportFields.h"
 
-#include "can/FrameText.h"
-
-#include <cstdio>
-
 namespace stellwerk::can {
 namespace {
 
-std::string quoted(std::string_view text) {
-    std::string out = "\"";
+// The reports are built by appending to one string: the bus monitor and the fuzz targets make one per
+// frame, and temporaries per field cost more than the text itself.
+void appendHex(std::string& out, std::uint64_t value, unsigned digits) {
+    static constexpr char Digits[] = "0123456789ABCDEF";
+    char buffer[16];
+    unsigned count = 0;
+    do {
+        buffer[count++] = Digits[value & 15];
+        value >>= 4;
+    } while (value != 0);
+    for (unsigned i = count; i < digits; ++i)
+        out += '0';
+    while (count > 0)
+        out += buffer[--count];
+}
+
+void appendQuoted(std::string& out, std::string_view text) {
+    out += '"';
     for (const char c : text) {
         if (c == '"' || c == '\\')
             out += '\\';
         out += c;
     }
-    return out + "\"";
+    out += '"';
 }
 
-std::string textValue(const Field& field) {
+bool isBareText(std::string_view text) {
+    return !text.empty() && text.find(' ') == std::string_view::npos;
+}
+
+void appendValue(std::string& out, const Field& field, bool json) {
     switch (field.format) {
     case FieldFormat::Hex:
-        return "0x" + hexDigits(field.number, field.digits);
+        out += json ? "\"0x" : "0x";
+        appendHex(out, field.number, field.digits);
+        if (json)
+            out += '"';
+        return;
     case FieldFormat::Bool:
-        return field.number ? "true" : "false";
+        out += field.number ? "true" : "false";
+        return;
     case FieldFormat::Text:
-        return field.text.find(' ') == std::string::npos && !field.text.empty() ? field.text
-                                                                                : quoted(field.text);
+        if (!json && isBareText(field.text))
+            out += field.text;
+        else
+            appendQuoted(out, field.text);
+        return;
     case FieldFormat::Decimal:
         break;
     }
-    return std::to_string(field.number);
+    out += std::to_string(field.number);
 }
 
-std::string jsonValue(const Field& field) {
-    switch (field.format) {
-    case FieldFormat::Hex:
-        return "\"0x" + hexDigits(field.number, field.digits) + "\"";
-    case FieldFormat::Bool:
-        return field.number ? "true" : "false";
-    case FieldFormat::Text:
-        return quoted(field.text);
-    case FieldFormat::Decimal:
-        break;
+void appendFields(std::string& out, const std::vector<Field>& fields) {
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+        if (i > 0)
+            out += ' ';
+        out += fields[i].key;
+        out += '=';
+        appendValue(out, fields[i], false);
     }
-    return std::to_string(field.number);
 }
 
 } // namespace
@@ -69,27 +89,57 @@ FieldList& FieldList::text(std::string_view key, std::string_view value) {
 }
 
 std::string hexDigits(std::uint64_t value, unsigned digits) {
-    char buffer[24];
-    std::snprintf(buffer, sizeof buffer, "%0*llX", int(digits), static_cast<unsigned long long>(value));
-    return buffer;
+    std::string out;
+    appendHex(out, value, digits);
+    return out;
 }
 
 std::string fieldsText(const std::vector<Field>& fields) {
     std::string text;
-    for (const Field& field : fields)
-        text += (text.empty() ? "" : " ") + std::string(field.key) + "=" + textValue(field);
+    text.reserve(24 * fields.size());
+    appendFields(text, fields);
+    return text;
+}
+
+std::string reportText(const CanFrame& frame, std::string_view name, const std::vector<Field>& fields) {
+    std::string text;
+    text.reserve(48 + name.size() + 24 * fields.size());
+    appendHex(text, frame.id, frame.extended ? 8 : 3); // the document notation, as formatDocument writes it
+    text += ' ';
+    text += std::to_string(frame.dlc);
+    for (const std::uint8_t byte : frame.payload()) {
+        text += ' ';
+        appendHex(text, byte, 2);
+    }
+    text += "  ";
+    text += name;
+    text += "  ";
+    appendFields(text, fields);
     return text;
 }
 
 std::string reportJson(const CanFrame& frame, std::string_view name, const std::vector<Field>& fields) {
-    const std::string candump = formatCandump(frame);
-    const std::size_t hash = candump.find('#');
-    std::string json = "{\"id\":\"" + candump.substr(0, hash) + "\",\"dlc\":" + std::to_string(frame.dlc) +
-                       ",\"data\":\"" + candump.substr(hash + 1) + "\",\"name\":\"" + std::string(name) +
-                       "\",\"fields\":{";
-    for (std::size_t i = 0; i < fields.size(); ++i)
-        json += (i ? "," : "") + quoted(fields[i].key) + ":" + jsonValue(fields[i]);
-    return json + "}}";
+    std::string json;
+    json.reserve(96 + name.size() + 32 * fields.size());
+    json += "{\"id\":\"";
+    appendHex(json, frame.id, frame.extended ? 8 : 3); // the candump notation's identifier
+    json += "\",\"dlc\":";
+    json += std::to_string(frame.dlc);
+    json += ",\"data\":\"";
+    for (const std::uint8_t byte : frame.payload())
+        appendHex(json, byte, 2);
+    json += "\",\"name\":\"";
+    json += name;
+    json += "\",\"fields\":{";
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+        if (i > 0)
+            json += ',';
+        appendQuoted(json, fields[i].key);
+        json += ':';
+        appendValue(json, fields[i], true);
+    }
+    json += "}}";
+    return json;
 }
 
 std::optional<std::uint64_t> fieldNumber(const std::vector<Field>& fields, std::string_view key) {

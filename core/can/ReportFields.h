@@ -35,6 +35,9 @@ struct FieldList {
 std::string hexDigits(std::uint64_t value, unsigned digits);
 // "key=value key=value": hex as 0x.., flags as true/false, texts quoted where they hold a space.
 std::string fieldsText(const std::vector<Field>& fields);
+// The report of a frame as one line: the frame in document notation, two spaces, the message name, two
+// spaces, its fields as fieldsText writes them.
+std::string reportText(const CanFrame& frame, std::string_view name, const std::vector<Field>& fields);
 // The report of a frame as one JSON object: id, dlc, data (candump notation), message name and fields.
 std::string reportJson(const CanFrame& frame, std::string_view name, const std::vector<Field>& fields);
 // The number of the field `key` (not a text field), or nullopt.

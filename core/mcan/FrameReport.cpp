@@ -1,6 +1,5 @@
 #include "mcan/FrameReport.h"
 
-#include "can/FrameText.h"
 #include "mcan/HandleRoles.h"
 
 #include <cstdio>
@@ -266,7 +265,7 @@ std::string FrameReport::detailText() const {
 }
 
 std::string FrameReport::text() const {
-    return can::formatDocument(frame_) + "  " + std::string(name()) + "  " + detailText();
+    return can::reportText(frame_, name(), fields_);
 }
 
 std::string FrameReport::json() const {

@@ -1,6 +1,5 @@
 #include "orc/FrameReport.h"
 
-#include "can/FrameText.h"
 #include "orc/Uid.h"
 
 #include <cstdio>
@@ -212,7 +211,7 @@ std::string FrameReport::detailText() const {
 }
 
 std::string FrameReport::text() const {
-    return can::formatDocument(frame_) + "  " + std::string(name()) + "  " + detailText();
+    return can::reportText(frame_, name(), fields_);
 }
 
 std::string FrameReport::json() const {
