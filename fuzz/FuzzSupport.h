@@ -57,6 +57,17 @@ private:
     std::span<const std::uint8_t> bytes_;
 };
 
+// A frame report's text and JSON, made once: the targets check both and compare them with a description.
+struct ReportStrings {
+    std::string text;
+    std::string json;
+
+    template <class Report>
+    static ReportStrings of(const Report& report) {
+        return {report.text(), report.json()};
+    }
+};
+
 // True when `text` is one JSON document in valid UTF-8 whose only raw control bytes are the line ends
 // of its indentation (`allowNewlines`): what any JSON consumer can read.
 inline bool isJsonDocument(std::string_view text, bool allowNewlines) {

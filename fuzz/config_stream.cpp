@@ -5,10 +5,10 @@
 //  - round trip: the rest is a file sent the way `stream encode` sends it (the key's format, or a
 //    broadcast). Invariant: the receiver gives back exactly that file (`stream decode` round-trips).
 #include "FuzzSupport.h"
-#include "transport/NetworkFraming.h"
 #include "cs2config/ConfigStreamPayload.h"
 #include "cs2config/ConfigStreamReceiver.h"
 #include "cs2config/ConfigStreamSender.h"
+#include "transport/NetworkFraming.h"
 
 #include <array>
 #include <vector>

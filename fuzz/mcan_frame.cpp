@@ -36,9 +36,9 @@ void checkRoundTrip(const can::CanFrame& frame, const mcan::Message& message) {
                                                            can::formatDocument(encoded));
 }
 
-void checkReport(const mcan::FrameReport& report) {
-    const std::string text = report.text();
-    const std::string json = report.json();
+void checkReport(const fuzz::ReportStrings& report) {
+    const std::string& text = report.text;
+    const std::string& json = report.json;
     if (!fuzz::isPrintableAscii(text))
         fuzz::fail("FrameReport::text() is not printable ASCII", text);
     if (!fuzz::isPrintableAscii(json) || !fuzz::isJsonDocument(json, false))
@@ -54,12 +54,13 @@ void checkBounded(const mcan::HandleRoles& roles, const can::CanFrame& frame) {
 }
 
 // The context has learnt from the same frames as `roles`, so it reads an M-CAN frame as `report` does.
-void checkDescription(bus::BusContext& context, const can::CanFrame& frame, const mcan::FrameReport& report) {
+void checkDescription(bus::BusContext& context, const can::CanFrame& frame,
+                      const fuzz::ReportStrings& report) {
     const bus::FrameDescription description = context.read(frame, bus::BusProfile::centralStation());
     if (description.protocol() != bus::Protocol::Mcan)
         return;
-    if (description.text() != report.text() ||
-        description.json() != "{\"protocol\":\"mcan\"," + report.json().substr(1))
+    if (description.text() != report.text ||
+        description.json() != "{\"protocol\":\"mcan\"," + report.json.substr(1))
         fuzz::fail("the description of an M-CAN frame is not its report", description.json());
     const auto handheld = description.handheld();
     if (handheld && (handheld->node % 2 == 0 || handheld->node >= 126 || handheld->name.size() > MaximumName))
@@ -88,7 +89,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (mcan::isMcan(frame))
             roles.observe(frame);
         anyFrame.observe(frame);
-        const mcan::FrameReport report(frame, &roles);
+        const auto report = fuzz::ReportStrings::of(mcan::FrameReport(frame, &roles));
         checkReport(report);
         checkBounded(roles, frame);
         checkBounded(anyFrame, frame);

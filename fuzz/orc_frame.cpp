@@ -39,23 +39,23 @@ void checkDefaultPriority(const orc::Message& message) {
         fuzz::fail("a default priority outside 01..11", std::string(orc::nameOf(message)));
 }
 
-void checkReport(const orc::FrameReport& report) {
-    const std::string text = report.text();
-    const std::string json = report.json();
+void checkReport(const fuzz::ReportStrings& report) {
+    const std::string& text = report.text;
+    const std::string& json = report.json;
     if (!fuzz::isPrintableAscii(text))
         fuzz::fail("FrameReport::text() is not printable ASCII", text);
     if (!fuzz::isPrintableAscii(json) || !fuzz::isJsonDocument(json, false))
         fuzz::fail("FrameReport::json() is not valid JSON in printable ASCII", json);
 }
 
-void checkDescription(const can::CanFrame& frame, const orc::FrameReport& report) {
+void checkDescription(const can::CanFrame& frame, bool decoded, const fuzz::ReportStrings& report) {
     const bus::FrameDescription description(frame, bus::BusProfile::openRailCan());
-    if (report.decoded() && description.protocol() != bus::Protocol::Orc)
+    if (decoded && description.protocol() != bus::Protocol::Orc)
         fuzz::fail("a frame the ORC codec decodes is not ORC on an ORC bus", can::formatDocument(frame));
     if (description.protocol() != bus::Protocol::Orc)
         return;
-    if (description.text() != report.text() ||
-        description.json() != "{\"protocol\":\"orc\"," + report.json().substr(1))
+    if (description.text() != report.text ||
+        description.json() != "{\"protocol\":\"orc\"," + report.json.substr(1))
         fuzz::fail("the description of an ORC frame is not its report", description.json());
 }
 
@@ -75,8 +75,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             checkRoundTrip(frame, message);
         checkDefaultPriority(message);
         const orc::FrameReport report(frame);
-        checkReport(report);
-        checkDescription(frame, report);
+        const auto strings = fuzz::ReportStrings::of(report);
+        checkReport(strings);
+        checkDescription(frame, report.decoded(), strings);
     }
     return 0;
 }

@@ -68,13 +68,13 @@ void checkAnswer(std::span<const std::uint8_t> payload) {
 }
 
 void checkReport(const can::CanFrame& frame, ro::Direction direction, const bus::BusProfile& profile) {
-    const ro::FrameReport report(frame, direction);
+    const auto report = fuzz::ReportStrings::of(ro::FrameReport(frame, direction));
     const bus::FrameDescription description(frame, profile);
-    if (!fuzz::isPrintableText(report.text()) || !fuzz::isJsonDocument(report.json(), false))
-        fuzz::fail("the report is not printable text and valid JSON", report.json());
-    if (description.protocol() != bus::Protocol::Ro || description.text() != report.text() ||
+    if (!fuzz::isPrintableText(report.text) || !fuzz::isJsonDocument(report.json, false))
+        fuzz::fail("the report is not printable text and valid JSON", report.json);
+    if (description.protocol() != bus::Protocol::Ro || description.text() != report.text ||
         description.json() != "{\"protocol\":\"ro\",\"module\":" + std::string(frame.extended ? "0" : "1") +
-                                  "," + report.json().substr(1))
+                                  "," + report.json.substr(1))
         fuzz::fail("the description of an RO frame is not its report", description.json());
 }
 

@@ -4,10 +4,10 @@
 // Invariant: every text read from a device is printable UTF-8 (no terminal escapes reach the CLI or the
 // UI) and the article number is printable ASCII.
 #include "FuzzSupport.h"
-#include "transport/NetworkFraming.h"
 #include "cs2/Codec.h"
 #include "station/DeviceDescription.h"
 #include "station/StatusDataPackets.h"
+#include "transport/NetworkFraming.h"
 
 #include <vector>
 
