@@ -245,4 +245,6 @@ write("orc_frame", "every-group", mcan_frames(ORC_GROUPS))
 write("orc_frame", "malformed", mcan_frames(ORC_MALFORMED))
 write("orc_frame", "beside-cs2-and-mcan", mcan_frames(ORC_DERIVED[:3] + [("00084711", "0000C0030120"), ("0C0007AB", "0000002A")]))
 write("orc_frame", "dlc-above-eight", struct.pack(">IB", 0x11100000, 12) + bytes(8))
+# Found by a long run: an enkoder Status with five status bytes (DLC 8) shifted a 32-bit value by 32.
+write("orc_frame", "encoder-status-five-bytes", mcan_frames([("11122E01", "102E010102030405"), ("11132E01", "102E01FFFFFFFFFF")]))
 

@@ -26,6 +26,8 @@ Message encoderStatus(const can::CanFrame& frame) {
         return EncoderQuery{originOf(frame), false, d.u16(1)};
     if (d.size() < 4)
         return unknown(frame, "enkoder Abfrage takes DLC 1 or 3 with D=0");
+    if (d.size() > 7)
+        return unknown(frame, "enkoder Status takes DLC 4 to 7 (status 0 ... 31)");
     EncoderStatus status{originOf(frame), d.answer(), d.u16(1), std::uint8_t(d.size() - 3), 0};
     for (std::size_t i = 3; i < d.size(); ++i)
         status.inputs |= std::uint32_t(d[i]) << (8 * (i - 3));

@@ -98,3 +98,14 @@ TEST(Malformed, PingWithDlc3IsRefused) {
 TEST(Malformed, FlashDataWithDlc5IsRefused) {
     EXPECT_EQ(why(frame(FlashCommand, {0x04, 0x2E, 0x01, 0x00, 0x01})), "Flash Data and Checksum take DLC 8");
 }
+
+// Found by fuzz/orc_frame: DLC 8 gave five status bytes, shifted by 32 bits into a 32-bit value
+// (undefined behaviour) and encoded back as four. Status 0 ... 31 fits DLC 4 to 7.
+TEST(Malformed, EncoderStatusWithFiveStatusBytesIsRefused) {
+    EXPECT_EQ(why(frame(EncoderCommand, {0x10, 0x2E, 0x01, 0x01, 0x02, 0x03, 0x04, 0x05})),
+              "enkoder Status takes DLC 4 to 7 (status 0 ... 31)");
+    EXPECT_EQ(why(frame(EncoderCommand | 0x10000, {0x10, 0x2E, 0x01, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF})),
+              "enkoder Status takes DLC 4 to 7 (status 0 ... 31)");
+    EXPECT_EQ(why(frame(EncoderCommand, {0x10, 0x2E, 0x01, 0x01, 0x02, 0x03, 0x04})),
+              "decoded as orc.encoder.status");
+}
