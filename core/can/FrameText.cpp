@@ -1,7 +1,7 @@
 #include "can/FrameText.h"
 
+#include <algorithm>
 #include <charconv>
-#include <cstdio>
 #include <optional>
 #include <vector>
 
@@ -173,23 +173,34 @@ bool isBracketedDlc(std::string_view token) {
     return token.size() >= 3 && token.front() == '[' && token.back() == ']';
 }
 
+constexpr char HexDigit[] = "0123456789ABCDEF";
+
+void appendByte(std::string& out, std::uint8_t byte) {
+    out += HexDigit[byte >> 4];
+    out += HexDigit[byte & 15];
+}
+
 std::string hexBytes(const CanFrame& frame, const char* separator) {
     std::string out;
-    char buffer[4];
     for (std::size_t i = 0; i < frame.size(); ++i) {
-        std::snprintf(buffer, sizeof buffer, "%02X", frame.data[i]);
         if (i > 0)
             out += separator;
-        out += buffer;
+        appendByte(out, frame.data[i]);
     }
     return out;
 }
 
-// Standard identifiers with 3 hex digits, extended ones with 8 (the candump convention).
+// Standard identifiers with 3 hex digits, extended ones with 8 (the candump convention); an identifier too
+// wide for its frame keeps all its digits.
 std::string hexId(const CanFrame& frame) {
-    char buffer[12];
-    std::snprintf(buffer, sizeof buffer, frame.extended ? "%08X" : "%03X", frame.id);
-    return buffer;
+    std::string out;
+    std::uint32_t id = frame.id;
+    do {
+        out += HexDigit[id & 15];
+        id >>= 4;
+    } while (id != 0);
+    out.resize(std::max<std::size_t>(out.size(), frame.extended ? 8 : 3), '0');
+    return {out.rbegin(), out.rend()};
 }
 
 } // namespace
@@ -229,11 +240,8 @@ std::string formatCandump(const CanFrame& frame) {
 
 std::string formatNetwork(const CanFrame& frame) {
     std::string out;
-    char buffer[4];
-    for (auto byte : frame.toNetwork()) {
-        std::snprintf(buffer, sizeof buffer, "%02X", byte);
-        out += buffer;
-    }
+    for (const std::uint8_t byte : frame.toNetwork())
+        appendByte(out, byte);
     return out;
 }
 
