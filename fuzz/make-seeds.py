@@ -247,4 +247,6 @@ write("orc_frame", "beside-cs2-and-mcan", mcan_frames(ORC_DERIVED[:3] + [("00084
 write("orc_frame", "dlc-above-eight", struct.pack(">IB", 0x11100000, 12) + bytes(8))
 # Found by a long run: an enkoder Status with five status bytes (DLC 8) shifted a 32-bit value by 32.
 write("orc_frame", "encoder-status-five-bytes", mcan_frames([("11122E01", "102E010102030405"), ("11132E01", "102E01FFFFFFFFFF")]))
+# Found by a long run: a single-function frame with DLC 8 decoded, and encoded back with DLC 7.
+write("orc_frame", "loco-function-dlc8", mcan_frames([("11020000", "0400000000000000"), ("11020000", "0400480101000000")]))
 

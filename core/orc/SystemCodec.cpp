@@ -70,6 +70,8 @@ Message function(const can::CanFrame& frame) {
     const Data d{frame};
     if (d.size() == 4 && !d.answer())
         return LocoFunctionQuery{originOf(frame), d.u16(1), d[3]};
+    if (d.size() > 7)
+        return unknown(frame, "Lok Funktion 0x04 takes DLC 4 (query, D=0) or 5-7 (FxNr, Wert)");
     if (d.size() >= 5 && (d[5] != 0 || d[6] != 0))
         return unknown(frame, "Lok Funktion 0x04: Wert is one byte (DB5); DB6-7 must be 0");
     if (d.size() >= 5)

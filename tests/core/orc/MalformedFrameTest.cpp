@@ -109,3 +109,13 @@ TEST(Malformed, EncoderStatusWithFiveStatusBytesIsRefused) {
     EXPECT_EQ(why(frame(EncoderCommand, {0x10, 0x2E, 0x01, 0x01, 0x02, 0x03, 0x04})),
               "decoded as orc.encoder.status");
 }
+
+// Found by fuzz/orc_frame: a single-function frame with DLC 8 decoded, and encoded back with DLC 7.
+TEST(Malformed, LocoFunctionWithDlc8IsRefused) {
+    EXPECT_EQ(why(frame(LocoCommand, {0x04, 0x00, 0x48, 0x01, 0x01, 0x00, 0x00, 0x00})),
+              "Lok Funktion 0x04 takes DLC 4 (query, D=0) or 5-7 (FxNr, Wert)");
+    EXPECT_EQ(why(frame(LocoAnswer, {0x04, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00})),
+              "Lok Funktion 0x04 takes DLC 4 (query, D=0) or 5-7 (FxNr, Wert)");
+    EXPECT_EQ(why(frame(LocoCommand, {0x04, 0x00, 0x48, 0x01, 0x01, 0x00, 0x00})),
+              "decoded as orc.loco.function");
+}
