@@ -1,25 +1,18 @@
 #include "ro/FrameReport.h"
 
 #include "can/FrameText.h"
-
-#include <cstdio>
+#include "can/ReportFields.h"
 
 namespace stellwerk::ro {
 namespace {
 
-std::string hexText(std::uint32_t number, unsigned digits) {
-    char text[16];
-    std::snprintf(text, sizeof text, "0x%0*X", int(digits), number);
-    return text;
-}
-
-std::string valueText(const Field& field) {
-    return field.format == Field::Format::Text ? std::string(field.text)
-                                               : hexText(field.number, field.digits);
-}
-
-std::string jsonValue(const Field& field) {
-    return "\"" + valueText(field) + "\"";
+void appendValue(std::string& out, const Field& field) {
+    if (field.format == Field::Format::Text) {
+        out += field.text;
+        return;
+    }
+    out += "0x";
+    out += can::hexDigits(field.number, field.digits);
 }
 
 std::string_view directionName(Direction direction) {
@@ -87,32 +80,55 @@ std::string_view FrameReport::name() const {
 }
 
 std::string FrameReport::detailText() const {
-    std::string text = "direction=" + std::string(directionName(direction_));
-    if (const auto* error = std::get_if<DecodeError>(&message_))
-        return text + " error=\"" + error->reason +
-               (error->byte ? " (byte " + std::to_string(error->byte) + ")\"" : "\"");
-    for (const Field& field : fields_)
-        text += " " + std::string(field.key) + "=" + valueText(field);
+    std::string text = "direction=";
+    text += directionName(direction_);
+    if (const auto* error = std::get_if<DecodeError>(&message_)) {
+        text += " error=\"";
+        text += error->reason;
+        if (error->byte)
+            text += " (byte " + std::to_string(error->byte) + ")";
+        return text + "\"";
+    }
+    for (const Field& field : fields_) {
+        text += ' ';
+        text += field.key;
+        text += '=';
+        appendValue(text, field);
+    }
     return text;
 }
 
 std::string FrameReport::text() const {
-    return can::formatDocument(frame_) + "  " + std::string(name()) + "  " + detailText();
+    std::string text = can::formatDocument(frame_);
+    text += "  ";
+    text += name();
+    text += "  ";
+    return text + detailText();
 }
 
 std::string FrameReport::json() const {
-    const std::string candump = can::formatCandump(frame_);
-    const std::size_t hash = candump.find('#');
-    std::string json = "{\"id\":\"" + candump.substr(0, hash) +
-                       "\",\"extended\":" + (frame_.extended ? "true" : "false") +
-                       ",\"dlc\":" + std::to_string(frame_.dlc) + ",\"data\":\"" + candump.substr(hash + 1) +
-                       "\",\"name\":\"" + std::string(name()) + "\",\"direction\":\"" +
-                       std::string(directionName(direction_)) + "\"";
+    std::string json = "{\"id\":\"";
+    json.reserve(192);
+    json += can::hexDigits(frame_.id, frame_.extended ? 8 : 3); // the candump notation's identifier
+    json += frame_.extended ? "\",\"extended\":true" : "\",\"extended\":false";
+    json += ",\"dlc\":" + std::to_string(frame_.dlc) + ",\"data\":\"";
+    for (const std::uint8_t byte : frame_.payload())
+        json += can::hexDigits(byte, 2);
+    json += "\",\"name\":\"";
+    json += name();
+    json += "\",\"direction\":\"";
+    json += directionName(direction_);
+    json += '"';
     if (const auto* error = std::get_if<DecodeError>(&message_))
         return json + ",\"error\":\"" + error->reason + "\",\"byte\":" + std::to_string(error->byte) + "}";
     json += ",\"fields\":{";
-    for (std::size_t i = 0; i < fields_.size(); ++i)
-        json += (i ? ",\"" : "\"") + std::string(fields_[i].key) + "\":" + jsonValue(fields_[i]);
+    for (std::size_t i = 0; i < fields_.size(); ++i) {
+        json += i ? ",\"" : "\"";
+        json += fields_[i].key;
+        json += "\":\"";
+        appendValue(json, fields_[i]);
+        json += '"';
+    }
     return json + "}}";
 }
 
