@@ -9,6 +9,10 @@ namespace stellwerk::cs2config {
 bool isValidUtf8(std::string_view bytes) {
     std::size_t i = 0;
     while (i < bytes.size()) {
+        if (static_cast<std::uint8_t>(bytes[i]) < 0x80) { // most text: no call per character
+            ++i;
+            continue;
+        }
         const std::size_t length = cs2::utf8SequenceLength(bytes, i);
         if (length == 0)
             return false;

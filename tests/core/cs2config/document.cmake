@@ -2,4 +2,5 @@
 target_sources(stellwerk-core-tests PRIVATE
     cs2config/ConfigFileTest.cpp
     cs2config/DocumentTest.cpp
+    cs2config/TextTest.cpp
 )
