@@ -1,6 +1,5 @@
 #include "can/FrameText.h"
 
-#include <algorithm>
 #include <charconv>
 #include <optional>
 #include <vector>
@@ -173,34 +172,14 @@ bool isBracketedDlc(std::string_view token) {
     return token.size() >= 3 && token.front() == '[' && token.back() == ']';
 }
 
-constexpr char HexDigit[] = "0123456789ABCDEF";
-
-void appendByte(std::string& out, std::uint8_t byte) {
-    out += HexDigit[byte >> 4];
-    out += HexDigit[byte & 15];
-}
-
 std::string hexBytes(const CanFrame& frame, const char* separator) {
     std::string out;
     for (std::size_t i = 0; i < frame.size(); ++i) {
         if (i > 0)
             out += separator;
-        appendByte(out, frame.data[i]);
+        appendHex(out, frame.data[i], 2);
     }
     return out;
-}
-
-// Standard identifiers with 3 hex digits, extended ones with 8 (the candump convention); an identifier too
-// wide for its frame keeps all its digits.
-std::string hexId(const CanFrame& frame) {
-    std::string out;
-    std::uint32_t id = frame.id;
-    do {
-        out += HexDigit[id & 15];
-        id >>= 4;
-    } while (id != 0);
-    out.resize(std::max<std::size_t>(out.size(), frame.extended ? 8 : 3), '0');
-    return {out.rbegin(), out.rend()};
 }
 
 } // namespace
@@ -228,21 +207,42 @@ Expected<ParsedFrame, std::string> parseFrame(std::string_view line) {
 }
 
 std::string formatDocument(const CanFrame& frame) {
-    std::string out = hexId(frame) + " " + std::to_string(frame.dlc);
+    std::string out = formatId(frame) + " " + std::to_string(frame.dlc);
     if (frame.size() > 0)
         out += " " + hexBytes(frame, " ");
     return out;
 }
 
 std::string formatCandump(const CanFrame& frame) {
-    return hexId(frame) + "#" + hexBytes(frame, "");
+    return formatId(frame) + "#" + hexBytes(frame, "");
 }
 
 std::string formatNetwork(const CanFrame& frame) {
     std::string out;
     for (const std::uint8_t byte : frame.toNetwork())
-        appendByte(out, byte);
+        appendHex(out, byte, 2);
     return out;
+}
+
+// An identifier too wide for its frame keeps all its digits.
+std::string formatId(const CanFrame& frame) {
+    std::string out;
+    appendHex(out, frame.id, frame.extended ? 8 : 3);
+    return out;
+}
+
+void appendHex(std::string& out, std::uint64_t value, unsigned digits) {
+    static constexpr char Digits[] = "0123456789ABCDEF";
+    char buffer[16];
+    unsigned count = 0;
+    do {
+        buffer[count++] = Digits[value & 15];
+        value >>= 4;
+    } while (value != 0);
+    for (unsigned i = count; i < digits; ++i)
+        out += '0';
+    while (count > 0)
+        out += buffer[--count];
 }
 
 } // namespace stellwerk::can

@@ -1,24 +1,12 @@
 #include "can/ReportFields.h"
 
+#include "can/FrameText.h"
+
 namespace stellwerk::can {
 namespace {
 
 // The reports are built by appending to one string: the bus monitor and the fuzz targets make one per
 // frame, and temporaries per field cost more than the text itself.
-void appendHex(std::string& out, std::uint64_t value, unsigned digits) {
-    static constexpr char Digits[] = "0123456789ABCDEF";
-    char buffer[16];
-    unsigned count = 0;
-    do {
-        buffer[count++] = Digits[value & 15];
-        value >>= 4;
-    } while (value != 0);
-    for (unsigned i = count; i < digits; ++i)
-        out += '0';
-    while (count > 0)
-        out += buffer[--count];
-}
-
 void appendQuoted(std::string& out, std::string_view text) {
     out += '"';
     for (const char c : text) {
@@ -102,15 +90,7 @@ std::string fieldsText(const std::vector<Field>& fields) {
 }
 
 std::string reportText(const CanFrame& frame, std::string_view name, const std::vector<Field>& fields) {
-    std::string text;
-    text.reserve(48 + name.size() + 24 * fields.size());
-    appendHex(text, frame.id, frame.extended ? 8 : 3); // the document notation, as formatDocument writes it
-    text += ' ';
-    text += std::to_string(frame.dlc);
-    for (const std::uint8_t byte : frame.payload()) {
-        text += ' ';
-        appendHex(text, byte, 2);
-    }
+    std::string text = formatDocument(frame);
     text += "  ";
     text += name;
     text += "  ";
@@ -122,7 +102,7 @@ std::string reportJson(const CanFrame& frame, std::string_view name, const std::
     std::string json;
     json.reserve(96 + name.size() + 32 * fields.size());
     json += "{\"id\":\"";
-    appendHex(json, frame.id, frame.extended ? 8 : 3); // the candump notation's identifier
+    json += formatId(frame);
     json += "\",\"dlc\":";
     json += std::to_string(frame.dlc);
     json += ",\"data\":\"";

@@ -1,7 +1,6 @@
 #include "ro/FrameReport.h"
 
 #include "can/FrameText.h"
-#include "can/ReportFields.h"
 
 namespace stellwerk::ro {
 namespace {
@@ -12,7 +11,7 @@ void appendValue(std::string& out, const Field& field) {
         return;
     }
     out += "0x";
-    out += can::hexDigits(field.number, field.digits);
+    can::appendHex(out, field.number, field.digits);
 }
 
 std::string_view directionName(Direction direction) {
@@ -109,11 +108,11 @@ std::string FrameReport::text() const {
 std::string FrameReport::json() const {
     std::string json = "{\"id\":\"";
     json.reserve(192);
-    json += can::hexDigits(frame_.id, frame_.extended ? 8 : 3); // the candump notation's identifier
+    json += can::formatId(frame_);
     json += frame_.extended ? "\",\"extended\":true" : "\",\"extended\":false";
     json += ",\"dlc\":" + std::to_string(frame_.dlc) + ",\"data\":\"";
     for (const std::uint8_t byte : frame_.payload())
-        json += can::hexDigits(byte, 2);
+        can::appendHex(json, byte, 2);
     json += "\",\"name\":\"";
     json += name();
     json += "\",\"direction\":\"";
