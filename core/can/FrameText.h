@@ -29,12 +29,13 @@ Expected<ParsedFrame, std::string> parseFrame(std::string_view line);
 
 // Standard identifiers are written with 3 hex digits ("123 2 01 02", "123#0102"), extended with 8.
 std::string formatDocument(const CanFrame& frame); // "00004711 5 00 00 00 00 00"
+std::string formatCandump(const CanFrame& frame);  // "00004711#0000000000"
+// Extended frames only (check CanFrame::fitsNetworkForm()).
+std::string formatNetwork(const CanFrame& frame); // "00004711050000000000000000"
+
 // The identifier as both notations write it: 3 hex digits for a standard frame, 8 for an extended one.
 std::string formatId(const CanFrame& frame);
 // Appends `value` in upper-case hex with at least `digits` digits (the one hex writer of the reports).
 void appendHex(std::string& out, std::uint64_t value, unsigned digits);
-std::string formatCandump(const CanFrame& frame); // "00004711#0000000000"
-// Extended frames only (check CanFrame::fitsNetworkForm()).
-std::string formatNetwork(const CanFrame& frame); // "00004711050000000000000000"
 
 } // namespace stellwerk::can
