@@ -3,6 +3,7 @@
 #include "cs2/Request.h"
 #include "cs2config/Document.h"
 #include "cs2config/TrackLayout.h"
+#include "station/StateQueries.h"
 #include "station/StationSession.h"
 
 #include <QTimer>
@@ -20,20 +21,6 @@ std::optional<Model> parseAs(const std::string& key, const std::string& contents
     return model;
 }
 
-cs2::Message functionQuery(cs2::LocId loco, std::uint8_t function) {
-    cs2::LocoFunction query;
-    query.loco = loco;
-    query.function = function;
-    return cs2::request(query);
-}
-
-cs2::Message contactQuery(std::int64_t device, std::int64_t contact) {
-    cs2::S88Event query;
-    query.device = std::uint16_t(device);
-    query.contact = std::uint16_t(contact);
-    return cs2::request(query);
-}
-
 } // namespace
 
 StartupSequence::StartupSequence(StationSession& session, StartupOptions options, QObject* parent)
@@ -49,6 +36,8 @@ StartupSequence::StartupSequence(StationSession& session, StartupOptions options
     connect(&session_, &StationSession::connectionLost, this, &StartupSequence::abandon);
 }
 
+StartupSequence::~StartupSequence() = default;
+
 void StartupSequence::start() {
     result_ = {};
     abandoned_ = false;
@@ -60,7 +49,8 @@ void StartupSequence::start() {
 void StartupSequence::abandon() {
     abandoned_ = true;
     windowTimer_->stop();
-    queries_.clear();
+    if (queries_)
+        queries_->abandon();
     keys_.clear();
 }
 
@@ -163,52 +153,33 @@ void StartupSequence::keep(const std::string& key, const std::string& contents) 
 }
 
 void StartupSequence::queueStateQueries() {
-    queries_.clear();
+    std::vector<cs2::Message> queries;
     if (options_.queryStates && result_.locomotives) {
         for (const auto& loco : result_.locomotives->locomotives) {
             if (loco.isEmpty())
                 continue;
-            const cs2::LocId id(loco.uid);
-            queries_.push_back(cs2::request(cs2::LocoSpeed{id, std::nullopt}));
-            queries_.push_back(cs2::request(cs2::LocoDirection{id, std::nullopt}));
+            std::vector<int> functions;
             for (const auto& function : loco.functions)
-                if (function.number >= 0 && function.number < 32)
-                    queries_.push_back(functionQuery(id, std::uint8_t(function.number)));
+                functions.push_back(function.number);
+            for (cs2::Message& query : locomotiveQueries(cs2::LocId(loco.uid), functions))
+                queries.push_back(std::move(query));
         }
     }
     if (options_.queryStates) {
         for (const auto& page : result_.pages)
             for (const auto& element : page.page.elements)
                 if (element.category() == cs2config::TrackCategory::Feedback && element.hasArticle())
-                    queries_.push_back(contactQuery(element.deviceId, element.article));
+                    queries.push_back(contactQuery(element.deviceId, element.article));
     }
-    result_.stateQueries = queries_.size();
-    pumpQueries();
-}
-
-void StartupSequence::pumpQueries() {
-    while (inFlight_ < options_.queriesInFlight && !queries_.empty()) {
-        const cs2::Message query = queries_.front();
-        queries_.pop_front();
-        ++inFlight_;
-        session_.request(query, [this, query](const CommandResult& r) {
-            --inFlight_;
-            if (abandoned_)
-                return;
-            if (r.succeeded())
-                ++result_.stateAnswers;
-            else
-                report(QStringLiteral("%1: %2").arg(
-                    QLatin1String(cs2::messageName(query.body).data(),
-                                  qsizetype(cs2::messageName(query.body).size())),
-                    QLatin1String(commandStatusName(r.status))));
-            pumpQueries();
-        });
-    }
-    if (!abandoned_ && inFlight_ == 0 && queries_.empty() && step_ == Step::States) {
+    result_.stateQueries = queries.size();
+    queries_ = std::make_unique<StateQueryRound>(session_, std::move(queries), options_.queriesInFlight);
+    connect(queries_.get(), &StateQueryRound::problem, this, &StartupSequence::report);
+    connect(queries_.get(), &StateQueryRound::finished, this, [this] {
+        result_.stateAnswers = queries_->answered();
         enter(Step::Ready);
         emit ready(result_);
-    }
+    });
+    queries_->start();
 }
 
 void StartupSequence::report(const QString& message) {

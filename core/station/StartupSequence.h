@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,6 +25,7 @@ class QTimer;
 namespace stellwerk::station {
 
 class StationSession;
+class StateQueryRound;
 
 // What the start-up does, and how long it listens for ping answers.
 struct StartupOptions {
@@ -69,6 +71,7 @@ public:
     static constexpr int StepCount = 5;
 
     StartupSequence(StationSession& session, StartupOptions options = {}, QObject* parent = nullptr);
+    ~StartupSequence() override;
 
     void start();
     // Stops here for good: nothing more is sent and ready() is not emitted. Happens by itself when the
@@ -94,7 +97,6 @@ private:
     void fileArrived(const std::string& key, const DownloadResult& result);
     void keep(const std::string& key, const std::string& contents);
     void queueStateQueries();
-    void pumpQueries();
     void report(const QString& message);
 
     StationSession& session_;
@@ -105,8 +107,7 @@ private:
     std::size_t nextDevice_ = 0;
     std::deque<std::string> keys_;
     int filesDone_ = 0;
-    std::deque<cs2::Message> queries_;
-    int inFlight_ = 0;
+    std::unique_ptr<StateQueryRound> queries_;
     bool abandoned_ = false;
 };
 

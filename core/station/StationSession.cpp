@@ -78,6 +78,7 @@ void StationSession::ping() {
 
 void StationSession::receive(const std::vector<can::CanFrame>& frames) {
     lastHeard_ = std::chrono::steady_clock::now();
+    answerInBatch_ = false;
     for (const auto& frame : frames)
         receiveFrame(frame);
     download_->flushProgress();
@@ -85,6 +86,8 @@ void StationSession::receive(const std::vector<can::CanFrame>& frames) {
         emit updated(events_.updates());
         events_.clear();
     }
+    if (answerInBatch_)
+        emit answersHeard();
 }
 
 void StationSession::receiveFrame(const can::CanFrame& frame) {
@@ -103,6 +106,7 @@ void StationSession::receiveFrame(const can::CanFrame& frame) {
 }
 
 void StationSession::route(const cs2::Message& message, const can::CanFrame& frame) {
+    answerInBatch_ = answerInBatch_ || message.response;
     if (const auto* stream = std::get_if<cs2::ConfigDataStream>(&message.body)) {
         download_->feed(frame);
         if (stream->form == cs2::ConfigDataStream::Form::BroadcastHeader)

@@ -76,6 +76,9 @@ signals:
     // The connection was lost (the transport left Connected). Emitted before the waiting commands are
     // cancelled, so that whoever drives a conversation (the start-up) can abandon it first.
     void connectionLost();
+    // The last batch of frames held at least one answer (a frame with the response bit) from a device on
+    // the bus: the station is heard. Emitted after updated().
+    void answersHeard();
 
 private:
     void transportStateChanged(transport::Transport::State state);
@@ -97,6 +100,7 @@ private:
     StationEventCollector events_;
     SessionCounters counters_;
     bool connected_ = false;
+    bool answerInBatch_ = false;
     std::chrono::steady_clock::time_point lastHeard_; // the last frame received
 };
 

@@ -12,6 +12,8 @@ target_sources(stellwerk-station PRIVATE
     station/Liveness.h
     station/StartupSequence.cpp
     station/StartupSequence.h
+    station/StateQueries.cpp
+    station/StateQueries.h
     station/StationIdentity.cpp
     station/StationSession.cpp
     station/StationSession.h
