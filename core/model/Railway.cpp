@@ -35,6 +35,7 @@ Railway::Railway(station::StationSession& session, QObject* parent)
                     contactLost();
             });
     connect(poller_, &ReadingPoller::readingMissed, this, &Railway::readingMissed);
+    connect(&session_, &station::StationSession::answersHeard, this, &Railway::answersHeard);
 }
 
 Railway::Railway(station::StationSession& session, const station::StartupResult& startup, QObject* parent)
@@ -54,6 +55,8 @@ void Railway::load(const station::StartupResult& startup) {
         poller_->start();
     emit loaded();
     setStateReported(stationHeard());
+    for (const CommandTarget target : unconfirmed_.targets())
+        checkReport(target); // the start-up's answers may show a late copy carried out
 }
 
 bool Railway::stationHeard() const {
@@ -109,9 +112,13 @@ void Railway::apply(const station::StationUpdates& updates) {
         std::erase_if(own.contacts, [this](const station::FeedbackContactChange& change) {
             return switcher_->lights(contactKey(change.device, change.contact));
         });
-        return announce(state_.apply(own, QDateTime::currentDateTime()));
+        const RailwayChanges changes = state_.apply(own, QDateTime::currentDateTime());
+        announce(changes);
+        return checkReports(changes);
     }
-    announce(state_.apply(updates, QDateTime::currentDateTime()));
+    const RailwayChanges changes = state_.apply(updates, QDateTime::currentDateTime());
+    announce(changes);
+    checkReports(changes);
 }
 
 void Railway::reportOccupant(ContactKey key, std::uint32_t locId) {
@@ -171,26 +178,20 @@ void Railway::readingMissed(quint32 uid, quint8 number) {
         emit devicesChanged({uid});
 }
 
-void Railway::command(const cs2::Message& message, const QString& what, std::function<void()> done) {
-    QPointer<Railway> self(this);
-    session_.request(message, [self, what, done = std::move(done)](const station::CommandResult& result) {
-        if (!self)
-            return;
-        if (!result.succeeded())
-            emit self->problem(commandProblem(what, result));
-        else if (done)
-            done();
-    });
-}
-
-void Railway::locoCommand(std::uint32_t loco, LocomotiveControl control, int function,
+void Railway::locoCommand(std::uint32_t loco, LocomotiveControl control, int function, int value,
                           const cs2::Message& message, const QString& what, std::function<void()> done) {
     QPointer<Railway> self(this);
+    const CommandTarget target = control == LocomotiveControl::Direction ? CommandTarget::direction(loco)
+                                 : control == LocomotiveControl::Function
+                                     ? CommandTarget::function(loco, function)
+                                     : CommandTarget::speed(loco);
+    const std::optional<int> confirmed = reportedValue(target);
     emit locomotiveCommandSent(loco, control, function);
-    session_.request(message, [self, loco, control, function, what,
+    session_.request(message, [self, loco, control, function, value, target, confirmed, what,
                                done = std::move(done)](const station::CommandResult& result) {
         if (!self)
             return;
+        self->recordOutcome(target, value, confirmed, result);
         if (!result.succeeded()) {
             emit self->locomotiveCommandFailed(loco, control, function, failureReason(result));
             emit self->problem(commandProblem(what, result));
@@ -202,6 +203,18 @@ void Railway::locoCommand(std::uint32_t loco, LocomotiveControl control, int fun
     });
 }
 
+void Railway::powerCommand(bool on, const cs2::Message& message, const QString& what) {
+    QPointer<Railway> self(this);
+    const std::optional<int> confirmed = reportedValue(CommandTarget::power());
+    session_.request(message, [self, on, confirmed, what](const station::CommandResult& result) {
+        if (!self)
+            return;
+        self->recordOutcome(CommandTarget::power(), on ? 1 : 0, confirmed, result);
+        if (!result.succeeded())
+            emit self->problem(commandProblem(what, result));
+    });
+}
+
 QString Railway::locoName(std::uint32_t loco) const {
     const Locomotive* found = locomotive(loco);
     return found ? found->displayName() : Locomotive(cs2::LocId(loco)).displayName();
@@ -209,7 +222,7 @@ QString Railway::locoName(std::uint32_t loco) const {
 
 void Railway::setSpeed(std::uint32_t loco, int speed) {
     const auto value = std::uint16_t(std::clamp(speed, 0, int(Locomotive::MaxSpeed)));
-    locoCommand(loco, LocomotiveControl::Speed, -1, commands::speed(cs2::LocId(loco), value),
+    locoCommand(loco, LocomotiveControl::Speed, -1, value, commands::speed(cs2::LocId(loco), value),
                 QStringLiteral("%1: speed %2").arg(locoName(loco)).arg(value));
 }
 
@@ -219,8 +232,8 @@ void Railway::setDirection(std::uint32_t loco, cs2::Direction direction) {
             .arg(locoName(loco), direction == cs2::Direction::Backward ? QStringLiteral("backward")
                                                                        : QStringLiteral("forward"));
     QPointer<Railway> self(this);
-    locoCommand(loco, LocomotiveControl::Direction, -1, commands::direction(cs2::LocId(loco), direction),
-                what, [self, loco, direction] {
+    locoCommand(loco, LocomotiveControl::Direction, -1, direction == cs2::Direction::Backward ? 1 : 0,
+                commands::direction(cs2::LocId(loco), direction), what, [self, loco, direction] {
                     // The station stopped the locomotive and will not say so (field notes).
                     if (self && self->state_.locomotives().find(loco) &&
                         self->state_.locomotives().find(loco)->directionSet(direction))
@@ -239,7 +252,7 @@ void Railway::setFunction(std::uint32_t loco, int function, bool on) {
         emit problem(QStringLiteral("%1: there is no function F%2").arg(locoName(loco)).arg(function));
         return;
     }
-    locoCommand(loco, LocomotiveControl::Function, function,
+    locoCommand(loco, LocomotiveControl::Function, function, on ? 1 : 0,
                 commands::function(cs2::LocId(loco), std::uint8_t(function), on),
                 QStringLiteral("%1: F%2 %3").arg(locoName(loco)).arg(function).arg(on ? "on" : "off"));
 }
@@ -251,7 +264,7 @@ void Railway::toggleFunction(std::uint32_t loco, int function) {
 
 void Railway::emergencyStop(std::uint32_t loco) {
     QPointer<Railway> self(this);
-    locoCommand(loco, LocomotiveControl::EmergencyStop, -1, commands::emergencyStop(cs2::LocId(loco)),
+    locoCommand(loco, LocomotiveControl::EmergencyStop, -1, 0, commands::emergencyStop(cs2::LocId(loco)),
                 QStringLiteral("%1: emergency stop").arg(locoName(loco)), [self, loco] {
                     // Document 2.4: the locomotive stands; the station does not announce its speed.
                     Locomotive* found = self ? self->state_.locomotives().find(loco) : nullptr;
@@ -296,11 +309,11 @@ void Railway::readSetting(std::uint32_t uid, std::uint8_t channel) {
 }
 
 void Railway::stop() {
-    command(commands::stop(), QStringLiteral("Stop (track power off)"));
+    powerCommand(false, commands::stop(), QStringLiteral("Stop (track power off)"));
 }
 
 void Railway::go() {
-    command(commands::go(), QStringLiteral("Go (track power on)"));
+    powerCommand(true, commands::go(), QStringLiteral("Go (track power on)"));
 }
 
 } // namespace stellwerk::model

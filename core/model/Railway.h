@@ -4,6 +4,7 @@
 #include "model/RailwayState.h"
 #include "model/ReadingPoller.h"
 #include "model/RouteRunner.h"
+#include "model/UnconfirmedCommands.h"
 
 #include <QList>
 #include <QObject>
@@ -15,7 +16,9 @@
 
 namespace stellwerk::station {
 class StationSession;
-}
+class StateQueryRound;
+struct CommandResult;
+} // namespace stellwerk::station
 
 namespace stellwerk::model {
 
@@ -117,6 +120,22 @@ public:
     void stop();
     void go();
 
+    // After trouble. A command the station did not confirm (no answer after every retry, or cut off with
+    // the connection) may still reach it: a station that stalled reads its copies when it wakes. So, as
+    // soon as the station is heard again, every locomotive, accessory and the track power that had such a
+    // command is brought back to what the station last confirmed (a locomotive without a confirmed speed
+    // to 0), or, in the StopLocomotives aftermath, every locomotive that had one is stopped; a copy the
+    // station carries out later is undone again (UnconfirmedCommands::WatchTime). Nothing is made faster,
+    // started or switched on to bring it back. Each step is announced with stateCorrected.
+    void setAftermath(Aftermath aftermath) { unconfirmed_.setAftermath(aftermath); }
+    Aftermath aftermath() const { return unconfirmed_.aftermath(); }
+    const UnconfirmedCommands& unconfirmedCommands() const { return unconfirmed_; }
+    // "I don't trust what I see": brings back what waits to be brought back, sends every locomotive its
+    // confirmed speed (or 0 in the StopLocomotives aftermath, or when none was confirmed) and reads every
+    // state the station can report again (speeds, directions, functions, contacts); backInStep() follows.
+    void bringBackInStep();
+    bool isBringingBackInStep() const { return resync_ != nullptr; }
+
     // Accessories `switcher` drives go to it, not to the station (null: all go to the station). Not owned.
     void setDeviceAccessories(DeviceAccessories* switcher) { switcher_ = switcher; }
     // What a device reported: an accessory's position (nullopt: no longer reported, the device is offline)
@@ -161,6 +180,10 @@ signals:
                                  int function, const QString& reason);
     // A readable sentence: a command the station rejected or did not answer, an overload, a failed route.
     void problem(const QString& message);
+    // Something was brought back after a command the station did not confirm (see setAftermath).
+    void stateCorrected(const stellwerk::model::Correction& correction);
+    // bringBackInStep() has read the states again: how many questions were answered and how many not.
+    void backInStep(int answered, int unanswered);
 
 private:
     void apply(const station::StationUpdates& updates);
@@ -173,11 +196,21 @@ private:
     void announceTiles(const RailwayChanges& changes);
     void readingMissed(quint32 device, quint8 channel);
     void updatePollerSources();
-    // Sends a command; `what` names it for the problem message, `done` runs after an acknowledgement.
-    void command(const cs2::Message& message, const QString& what, std::function<void()> done = {});
-    // The same for a command to one locomotive's control, announced with the locomotiveCommand signals.
-    void locoCommand(std::uint32_t loco, LocomotiveControl control, int function, const cs2::Message& message,
-                     const QString& what, std::function<void()> done = {});
+    // Sends a command to one locomotive's control, announced with the locomotiveCommand signals; `what`
+    // names it for the problem message, `done` runs after an acknowledgement.
+    void locoCommand(std::uint32_t loco, LocomotiveControl control, int function, int value,
+                     const cs2::Message& message, const QString& what, std::function<void()> done = {});
+    void powerCommand(bool on, const cs2::Message& message, const QString& what);
+    // The book of unconfirmed commands (RailwayCorrections.cpp).
+    std::optional<int> reportedValue(CommandTarget target) const;
+    void recordOutcome(CommandTarget target, int value, std::optional<int> confirmedAtSend,
+                       const station::CommandResult& result);
+    void checkReports(const RailwayChanges& changes);
+    void checkReport(CommandTarget target);
+    void answersHeard();
+    void askFor(CommandTarget target);
+    void correct(const Correction& correction);
+    std::vector<cs2::Message> stateQueries() const;
     void switchForRoute(std::int64_t accessory, int position, std::function<void(const QString&)> done);
     void routeEnded(std::int64_t route);
     void sendSwitching(std::int64_t address, int position, const cs2::Message& command, const QString& what);
@@ -191,6 +224,8 @@ private:
     std::map<std::int64_t, RouteRunner*> runners_;
     DeviceAccessories* switcher_ = nullptr;
     bool stateReported_ = false;
+    UnconfirmedCommands unconfirmed_;
+    station::StateQueryRound* resync_ = nullptr;
 };
 
 } // namespace stellwerk::model

@@ -52,13 +52,17 @@ void Railway::switchAddress(std::int64_t address, int position) {
 void Railway::sendSwitching(std::int64_t address, int position, const cs2::Message& command,
                             const QString& what) {
     QPointer<Railway> self(this);
-    session_.request(command, [self, address, position, what](const station::CommandResult& result) {
-        if (!self)
-            return;
-        if (!result.succeeded())
-            emit self->problem(commandProblem(what, result));
-        emit self->switchingEnded(address, position, result.succeeded());
-    });
+    const CommandTarget target = CommandTarget::address(address);
+    const std::optional<int> confirmed = reportedValue(target);
+    session_.request(
+        command, [self, address, position, target, confirmed, what](const station::CommandResult& result) {
+            if (!self)
+                return;
+            self->recordOutcome(target, position, confirmed, result);
+            if (!result.succeeded())
+                emit self->problem(commandProblem(what, result));
+            emit self->switchingEnded(address, position, result.succeeded());
+        });
 }
 
 // Sends the switching and reports once: empty on acknowledgement, else a sentence saying what failed.
@@ -83,10 +87,15 @@ void Railway::switchForRoute(std::int64_t id, int position, std::function<void(c
         return;
     }
     QPointer<Railway> self(this);
+    const CommandTarget target = CommandTarget::accessory(id);
+    const std::optional<int> confirmed = reportedValue(target);
     session_.request(switchCommand(*accessory, *output),
-                     [self, what, done = std::move(done)](const station::CommandResult& result) {
-                         if (self)
-                             done(result.succeeded() ? QString() : commandProblem(what, result));
+                     [self, what, target, position, confirmed,
+                      done = std::move(done)](const station::CommandResult& result) {
+                         if (!self)
+                             return;
+                         self->recordOutcome(target, position, confirmed, result);
+                         done(result.succeeded() ? QString() : commandProblem(what, result));
                      });
 }
 

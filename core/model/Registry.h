@@ -56,6 +56,7 @@ public:
             keys_.push_back(key);
     }
     bool empty() const { return keys_.empty(); }
+    bool contains(const Key& key) const { return seen_.count(key) != 0; }
     const std::vector<Key>& keys() const { return keys_; }
 
 private:

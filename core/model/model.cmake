@@ -21,6 +21,7 @@ target_sources(stellwerk-model PRIVATE
     model/RailwayHandhelds.h
     model/RailwayThrottles.cpp
     model/RailwayThrottles.h
+    model/RailwayCorrections.cpp
     model/RailwayRoutes.cpp
     model/RailwayState.cpp
     model/ReadingPoller.cpp
@@ -29,5 +30,7 @@ target_sources(stellwerk-model PRIVATE
     model/RouteRunner.h
     model/RoutePlan.cpp
     model/TrackLayout.cpp
+    model/UnconfirmedCommands.cpp
+    model/UnconfirmedCommands.h
 )
 target_link_libraries(stellwerk-model PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-station stellwerk-handhelds stellwerk-orccentral stellwerk-romodule Qt6::Core)

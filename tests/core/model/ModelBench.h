@@ -178,11 +178,16 @@ public:
         : station(std::move(layout), options), session(appBus, fastSettings()), railway(session) {
         transport::LoopbackTransport::join(stationEnd, appEnd);
         QObject::connect(&station, &sim::SimulatedStation::framesEmitted, &stationEnd,
-                         [this](const std::vector<can::CanFrame>& frames) { stationEnd.sendBatch(frames); });
+                         [this](const std::vector<can::CanFrame>& frames) {
+                             if (!muted)
+                                 stationEnd.sendBatch(frames);
+                         });
         QObject::connect(&stationEnd, &transport::Transport::framesReceived, &station,
                          [this](const std::vector<can::CanFrame>& frames) {
                              for (const auto& frame : frames)
-                                 if (!deaf)
+                                 if (stalled)
+                                     held.push_back(frame);
+                                 else if (!deaf)
                                      station.receive(frame);
                          });
         stationEnd.open();
@@ -203,6 +208,20 @@ public:
 
     // The station stays connected but hears nothing any more (and so answers nothing).
     bool deaf = false;
+    // The station stops reading without closing (a frozen screen, a Wi-Fi stall); wake() makes it read
+    // everything that arrived meanwhile at once, as a stalled CS2 does when it comes back.
+    void stall() { stalled = true; }
+    void wake() {
+        stalled = false;
+        const std::vector<can::CanFrame> frames = std::move(held);
+        held.clear();
+        for (const auto& frame : frames)
+            station.receive(frame);
+    }
+    bool stalled = false;
+    std::vector<can::CanFrame> held;
+    // What the station says is lost on the way (the app hears nothing of it).
+    bool muted = false;
     transport::LoopbackTransport stationEnd{QStringLiteral("station")};
     transport::LoopbackTransport appEnd{QStringLiteral("app")};
     buses::Bus appBus{appEnd, bus::BusProfile::centralStation()};
