@@ -80,7 +80,7 @@ bool StationServer::listenTcp() {
 void StationServer::openCanBus() {
     canBus_ = new transport::CanBusTransport(*settings_.canBus, this);
     connect(canBus_, &transport::Transport::framesReceived, this,
-            [this](const std::vector<can::CanFrame>& frames) { received(frames, {Origin::Kind::Can}); });
+            [this](const std::vector<can::CanFrame>& frames) { arrived(frames, {Origin::Kind::Can}); });
     connect(canBus_, &transport::Transport::problem, this, &StationServer::problem);
     canBus_->open();
 }
@@ -107,7 +107,7 @@ QStringList StationServer::listeners() const {
 
 // A CS2 takes datagrams of n x 13 bytes; anything else is counted and dropped.
 void StationServer::readDatagrams() {
-    while (udp_->hasPendingDatagrams()) {
+    while (!stalled_ && udp_->hasPendingDatagrams()) { // a stalled station leaves them in its socket
         const QNetworkDatagram datagram = udp_->receiveDatagram();
         std::vector<can::CanFrame> frames;
         const transport::DatagramContent content =
@@ -142,14 +142,51 @@ void StationServer::readClient(QTcpSocket* socket) {
     const QByteArray bytes = socket->readAll();
     std::vector<can::CanFrame> frames;
     counters_.malformedFrames += client->second.feed(transport::asBytes(bytes), frames);
-    received(frames, {Origin::Kind::Tcp, socket});
+    arrived(std::move(frames), {Origin::Kind::Tcp, socket});
 }
 
 void StationServer::dropClient(QTcpSocket* socket) {
+    if (clients_.count(socket) && stalled_)
+        readClient(socket); // what it sent is read when the station wakes, as from a kernel's buffer
+    for (auto& [frames, origin] : heldIn_)
+        if (origin.socket == socket)
+            origin.socket = nullptr;
     if (clients_.erase(socket) == 0)
         return;
     socket->deleteLater();
     emit tcpClientsChanged(int(clients_.size()));
+}
+
+void StationServer::arrived(std::vector<can::CanFrame> frames, Origin origin) {
+    if (stalled_) {
+        if (!frames.empty())
+            heldIn_.emplace_back(std::move(frames), origin);
+        return;
+    }
+    received(frames, origin);
+}
+
+void StationServer::stall() {
+    stalled_ = true;
+    if (tcp_)
+        tcp_->pauseAccepting();
+}
+
+void StationServer::wake() {
+    if (!stalled_)
+        return;
+    stalled_ = false;
+    const std::vector<can::CanFrame> out = std::exchange(heldOut_, {});
+    if (!out.empty())
+        broadcast(out, std::nullopt);
+    for (auto& [frames, origin] : std::exchange(heldIn_, {}))
+        received(frames, origin);
+    if (udp_)
+        readDatagrams();
+    if (tcp_) {
+        tcp_->resumeAccepting();
+        acceptClients();
+    }
 }
 
 void StationServer::received(const std::vector<can::CanFrame>& frames, Origin origin) {
@@ -166,6 +203,10 @@ void StationServer::received(const std::vector<can::CanFrame>& frames, Origin or
 }
 
 void StationServer::broadcast(std::span<const can::CanFrame> frames, const std::optional<Origin>& except) {
+    if (stalled_) {
+        heldOut_.insert(heldOut_.end(), frames.begin(), frames.end());
+        return;
+    }
     const auto from = [&except](Origin::Kind kind) { return except && except->kind == kind; };
     if (udp_ && !from(Origin::Kind::Udp))
         sendUdp(frames);

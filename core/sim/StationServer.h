@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 class QTcpServer;
@@ -79,6 +80,14 @@ public:
     // "udp 0.0.0.0:15731 -> 255.255.255.255:15730", "tcp 0.0.0.0:15731", "can socketcan/can0".
     QStringList listeners() const;
 
+    // Stalls like a frozen station (a hung screen, a Wi-Fi stall): it stops reading and answering without
+    // closing anything. What arrives meanwhile is kept in order, also from a client that goes away (its
+    // bytes were in the station's socket), new TCP clients wait in the backlog, and what the station emits
+    // waits too. wake() sends what waited and then reads everything at once.
+    void stall();
+    void wake();
+    bool isStalled() const { return stalled_; }
+
 signals:
     void tcpClientsChanged(int count);
     void problem(const QString& message);
@@ -98,6 +107,7 @@ private:
     void readClient(QTcpSocket* socket);
     void dropClient(QTcpSocket* socket);
     void received(const std::vector<can::CanFrame>& frames, Origin origin);
+    void arrived(std::vector<can::CanFrame> frames, Origin origin);
     void broadcast(std::span<const can::CanFrame> frames, const std::optional<Origin>& except);
     void sendUdp(std::span<const can::CanFrame> frames);
 
@@ -110,6 +120,9 @@ private:
     std::map<QTcpSocket*, transport::FrameAssembler> clients_;
     StationServerCounters counters_;
     QString error_;
+    bool stalled_ = false;
+    std::vector<std::pair<std::vector<can::CanFrame>, Origin>> heldIn_;
+    std::vector<can::CanFrame> heldOut_;
 };
 
 } // namespace stellwerk::sim

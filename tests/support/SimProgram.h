@@ -8,7 +8,9 @@
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStringList>
+#include <csignal>
 #include <cstdint>
+#include <sys/types.h>
 
 namespace stellwerk::support {
 
@@ -21,6 +23,7 @@ public:
     }
     ~SimProgram() {
         if (process_.state() != QProcess::NotRunning) {
+            wake(); // a stopped process cannot end
             process_.terminate();
             process_.waitForFinished(5000);
         }
@@ -37,14 +40,25 @@ public:
         output();
         return process_.exitCode();
     }
-    std::uint16_t tcpPort() {
-        const QRegularExpression listening(QStringLiteral("listening: tcp 127\\.0\\.0\\.1:(\\d+)"));
+    // Stalls the program as a frozen station does: it stops reading and answering without closing
+    // anything (SIGSTOP); wake() lets it go on, and it reads everything that arrived meanwhile at once.
+    bool stall() { return sendSignal(SIGSTOP); }
+    bool wake() { return sendSignal(SIGCONT); }
+    // The port of a listener the program printed ("udp" or "tcp"), 0 when it printed none in time.
+    std::uint16_t port(const QString& kind) {
+        const QRegularExpression listening(QStringLiteral("listening: %1 127\\.0\\.0\\.1:(\\d+)").arg(kind));
         QRegularExpressionMatch match;
         runEventsUntil([&] { return (match = listening.match(output())).hasMatch(); }, 15000);
         return match.hasMatch() ? std::uint16_t(match.captured(1).toUInt()) : 0;
     }
+    std::uint16_t tcpPort() { return port(QStringLiteral("tcp")); }
 
 private:
+    bool sendSignal(int number) {
+        const qint64 pid = process_.processId();
+        return pid > 0 && ::kill(pid_t(pid), number) == 0;
+    }
+
     QProcess process_;
     QString out_;
 };
