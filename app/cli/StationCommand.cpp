@@ -4,6 +4,7 @@
 #include "DriveCommands.h"
 #include "HandheldCommand.h"
 #include "OrcCommand.h"
+#include "ResyncCommand.h"
 #include "RoCommand.h"
 #include "StationClient.h"
 #include "TransferCommands.h"
@@ -21,6 +22,8 @@ ParsedJob parseCommand(const std::vector<std::string>& arguments, std::ostream& 
     if (auto job = parseDeviceCommand(command, rest, out, err))
         return std::move(*job);
     if (auto job = parseTransferCommand(command, rest, out, err))
+        return std::move(*job);
+    if (auto job = parseResyncCommand(command, rest, out, err))
         return std::move(*job);
     if (auto job = parseHandheldCommand(command, rest, out, err))
         return std::move(*job);
@@ -55,6 +58,10 @@ const char* stationUsage() {
            "                                       named and skipped: exit 0 when every device with status\n"
            "                                       data was read, 1 when a reading failed or none had any\n"
            "    monitor [--json] [--count N]       print every frame until N frames or Ctrl-C\n"
+           "    resync [--stop]                    bring the layout back in step: every loco gets the speed\n"
+           "                                       the station confirmed (--stop: 0), every state is read\n"
+           "                                       again and each loco printed; exit 1 when one went\n"
+           "                                       unanswered\n"
            "    handhelds [--json] [--master|--watch] [--seconds N]\n"
            "                                       be the M-CAN master of the MS1 handhelds on the bus (not\n"
            "                                       beside a Central Station, which is their master; "

@@ -5,6 +5,7 @@
 
 #include "CliTestSupport.h"
 #include "PingOnlyDevice.h"
+#include "cs2/Codec.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
@@ -297,6 +298,43 @@ TEST_F(StationCommandTest, MonitorJsonPrintsOneObjectPerFrame) {
     EXPECT_TRUE(std::regex_match(result.out, std::regex("(\\{\"id\":\"[0-9A-F]{8}\".*\\}\n){2}")))
         << result.out;
     EXPECT_NE(result.out.find("\"name\":\"feedback.s88-event\""), std::string::npos) << result.out;
+}
+
+// ---- resync: bringing the layout back in step (issue 32) ----------------------------------------------
+
+// Another controller (an MS2) drives a locomotive on the station's bus.
+void drivenByAnotherController(sim::SimulatedStation& station, std::uint32_t loco, std::uint16_t speed) {
+    station.receive(cs2::encode(cs2::Message{0, false, 0x2F11, cs2::LocoSpeed{cs2::LocId(loco), speed}}));
+}
+
+TEST_F(StationCommandTest, ResyncSendsEveryLocoItsConfirmedSpeedAndPrintsEveryStateReadAgain) {
+    drivenByAnotherController(*station_, 0x4001, 300);
+    const Outcome result = run({"resync"});
+    EXPECT_EQ(result.status, 0) << result.err;
+    EXPECT_TRUE(std::regex_search(result.out, std::regex("^ok: sent 12 locomotives their confirmed speed and "
+                                                         "read [0-9]+ states again\n")))
+        << result.out;
+    EXPECT_NE(result.out.find("\nBR 218 Ost (0x4001): speed 300, forward"), std::string::npos) << result.out;
+    EXPECT_EQ(countLines(result.out), 13U) << "the summary and one line per locomotive";
+    EXPECT_EQ(station_->loco(0x4001)->speed, 300) << "its confirmed speed, sent again";
+}
+
+TEST_F(StationCommandTest, ResyncStopStopsEveryLoco) {
+    drivenByAnotherController(*station_, 0x4001, 300);
+    drivenByAnotherController(*station_, 0x0018, 500);
+    const Outcome result = run({"resync", "--stop"});
+    EXPECT_EQ(result.status, 0) << result.err;
+    EXPECT_EQ(result.out.rfind("ok: stopped 12 locomotives and read ", 0), 0U) << result.out;
+    EXPECT_NE(result.out.find("BR 218 Ost (0x4001): speed 0"), std::string::npos) << result.out;
+    EXPECT_EQ(station_->loco(0x4001)->speed, 0);
+    EXPECT_EQ(station_->loco(0x0018)->speed, 0);
+}
+
+TEST_F(StationCommandTest, ResyncTakesOnlyStop) {
+    const Outcome result = run({"resync", "--all"});
+    EXPECT_EQ(result.status, 2);
+    EXPECT_NE(result.err.find("resync: unknown argument '--all' (takes --stop)"), std::string::npos)
+        << result.err;
 }
 
 // ---- UDP: the station replies to the port the command line listens on --------------------------------
