@@ -1,5 +1,7 @@
 #include "shell/MainWindow.h"
 
+#include "aftertrouble/AftermathMenu.h"
+#include "aftertrouble/CorrectionNotice.h"
 #include "common/LocomotivePictureBook.h"
 #include "common/PowerStatus.h"
 #include "common/ToolIcons.h"
@@ -192,6 +194,12 @@ void MainWindow::createStationMenu() {
         StopKeySettings::save(key);
         retranslate();
     });
+    m_stationMenu->addSeparator();
+    m_aftermath = new AftermathMenu(m_stationMenu);
+    m_stationMenu->addAction(m_aftermath->bringBackInStepAction());
+    m_stationMenu->addMenu(m_aftermath);
+    connect(m_aftermath, &AftermathMenu::report, this,
+            [this](const QString& sentence) { statusBar()->showMessage(sentence, 8000); });
 }
 
 void MainWindow::setConnection(connection::StationConnection* station) {
@@ -230,6 +238,8 @@ void MainWindow::setRailway(model::Railway* railway) {
     m_devices->setRailway(railway);
     m_stopGo->setRailway(railway);
     m_power->setRailway(railway);
+    m_aftermath->setRailway(railway);
+    m_corrections->setRailway(railway);
 }
 
 // A failure is already on the station's status line; other problems pass by on the left for a while,
@@ -299,6 +309,11 @@ void MainWindow::createStatusBar() {
     m_startupProgress = new StartupProgress(this);
     m_traffic = new TrafficStatus(this);
     m_power = new PowerStatus(this);
+    // What was brought back after trouble stays until read; the newest also passes by on the left.
+    m_corrections = new CorrectionNotice(this);
+    statusBar()->addPermanentWidget(m_corrections);
+    connect(m_corrections, &CorrectionNotice::corrected, this,
+            [this](const QString& sentence) { statusBar()->showMessage(sentence, 20000); });
     for (QWidget* part : {static_cast<QWidget*>(m_stationStatus), static_cast<QWidget*>(m_startupProgress),
                           static_cast<QWidget*>(m_traffic), static_cast<QWidget*>(m_power)}) {
         part->setContentsMargins(8, 0, 8, 0); // room between the parts, as between a panel's lamps

@@ -16,7 +16,9 @@ class Railway;
 
 namespace stellwerk::ui {
 
+class AftermathMenu;
 class BusMonitorPanel;
+class CorrectionNotice;
 class ConnectionStatus;
 class EmergencyStopKeys;
 class FrameDecoderPanel;
@@ -67,6 +69,8 @@ public:
     ProgrammingPanel* programmingPanel() const { return m_programmingPanel; }
     StopGoButton* stopGoButton() const { return m_stopGo; }
     EmergencyStopKeys* stopKeys() const { return m_stopKeys; }
+    AftermathMenu* aftermathMenu() const { return m_aftermath; }
+    CorrectionNotice* correctionNotice() const { return m_corrections; }
 
     // The railway the panels show and STOP / GO acts on (null: none); see RailwayBinding.
     void setRailway(model::Railway* railway);
@@ -125,6 +129,7 @@ private:
     QAction* m_connectAction = nullptr;
     QAction* m_stopAction = nullptr;
     StopKeyMenu* m_stopKeyMenu = nullptr;
+    AftermathMenu* m_aftermath = nullptr;
     QMenu* m_viewMenu = nullptr;
     QMenu* m_panelsMenu = nullptr;
     QAction* m_resetLayoutAction = nullptr;
@@ -135,6 +140,7 @@ private:
     StartupProgress* m_startupProgress = nullptr;
     TrafficStatus* m_traffic = nullptr;
     PowerStatus* m_power = nullptr;
+    CorrectionNotice* m_corrections = nullptr;
     connection::StationConnection* m_connection = nullptr;
     QPointer<LocomotivePictureBook> m_pictures;
     bool m_shownBefore = false;

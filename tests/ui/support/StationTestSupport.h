@@ -59,6 +59,10 @@ public:
         return server_->listen();
     }
     void stop() { server_.reset(); }
+    // Stops reading and answering without closing (a frozen station), and reads everything at once again.
+    void stall() { server_->stall(); }
+    void wake() { server_->wake(); }
+    bool stalled() const { return server_ && server_->isStalled(); }
     QString url() const { return QStringLiteral("tcp://127.0.0.1:%1").arg(server_->tcpPort()); }
     std::uint16_t port() const { return server_->tcpPort(); }
     // The simulated CS2 itself, to make things happen on the layout (an S88 contact, ...).
