@@ -314,6 +314,10 @@ TEST_F(ThrottleTest, AFailedDirectionAndFunctionStayOutlinedWhileTheStationIsSil
         return throttle.isUnacknowledged(Control::Direction) &&
                throttle.isUnacknowledged(Control::Function, 0);
     }));
+    QPushButton* direction = throttle.directionButton();
+    EXPECT_TRUE(waitFor([&] { return direction->height() >= direction->sizeHint().height(); }))
+        << "the outline's border and padding get their room; the text is not cut: " << direction->height()
+        << " < " << direction->sizeHint().height();
     ASSERT_TRUE(waitFor([&] { return !railways.railway()->isStateReported(); }));
     EXPECT_TRUE(throttle.isUnacknowledged(Control::Direction));
     EXPECT_TRUE(throttle.directionButton()->property("unacknowledged").toBool());
