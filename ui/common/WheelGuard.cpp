@@ -5,6 +5,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QEvent>
+#include <QPointer>
 #include <QScrollBar>
 #include <QWidget>
 
@@ -29,13 +30,12 @@ bool insideGuardedPanel(const QWidget* widget) {
 } // namespace
 
 void WheelGuard::guard(QWidget* panel) {
-    static WheelGuard* const filter = [] {
-        auto* made = new WheelGuard;
-        made->setParent(QCoreApplication::instance());
-        QCoreApplication::instance()->installEventFilter(made);
-        return made;
-    }();
-    Q_UNUSED(filter);
+    static QPointer<WheelGuard> filter; // one for the application, gone with it
+    if (!filter) {
+        filter = new WheelGuard;
+        filter->setParent(QCoreApplication::instance());
+        QCoreApplication::instance()->installEventFilter(filter);
+    }
     panel->setProperty(GuardedProperty, true);
     for (QWidget* child : panel->findChildren<QWidget*>())
         if (isControl(child))
