@@ -32,14 +32,17 @@ QColor Contrast::mix(const QColor& a, const QColor& b, double weight) {
                             float(blend(a.blueF(), b.blueF())));
 }
 
-QColor Contrast::faded(const QColor& foreground, const QColor& background, double wanted) {
+double Contrast::keptFor(const QColor& foreground, const QColor& background, double wanted) {
     for (int step = FadeSteps; step > 0; --step) {
-        const double fade = MostFaded * step / FadeSteps;
-        const QColor candidate = mix(foreground, background, 1.0 - fade);
-        if (ratio(candidate, background) >= wanted)
-            return candidate;
+        const double kept = 1.0 - MostFaded * step / FadeSteps;
+        if (ratio(mix(foreground, background, kept), background) >= wanted)
+            return kept;
     }
-    return foreground;
+    return 1.0;
+}
+
+QColor Contrast::faded(const QColor& foreground, const QColor& background, double wanted) {
+    return mix(foreground, background, keptFor(foreground, background, wanted));
 }
 
 } // namespace stellwerk::ui

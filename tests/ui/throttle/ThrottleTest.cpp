@@ -625,6 +625,10 @@ TEST(ContrastRatio, FollowsTheGuidelinesFormula) {
     const QColor grey = Contrast::faded(Qt::black, Qt::white, Contrast::ForText);
     EXPECT_GE(Contrast::ratio(grey, Qt::white), Contrast::ForText);
     EXPECT_GT(grey.lightness(), 0) << "faded";
+    const double kept = Contrast::keptFor(Qt::black, Qt::white, Contrast::ForDrawings);
+    EXPECT_GE(kept, 0.5);
+    EXPECT_LT(kept, 1.0);
+    EXPECT_GE(Contrast::ratio(Contrast::mix(Qt::black, Qt::white, kept), Qt::white), Contrast::ForDrawings);
 }
 
 // Three throttles side by side, each wide enough for its keys and texts. With STELLWERK_SCREENSHOT_DIR
