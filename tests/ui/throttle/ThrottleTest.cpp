@@ -53,7 +53,7 @@ connection::ConnectionSettings impatient() {
     connection::ConnectionSettings settings;
     settings.session.commands.timeout = 150ms;
     settings.session.commands.retries = 0;
-    settings.session.liveness.interval = 250ms; // silent after 750 ms without an answer
+    settings.session.liveness.interval = 400ms; // silent after 1.2 s without an answer
     return settings;
 }
 
