@@ -2917,16 +2917,52 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <translation>Lok anhalten</translation>
     </message>
     <message>
-        <source>Emergency stop for this locomotive only (E)</source>
-        <translation>Nothalt nur für diese Lok (E)</translation>
-    </message>
-    <message>
         <source>Speed: %1 % (Up/Down, +/-, PageUp/PageDown)</source>
         <translation>Geschwindigkeit: %1 % (Pfeil auf/ab, +/-, Bild auf/ab)</translation>
     </message>
     <message>
         <source>The station did not acknowledge the last command: %1</source>
         <translation>Die Zentrale hat den letzten Befehl nicht bestätigt: %1</translation>
+    </message>
+    <message>
+        <source>no locomotive</source>
+        <translation>keine Lok</translation>
+    </message>
+    <message>
+        <source>Change locomotive</source>
+        <translation>Lok wechseln</translation>
+    </message>
+    <message>
+        <source>%1 is running (%2). Drive %3 with this throttle instead?</source>
+        <translation>%1 fährt (%2). Stattdessen %3 mit diesem Fahrpult fahren?</translation>
+    </message>
+    <message>
+        <source>%1 keeps running at its speed; this throttle no longer drives it.</source>
+        <translation>%1 fährt mit ihrer Geschwindigkeit weiter; dieses Fahrpult steuert sie dann nicht mehr.</translation>
+    </message>
+    <message>
+        <source>Drive %1</source>
+        <translation>%1 fahren</translation>
+    </message>
+    <message>
+        <source>Keep %1</source>
+        <translation>Bei %1 bleiben</translation>
+    </message>
+    <message>
+        <source>Emergency stop for this locomotive only (E); STOP in the toolbar stops the whole layout</source>
+        <translation>Nothalt nur für diese Lok (E); STOP in der Werkzeugleiste hält die ganze Anlage an</translation>
+    </message>
+    <message>
+        <source>The speed the station confirmed</source>
+        <translation>Die Geschwindigkeit, die die Zentrale bestätigt hat</translation>
+    </message>
+    <message>
+        <source>Requested: %1</source>
+        <translation>Angefordert: %1</translation>
+    </message>
+    <message>
+        <source>Sent to the station; the number above changes when it confirms</source>
+        <translation>An die Zentrale gesendet; die Zahl darüber ändert sich, sobald sie bestätigt</translation>
     </message>
 </context>
 <context>

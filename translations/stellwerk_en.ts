@@ -2914,15 +2914,51 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Emergency stop for this locomotive only (E)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Speed: %1 % (Up/Down, +/-, PageUp/PageDown)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>The station did not acknowledge the last command: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no locomotive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change locomotive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is running (%2). Drive %3 with this throttle instead?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 keeps running at its speed; this throttle no longer drives it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drive %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keep %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Emergency stop for this locomotive only (E); STOP in the toolbar stops the whole layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The speed the station confirmed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Requested: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent to the station; the number above changes when it confirms</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1,8 +1,10 @@
 # What several features share: the words and lamps for station state ("not reported", the status dots, the
 # track power line, the "layout stopped" banner), the railway's locomotives as a table, the row index of
-# such tables, the function keys' and the toolbars' icons, two parts side by side or stacked and widgets
-# wrapping into rows as a panel's width allows, and where the remembered settings live.
+# such tables, greys that keep their contrast, the function keys' and the toolbars' icons, two parts side by
+# side or stacked and widgets wrapping into rows as a panel's width allows, the wheel that only scrolls past
+# a panel's controls, and where the remembered settings live.
 target_sources(stellwerk-ui PRIVATE
+    common/Contrast.cpp common/Contrast.h
     common/FunctionIcons.cpp common/FunctionIcons.h
     common/LayoutStateBanner.cpp common/LayoutStateBanner.h
     common/LocomotivePictureBook.cpp common/LocomotivePictureBook.h
@@ -14,6 +16,7 @@ target_sources(stellwerk-ui PRIVATE
     common/StatusDot.cpp common/StatusDot.h
     common/StellwerkSettings.h
     common/ToolIcons.cpp common/ToolIcons.h
+    common/WheelGuard.cpp common/WheelGuard.h
     common/WrappingGrid.cpp common/WrappingGrid.h
 )
 

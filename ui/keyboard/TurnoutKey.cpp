@@ -1,7 +1,10 @@
 #include "keyboard/TurnoutKey.h"
 
+#include "common/Contrast.h"
+
 #include <QEvent>
 #include <QHBoxLayout>
+#include <QImage>
 #include <QKeyEvent>
 #include <QMenu>
 #include <QMouseEvent>
@@ -18,6 +21,7 @@ constexpr int KeyWidth = 104;
 constexpr int FaceHeight = 116;
 constexpr int ButtonRowHeight = 28;
 constexpr int NameLines = 2;
+constexpr int DrawingOverhang = 8; // how far a drawing may reach beyond its square
 const QColor PendingAmber{0xe0, 0x9a, 0x1a};
 const QColor UnconfirmedRed{0xd0, 0x36, 0x36};
 
@@ -213,27 +217,64 @@ QColor TurnoutKey::frameColour() const {
     return palette().color(QPalette::Mid);
 }
 
+// Greyed: part of another article, or a position nobody vouches for now.
+bool TurnoutKey::greyed() const {
+    return m_face.role == KeyFace::Role::PartOfArticle || !isEnabled();
+}
+
+QColor TurnoutKey::faceColour() const {
+    const bool part = m_face.role == KeyFace::Role::PartOfArticle;
+    const QColor background = palette().color(QPalette::Active, part ? QPalette::Window : QPalette::Button);
+    if (toggles() && underMouse())
+        return background.lighter(
+            palette().color(QPalette::Active, QPalette::Window).lightness() < 128 ? 130 : 106);
+    return background;
+}
+
+// The palette's colour for `role`; greyed, paler but still readable on the face (the style's disabled grey
+// is too pale for that).
+QColor TurnoutKey::textColour(QPalette::ColorRole role) const {
+    const QColor colour = palette().color(QPalette::Active, role);
+    return greyed() ? Contrast::faded(colour, faceColour(), Contrast::ForText) : colour;
+}
+
 void TurnoutKey::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     painter.setRenderHint(QPainter::Antialiasing);
     const QRectF face = faceRect();
-    const bool part = m_face.role == KeyFace::Role::PartOfArticle;
-    QColor background = palette().color(part ? QPalette::Window : QPalette::Button);
-    if (toggles() && underMouse())
-        background = background.lighter(palette().color(QPalette::Window).lightness() < 128 ? 130 : 106);
     QPen frame(frameColour(), m_pending || m_unconfirmed ? 3 : 1);
     if (m_unconfirmed && !m_pending)
         frame.setStyle(Qt::DashLine);
     painter.setPen(frame);
-    painter.setBrush(background);
+    painter.setBrush(faceColour());
     painter.drawRoundedRect(face, 6, 6);
-    if (part || !isEnabled()) // greyed: part of another article, or a position nobody vouches for now
-        painter.setOpacity(0.45);
     const int iconSize = hasButtons() ? 44 : 56;
-    const QRectF icon(face.center().x() - iconSize / 2.0, face.top() + 20, iconSize, iconSize);
-    AccessoryIcon::paint(painter, icon, m_face.kind, part ? -1 : m_face.position, palette());
-    painter.setOpacity(1);
+    paintDrawing(painter, QRectF(face.center().x() - iconSize / 2.0, face.top() + 20, iconSize, iconSize));
     paintTexts(painter, face);
+}
+
+// The drawing in the usable colours; greyed, the whole drawing at once made paler (as one layer, so that
+// overlapping parts do not add up darker than the texts), as far as it stays 3:1 on the face.
+void TurnoutKey::paintDrawing(QPainter& painter, const QRectF& icon) const {
+    QPalette colours = palette();
+    colours.setCurrentColorGroup(QPalette::Active);
+    const int position = m_face.role == KeyFace::Role::PartOfArticle ? -1 : m_face.position;
+    if (!greyed()) {
+        AccessoryIcon::paint(painter, icon, m_face.kind, position, colours);
+        return;
+    }
+    const QRectF room = icon.adjusted(-DrawingOverhang, -DrawingOverhang, DrawingOverhang, DrawingOverhang);
+    const qreal ratio = devicePixelRatioF();
+    QImage layer((room.size() * ratio).toSize(), QImage::Format_ARGB32_Premultiplied);
+    layer.setDevicePixelRatio(ratio);
+    layer.fill(Qt::transparent);
+    QPainter onLayer(&layer);
+    onLayer.setRenderHint(QPainter::Antialiasing);
+    AccessoryIcon::paint(onLayer, icon.translated(-room.topLeft()), m_face.kind, position, colours);
+    onLayer.end();
+    painter.setOpacity(Contrast::keptFor(colours.color(QPalette::Text), faceColour(), Contrast::ForDrawings));
+    painter.drawImage(room.topLeft(), layer);
+    painter.setOpacity(1);
 }
 
 // The number top left, a mark top right while switching, name (two lines) and position under the drawing.
@@ -241,7 +282,7 @@ void TurnoutKey::paintTexts(QPainter& painter, const QRectF& face) const {
     QFont bold = font();
     bold.setBold(true);
     painter.setFont(bold);
-    painter.setPen(palette().color(QPalette::ButtonText));
+    painter.setPen(textColour(QPalette::ButtonText));
     const QRectF top(face.left() + 7, face.top() + 3, face.width() - 14, 18);
     painter.drawText(top, Qt::AlignLeft | Qt::AlignVCenter, QString::number(m_face.address));
     if (m_pending || m_unconfirmed) {
@@ -256,18 +297,16 @@ void TurnoutKey::paintTexts(QPainter& painter, const QRectF& face) const {
     const QRectF positionRect(face.left() + 4, textBottom - lineHeight, face.width() - 8, lineHeight);
     const KeyName name = nameLines(metrics, int(positionRect.width()));
     painter.setFont(nameFont);
-    painter.setPen(palette().color(m_face.role == KeyFace::Role::Article ? QPalette::ButtonText
-                                                                         : QPalette::PlaceholderText));
+    painter.setPen(
+        textColour(m_face.role == KeyFace::Role::Article ? QPalette::ButtonText : QPalette::PlaceholderText));
     QRectF line = positionRect.translated(0, -lineHeight * double(name.lines.size()));
     for (const QString& text : name.lines) {
         painter.drawText(line, Qt::AlignCenter, text);
         line.translate(0, lineHeight);
     }
     painter.setFont(font());
-    QColor positionColour = palette().color(QPalette::PlaceholderText);
-    if (m_face.role != KeyFace::Role::PartOfArticle && m_face.position >= 0)
-        positionColour = palette().color(QPalette::ButtonText);
-    painter.setPen(positionColour);
+    const bool known = m_face.role != KeyFace::Role::PartOfArticle && m_face.position >= 0;
+    painter.setPen(textColour(known ? QPalette::ButtonText : QPalette::PlaceholderText));
     painter.drawText(
         positionRect, Qt::AlignCenter,
         QFontMetrics(font()).elidedText(positionText(), Qt::ElideRight, int(positionRect.width())));

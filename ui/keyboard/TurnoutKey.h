@@ -90,6 +90,10 @@ private:
     void updateToolTip();
     QRectF faceRect() const;
     QColor frameColour() const;
+    QColor faceColour() const;
+    bool greyed() const;
+    QColor textColour(QPalette::ColorRole role) const;
+    void paintDrawing(QPainter& painter, const QRectF& icon) const;
     void paintTexts(QPainter& painter, const QRectF& face) const;
     int nextPosition() const;
 

@@ -1,5 +1,6 @@
 #include "shell/Workspace.h"
 
+#include "common/WheelGuard.h"
 #include "shell/WindowLayoutSettings.h"
 
 #include <QDockWidget>
@@ -33,6 +34,7 @@ QDockWidget* Workspace::addPanel(QWidget* panel, Qt::DockWidgetArea area, QWidge
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setWidget(panel);
+    WheelGuard::guard(panel); // the wheel scrolls the panel; it changes a control only the user focused
     dock->setWidget(scroll);
     dock->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable |
                       QDockWidget::DockWidgetFloatable);

@@ -1,5 +1,6 @@
 #include "throttle/FunctionPad.h"
 
+#include "common/Contrast.h"
 #include "common/FunctionIcons.h"
 #include "model/Railway.h"
 #include "throttle/StyleSheetSupport.h"
@@ -18,30 +19,49 @@ constexpr int MillisecondsPerTimedUnit = 1000; // `..dauer` read as seconds (the
 
 const char* const UnacknowledgedProperty = "unacknowledged";
 
-QString padStyle() {
+// How far a greyed "on" key keeps the highlight: visibly on, yet paler than a usable one.
+constexpr double GreyedHighlight = 0.35;
+
+QString padStyle(const QPalette& palette) {
+    const FunctionPad::Greyed greyed = FunctionPad::greyed(palette);
     return QStringLiteral(
                "QToolButton { border: 1px solid palette(mid); border-radius: 4px; padding: 2px;"
                " background: palette(button); min-width: 44px; min-height: 44px; }"
                "QToolButton:checked { background: palette(highlight); color: palette(highlighted-text);"
                " border-color: palette(highlight); }"
                // greyed while the station's state is not reported: "on" is then only what it last said
-               "QToolButton:checked:disabled { background: palette(mid); color: palette(window);"
-               " border-color: palette(mid); }"
+               "QToolButton:disabled { background: %2; color: %3; }"
+               "QToolButton:checked:disabled { background: %4; color: %5; border-color: %4; }"
                "QToolButton[unacknowledged=\"true\"] { border: 2px solid %1; }")
-        .arg(QLatin1String(WarningOutline));
+        .arg(QLatin1String(WarningOutline), greyed.offBackground.name(), greyed.offText.name(),
+             greyed.onBackground.name(), greyed.onText.name());
 }
 
 } // namespace
+
+FunctionPad::Greyed FunctionPad::greyed(const QPalette& palette) {
+    const QColor button = palette.color(QPalette::Active, QPalette::Button);
+    const QColor on =
+        Contrast::mix(palette.color(QPalette::Active, QPalette::Highlight), button, GreyedHighlight);
+    const QColor text = palette.color(QPalette::Active, QPalette::ButtonText);
+    const QColor onText = palette.color(QPalette::Active, QPalette::HighlightedText);
+    // On the pale highlight, whichever of the two text colours reads better is faded.
+    const QColor onBase = Contrast::ratio(text, on) >= Contrast::ratio(onText, on) ? text : onText;
+    return {Contrast::faded(text, button, Contrast::ForText), button,
+            Contrast::faded(onBase, on, Contrast::ForText), on};
+}
 
 FunctionPad::FunctionPad(QWidget* parent) : QWidget(parent), m_grid(new QGridLayout(this)) {
     setObjectName(QStringLiteral("functionPad"));
     m_grid->setContentsMargins(0, 0, 0, 0);
     m_grid->setSpacing(4);
-    setStyleSheet(padStyle());
+    setStyleSheet(padStyle(palette()));
 }
 
 void FunctionPad::setLocomotive(model::Railway* railway, std::uint32_t loco) {
     clear();
+    if (loco != m_loco)
+        m_marks.clear(); // the same locomotive again (its state reported anew): the marks stay
     m_railway = railway;
     m_loco = loco;
     const model::Locomotive* found = locomotive();
@@ -76,7 +96,6 @@ void FunctionPad::clear() {
     for (auto& [number, key] : m_keys)
         delete key.button;
     m_keys.clear();
-    m_marks.clear();
 }
 
 void FunctionPad::addKey(const model::LocomotiveFunction& function) {
@@ -96,6 +115,7 @@ void FunctionPad::addKey(const model::LocomotiveFunction& function) {
         if (auto it = m_keys.find(number); it != m_keys.end())
             updateKey(it->second);
     });
+    button->setProperty(UnacknowledgedProperty, m_marks.contains(number));
     Key& key = m_keys[number];
     key.button = button;
     key.function = function;
@@ -121,6 +141,7 @@ void FunctionPad::press(int function) {
     const model::Locomotive* loco = locomotive();
     if (!loco || function < 0 || function >= model::Locomotive::MaxFunctions)
         return;
+    clearMark(function); // asked again: what failed before is no longer what the user asks
     const model::LocomotiveFunction* known = loco->function(function);
     const auto trigger = known ? known->trigger : cs2config::FunctionTrigger::Latching;
     switch (trigger) {
@@ -169,17 +190,25 @@ void FunctionPad::clearMark(int function) {
     retranslate();
 }
 
+// The drawings in the keys' text colours, for usable and greyed keys alike. Always the Active colours: the
+// pad's own palette() would hand out the disabled grey while the pad happens to be greyed (issue 32: such
+// icons stayed pale until a language switch drew them again in black).
 void FunctionPad::updateIcons() {
-    const QColor off = palette().color(QPalette::ButtonText);
-    const QColor on = palette().color(QPalette::HighlightedText);
+    const QPalette& colours = palette();
+    const Greyed grey = greyed(colours);
+    const QColor off = colours.color(QPalette::Active, QPalette::ButtonText);
+    const QColor on = colours.color(QPalette::Active, QPalette::HighlightedText);
     for (auto& [number, key] : m_keys) {
         const FunctionKind kind = FunctionIcons::kindOf(key.function.icon);
         QIcon icon;
         if (kind != FunctionKind::Numbered) {
-            icon.addPixmap(FunctionIcons::icon(kind, off, IconSize).pixmap(IconSize), QIcon::Normal,
-                           QIcon::Off);
-            icon.addPixmap(FunctionIcons::icon(kind, on, IconSize).pixmap(IconSize), QIcon::Normal,
-                           QIcon::On);
+            const auto add = [&icon, kind](const QColor& colour, QIcon::Mode mode, QIcon::State state) {
+                icon.addPixmap(FunctionIcons::icon(kind, colour, IconSize).pixmap(IconSize), mode, state);
+            };
+            add(off, QIcon::Normal, QIcon::Off);
+            add(on, QIcon::Normal, QIcon::On);
+            add(grey.offText, QIcon::Disabled, QIcon::Off);
+            add(grey.onText, QIcon::Disabled, QIcon::On);
         }
         key.button->setIcon(icon);
         key.button->setIconSize(QSize(IconSize, IconSize));
@@ -215,7 +244,7 @@ void FunctionPad::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange)
         retranslate();
     else if (event->type() == QEvent::PaletteChange) {
-        restyle(this, padStyle()); // palette(...) in a style sheet is resolved when it is set
+        restyle(this, padStyle(palette())); // palette(...) in a style sheet is resolved when it is set
         updateIcons();
     }
     QWidget::changeEvent(event);

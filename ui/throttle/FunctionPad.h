@@ -2,12 +2,14 @@
 
 #include "model/Locomotive.h"
 
+#include <QColor>
 #include <QPointer>
 #include <QWidget>
 #include <cstdint>
 #include <map>
 
 class QGridLayout;
+class QPalette;
 class QToolButton;
 
 namespace stellwerk::model {
@@ -19,7 +21,8 @@ namespace stellwerk::ui {
 // A throttle's function keys (F0-F31) for one locomotive: one button per function its file lists, with
 // our icon for the function's kind or its number, acting as the file says (latching, momentary while
 // held, or timed). Buttons show what the station confirmed; a command it did not acknowledge outlines
-// the button in a warning colour until the next acknowledged command for that function.
+// the button in a warning colour until the user presses it again or the station acknowledges a command for
+// that function. Greyed (state not reported), keys are paler than usable ones yet keep readable contrast.
 class FunctionPad final : public QWidget {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(FunctionPad)
@@ -28,6 +31,15 @@ public:
     static constexpr int Columns = 4;
     // Keys shown for a locomotive whose file lists no functions (one only seen on the bus).
     static constexpr int DefaultKeys = 16;
+
+    // The colours of greyed keys (the state not reported) for off and on, text and drawings alike.
+    struct Greyed {
+        QColor offText;
+        QColor offBackground;
+        QColor onText;
+        QColor onBackground;
+    };
+    static Greyed greyed(const QPalette& palette);
 
     explicit FunctionPad(QWidget* parent = nullptr);
 

@@ -8,6 +8,7 @@ namespace stellwerk::ui {
 void repolish(QWidget* widget) {
     widget->style()->unpolish(widget);
     widget->style()->polish(widget);
+    widget->updateGeometry(); // a rule with a border or padding asks for another size
 }
 
 void restyle(QWidget* widget, const QString& sheet) {

@@ -14,9 +14,9 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QShortcut>
 #include <QStyle>
-#include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
 
@@ -124,10 +124,21 @@ ThrottleWidget* ThrottlePanel::addThrottle(std::uint32_t loco) {
     renumber();
     save();
     updateEmptyState();
-    // A throttle the user adds below the others is scrolled into sight once the rack has laid it out.
     if (!m_restoring)
-        QTimer::singleShot(0, throttle, [this, throttle] { m_scroll->ensureWidgetVisible(throttle); });
+        scrollTo(throttle);
     return throttle;
+}
+
+// A throttle the user adds after the others is scrolled into sight: its top, where its picker is, and as
+// much of it as the panel shows. The rack lays it out and the scroll area takes the rack's new height first
+// (both would otherwise wait for the event loop, and the scroll would end at the throttle before).
+void ThrottlePanel::scrollTo(ThrottleWidget* throttle) {
+    throttle->show(); // now, not when the event loop gets to it: the rack lays out visible widgets only
+    m_rack->layout()->activate();
+    m_rack->resize(m_rack->width(), std::max(m_rack->height(), m_rack->minimumSizeHint().height()));
+    m_scroll->ensureWidgetVisible(throttle, 0, 0);
+    if (throttle->height() > m_scroll->viewport()->height()) // taller than the panel: its top
+        m_scroll->verticalScrollBar()->setValue(throttle->y());
 }
 
 void ThrottlePanel::removeThrottle(ThrottleWidget* throttle) {

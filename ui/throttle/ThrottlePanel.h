@@ -59,6 +59,7 @@ protected:
 
 private:
     void createShortcuts();
+    void scrollTo(ThrottleWidget* throttle);
     void renumber();
     void save();
     void updateEmptyState();

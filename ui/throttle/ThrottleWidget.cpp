@@ -1,5 +1,6 @@
 #include "throttle/ThrottleWidget.h"
 
+#include "common/Contrast.h"
 #include "common/LocomotivePictureBook.h"
 #include "common/LocomotiveTableModel.h"
 #include "common/NotReported.h"
@@ -13,6 +14,7 @@
 #include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSlider>
 #include <QTimer>
@@ -30,19 +32,47 @@ constexpr int SendIntervalMs = 40;
 constexpr QSize PictureBox(132, 44);
 
 const char* const UnacknowledgedProperty = "unacknowledged";
+const char* const RequestedProperty = "requested";
 
-QString throttleStyle() {
-    return QStringLiteral(
+// Stop loco is outlined in a red that reads on the button's colour: a stop, but for this locomotive only,
+// never the layout's solid red STOP.
+QColor stopLocoColour(const QPalette& palette) {
+    const QColor button = palette.color(QPalette::Active, QPalette::Button);
+    const QColor red = button.lightness() > 127 ? QColor(0xa3, 0x15, 0x15) : QColor(0xff, 0x8a, 0x80);
+    return Contrast::ratio(red, button) >= Contrast::ForText
+               ? red
+               : palette.color(QPalette::Active, QPalette::ButtonText);
+}
+
+// Greyed (not reported, no locomotive) texts stay readable: the style's disabled grey is too pale.
+QString greyedStyle(const QPalette& palette) {
+    const auto greyed = [&palette](QPalette::ColorRole text, QPalette::ColorRole background) {
+        return Contrast::faded(palette.color(QPalette::Active, text),
+                               palette.color(QPalette::Active, background), Contrast::ForText)
+            .name();
+    };
+    return QStringLiteral("QPushButton:disabled { color: %1; }"
+                          "QLabel:disabled { color: %2; }")
+        .arg(greyed(QPalette::ButtonText, QPalette::Button), greyed(QPalette::WindowText, QPalette::Window));
+}
+
+QString throttleStyle(const QPalette& palette) {
+    const QColor button = palette.color(QPalette::Active, QPalette::Button);
+    return greyedStyle(palette) +
+           QStringLiteral(
                "QFrame#speedFrame { border: 2px solid transparent; border-radius: 4px; }"
-               "QFrame#speedFrame[unacknowledged=\"true\"] { border-color: %1; }"
+               "QFrame#speedFrame[requested=\"true\"] { border: 2px dashed palette(highlight); }"
+               "QFrame#speedFrame[unacknowledged=\"true\"] { border: 2px solid %1; }"
+               "QLabel#speedRequest { font-style: italic; }"
                "QPushButton[unacknowledged=\"true\"] { border: 2px solid %1; border-radius: 4px; padding: "
                "5px; }"
-               "QPushButton#emergencyStop { background: #c82c2c; color: white; font-weight: bold;"
-               " border-radius: 4px; padding: 6px; }"
-               "QPushButton#emergencyStop:pressed { background: #9e1f1f; }"
-               "QPushButton#emergencyStop:disabled { background: palette(mid); color: palette(window); }"
+               "QPushButton#emergencyStop { background: palette(button); color: %2; border: 2px solid %2;"
+               " font-weight: bold; border-radius: 4px; padding: 5px; }"
+               "QPushButton#emergencyStop:pressed { background: %2; color: palette(button); }"
+               "QPushButton#emergencyStop:disabled { color: %3; border-color: %3; }"
                "QPushButton#emergencyStop[unacknowledged=\"true\"] { border: 3px solid %1; }")
-        .arg(QLatin1String(WarningOutline));
+               .arg(QLatin1String(WarningOutline), stopLocoColour(palette).name(),
+                    Contrast::faded(palette.color(QPalette::ButtonText), button, Contrast::ForText).name());
 }
 
 int digitOf(const QKeyEvent* event) {
@@ -56,7 +86,7 @@ ThrottleWidget::ThrottleWidget(QWidget* parent) : QFrame(parent), m_sendTimer(ne
     setObjectName(QStringLiteral("throttle"));
     setFrameShape(QFrame::StyledPanel);
     setFocusPolicy(Qt::StrongFocus);
-    setStyleSheet(throttleStyle());
+    setStyleSheet(throttleStyle(palette()));
     m_sendTimer->setSingleShot(true);
     m_sendTimer->setInterval(SendIntervalMs);
     connect(m_sendTimer, &QTimer::timeout, this, &ThrottleWidget::sendSpeed);
@@ -67,10 +97,7 @@ ThrottleWidget::ThrottleWidget(QWidget* parent) : QFrame(parent), m_sendTimer(ne
     m_direction = new QPushButton(this);
     m_direction->setObjectName(QStringLiteral("direction"));
     m_direction->setFocusPolicy(Qt::NoFocus);
-    connect(m_direction, &QPushButton::clicked, this, [this] {
-        if (m_railway && m_loco != 0)
-            m_railway->reverse(m_loco);
-    });
+    connect(m_direction, &QPushButton::clicked, this, &ThrottleWidget::reverseDirection);
     m_stop = new QPushButton(this);
     m_stop->setObjectName(QStringLiteral("emergencyStop"));
     m_stop->setFocusPolicy(Qt::NoFocus);
@@ -142,9 +169,17 @@ QWidget* ThrottleWidget::createSpeedArea() {
     big.setPointSizeF(big.pointSizeF() * 1.4);
     big.setBold(true);
     m_speedText->setFont(big);
+    m_requestText = new QLabel(m_speedFrame);
+    m_requestText->setObjectName(QStringLiteral("speedRequest"));
+    m_requestText->setAlignment(Qt::AlignCenter);
+    QSizePolicy keepRoom = m_requestText->sizePolicy();
+    keepRoom.setRetainSizeWhenHidden(true); // nothing below moves when a request comes and goes
+    m_requestText->setSizePolicy(keepRoom);
+    m_requestText->hide();
     layout->addWidget(m_speedText, 0, 0, 1, 3);
-    layout->addWidget(m_slider, 1, 1, Qt::AlignHCenter);
-    layout->addWidget(m_scale, 1, 2);
+    layout->addWidget(m_requestText, 1, 0, 1, 3);
+    layout->addWidget(m_slider, 2, 1, Qt::AlignHCenter);
+    layout->addWidget(m_scale, 2, 2);
     layout->setColumnStretch(0, 1);
     layout->setColumnStretch(3, 1);
     return m_speedFrame;
@@ -154,8 +189,8 @@ void ThrottleWidget::setRailway(model::Railway* railway) {
     if (m_railway)
         disconnect(m_railway, nullptr, this, nullptr);
     m_railway = railway;
-    m_speedInFlight = 0;
-    m_marks.clear();
+    m_speedInFlight = 0; // a railway that goes reports none of its commands any more
+    // The marks stay: a new session does not make the failed command carried out.
     if (m_railway) {
         using model::Railway;
         connect(m_railway, &Railway::loaded, this, &ThrottleWidget::showLocomotive);
@@ -207,8 +242,36 @@ void ThrottleWidget::fillChoice() {
 }
 
 void ThrottleWidget::choose(int index) {
-    setLocomotive(m_choice->itemData(index).toUInt());
+    const std::uint32_t wanted = m_choice->itemData(index).toUInt();
+    if (wanted != m_loco && !confirmChange(wanted)) {
+        const QSignalBlocker blocker(m_choice);
+        m_choice->setCurrentIndex(std::max(m_choice->findData(m_loco), 0));
+    } else {
+        setLocomotive(wanted);
+    }
     setFocus(); // back to the slider: keys drive, and Space stays the window's STOP
+}
+
+// A running locomotive would run on with nobody at its throttle: the user says so first.
+bool ThrottleWidget::confirmChange(std::uint32_t wanted) {
+    const model::Locomotive* running = driven();
+    if (!running || running->speed() == 0)
+        return true;
+    const model::Locomotive* next = m_railway->locomotive(wanted);
+    const QString nextName = next ? next->displayName() : tr("no locomotive");
+    QMessageBox box(QMessageBox::Question, tr("Change locomotive"),
+                    tr("%1 is running (%2). Drive %3 with this throttle instead?")
+                        .arg(running->displayName(), speedWords(running->speed()), nextName),
+                    QMessageBox::NoButton, this);
+    box.setObjectName(QStringLiteral("changeLocomotiveQuestion"));
+    box.setInformativeText(
+        tr("%1 keeps running at its speed; this throttle no longer drives it.").arg(running->displayName()));
+    QPushButton* change = box.addButton(tr("Drive %1").arg(nextName), QMessageBox::AcceptRole);
+    QPushButton* keep = box.addButton(tr("Keep %1").arg(running->displayName()), QMessageBox::RejectRole);
+    box.setDefaultButton(keep);
+    box.setEscapeButton(keep);
+    box.exec();
+    return box.clickedButton() == change;
 }
 
 void ThrottleWidget::setPictures(LocomotivePictureBook* pictures) {
@@ -246,8 +309,7 @@ void ThrottleWidget::showLocomotive() {
     m_functions->setEnabled(reported);
     m_speedText->setEnabled(reported);
     m_stop->setEnabled(loco != nullptr);
-    for (const Control control : {Control::Speed, Control::Direction, Control::EmergencyStop})
-        clearMark(control);
+    // The marks stay: the model going silent or loading again does not carry out a failed command.
     retranslate();
     showState();
 }
@@ -277,16 +339,25 @@ void ThrottleWidget::showState() {
     retranslate();
 }
 
+// Only the user moves the slider (the throttle sets it with its signals blocked).
 void ThrottleWidget::sliderMoved(int percent) {
+    clearMark(Control::Speed); // a new request: what failed before is no longer what the user asks
     m_wantedSpeed = percent * SpeedUnitsPerPercent;
     if (!m_sendTimer->isActive())
         m_sendTimer->start();
-    retranslate(); // the speed text follows the slider
+    retranslate(); // the request follows the slider
+}
+
+void ThrottleWidget::reverseDirection() {
+    clearMark(Control::Direction);
+    if (m_railway && m_loco != 0)
+        m_railway->reverse(m_loco);
 }
 
 void ThrottleWidget::emergencyStop() {
     m_sendTimer->stop(); // a speed still waiting to be sent must not start the locomotive again
     m_wantedSpeed = -1;
+    clearMark(Control::EmergencyStop);
     if (m_railway && m_loco != 0)
         m_railway->emergencyStop(m_loco);
 }
@@ -373,6 +444,24 @@ QString ThrottleWidget::speedText() const {
     return m_speedText->text();
 }
 
+QString ThrottleWidget::requestText() const {
+    return m_requestText->isHidden() ? QString() : m_requestText->text();
+}
+
+const model::Locomotive* ThrottleWidget::driven() const {
+    return m_railway && m_loco != 0 ? m_railway->locomotive(m_loco) : nullptr;
+}
+
+// `speed` (0..1000) as the locomotive's speedometer shows it, or in percent without one.
+QString ThrottleWidget::speedWords(int speed) const {
+    const model::Locomotive* loco = driven();
+    if (!loco)
+        return tr("—");
+    const int max = model::Locomotive::MaxSpeed;
+    return loco->tachoMax() > 0 ? tr("%1 km/h").arg((speed * loco->tachoMax() + max / 2) / max)
+                                : tr("%1 %").arg((speed + SpeedUnitsPerPercent / 2) / SpeedUnitsPerPercent);
+}
+
 bool ThrottleWidget::handlesKey(const QKeyEvent* event) const {
     if (event->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
         return false;
@@ -405,39 +494,40 @@ void ThrottleWidget::keyPressEvent(QKeyEvent* event) {
         QFrame::keyPressEvent(event);
         return;
     }
+    drive(event);
+    event->accept(); // also when greyed: the key is the throttle's, not the window's
+}
+
+// A key acts on its control only while that control can be used (not while the state is not reported,
+// except the emergency stop). False when it did nothing.
+bool ThrottleWidget::drive(const QKeyEvent* event) {
+    const bool speed = m_slider->isEnabled();
     switch (event->key()) {
     case Qt::Key_Up:
     case Qt::Key_Plus:
-        m_slider->triggerAction(QSlider::SliderSingleStepAdd);
-        break;
+        return speed && (m_slider->triggerAction(QSlider::SliderSingleStepAdd), true);
     case Qt::Key_Down:
     case Qt::Key_Minus:
-        m_slider->triggerAction(QSlider::SliderSingleStepSub);
-        break;
+        return speed && (m_slider->triggerAction(QSlider::SliderSingleStepSub), true);
     case Qt::Key_PageUp:
-        m_slider->triggerAction(QSlider::SliderPageStepAdd);
-        break;
+        return speed && (m_slider->triggerAction(QSlider::SliderPageStepAdd), true);
     case Qt::Key_PageDown:
-        m_slider->triggerAction(QSlider::SliderPageStepSub);
-        break;
+        return speed && (m_slider->triggerAction(QSlider::SliderPageStepSub), true);
     case Qt::Key_R:
-        if (!event->isAutoRepeat())
-            m_railway->reverse(m_loco);
-        break;
+        return m_direction->isEnabled() && !event->isAutoRepeat() && (reverseDirection(), true);
     case Qt::Key_E:
         emergencyStop();
-        break;
+        return true;
     default:
-        if (!event->isAutoRepeat())
-            m_functions->press(digitOf(event));
-        break;
+        return m_functions->isEnabled() && !event->isAutoRepeat() &&
+               (m_functions->press(digitOf(event)), true);
     }
-    event->accept();
 }
 
 void ThrottleWidget::keyReleaseEvent(QKeyEvent* event) {
     if (const int digit = digitOf(event); digit >= 0 && !event->isAutoRepeat() && handlesKey(event)) {
-        m_functions->release(digit);
+        if (m_functions->isEnabled())
+            m_functions->release(digit);
         event->accept();
         return;
     }
@@ -451,24 +541,45 @@ void ThrottleWidget::retranslate() {
     m_close->setToolTip(tr("Close this throttle"));
     if (m_choice->count() > 0 && m_choice->itemData(0).toUInt() == 0)
         m_choice->setItemText(0, tr("Choose a locomotive…"));
-    const model::Locomotive* loco = m_railway && m_loco ? m_railway->locomotive(m_loco) : nullptr;
+    const model::Locomotive* loco = driven();
     m_details->setText(loco ? LocomotiveTableModel::addressText(*loco) : QString());
     if (loco && m_pictures)
         m_picture->setToolTip(m_pictures->describe(loco->iconName()));
-    const int percent = m_slider->value();
-    m_speedText->setText(!loco                  ? tr("—")
-                         : loco->tachoMax() > 0 ? tr("%1 km/h").arg(percent * loco->tachoMax() / 100)
-                                                : tr("%1 %").arg(percent));
     const bool backward = loco && loco->direction() == cs2::Direction::Backward;
     m_direction->setText(backward ? tr("◀ Backward") : tr("Forward ▶"));
     m_direction->setToolTip(tr("Change direction (R); the station stops the locomotive first"));
     m_stop->setText(tr("Stop loco"));
-    m_stop->setToolTip(tr("Emergency stop for this locomotive only (E)"));
-    m_slider->setToolTip(tr("Speed: %1 % (Up/Down, +/-, PageUp/PageDown)").arg(percent));
-    m_speedText->setToolTip(NotReported::applies(m_railway) ? NotReported::reason() : QString());
+    m_stop->setToolTip(tr("Emergency stop for this locomotive only (E); STOP in the toolbar stops the "
+                          "whole layout"));
+    retranslateSpeed();
     if (NotReported::applies(m_railway))
         for (QWidget* greyed : {static_cast<QWidget*>(m_slider), static_cast<QWidget*>(m_direction)})
             greyed->setToolTip(NotReported::reason());
+    retranslateMarks();
+}
+
+// The big number is the confirmed speed; the slider's own value, while the station has not confirmed it,
+// is the request below it.
+void ThrottleWidget::retranslateSpeed() {
+    const model::Locomotive* loco = driven();
+    const int percent = m_slider->value();
+    m_speedText->setText(speedWords(loco ? loco->speed() : 0));
+    m_speedText->setToolTip(NotReported::applies(m_railway) ? NotReported::reason()
+                                                            : tr("The speed the station confirmed"));
+    const int confirmed = loco ? (loco->speed() + SpeedUnitsPerPercent / 2) / SpeedUnitsPerPercent : 0;
+    const bool requested = loco && percent != confirmed;
+    m_requestText->setText(tr("Requested: %1").arg(speedWords(percent * SpeedUnitsPerPercent)));
+    m_requestText->setToolTip(tr("Sent to the station; the number above changes when it confirms"));
+    m_requestText->setVisible(requested);
+    if (m_speedFrame->property(RequestedProperty).toBool() != requested) {
+        m_speedFrame->setProperty(RequestedProperty, requested);
+        repolish(m_speedFrame);
+    }
+    m_slider->setToolTip(tr("Speed: %1 % (Up/Down, +/-, PageUp/PageDown)").arg(percent));
+}
+
+void ThrottleWidget::retranslateMarks() {
+    m_speedFrame->setToolTip(QString()); // the buttons got their own tooltips again above
     for (const auto& [control, reason] : m_marks) {
         const QString tip = tr("The station did not acknowledge the last command: %1").arg(reason);
         markedWidget(control)->setToolTip(tip);
@@ -481,7 +592,7 @@ void ThrottleWidget::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange)
         retranslate();
     else if (event->type() == QEvent::PaletteChange)
-        restyle(this, throttleStyle()); // palette(...) in a style sheet is resolved when it is set
+        restyle(this, throttleStyle(palette())); // palette(...) in a style sheet is resolved when it is set
     QFrame::changeEvent(event);
 }
 

@@ -23,8 +23,11 @@ class SpeedScale;
 
 // One throttle: drives one locomotive chosen from the station's list with a speed slider (0-100 %, the
 // station's 0-1000) on a km/h scale, a direction button, an emergency stop for this locomotive and its
-// function keys. It shows what the station confirmed (so other controllers' changes appear at once) and
-// outlines a control in a warning colour while the station has not acknowledged its last command.
+// function keys. Its big number shows only the speed the station confirmed (so other controllers' changes
+// appear at once); the slider may lead it, and while its request waits a dashed outline and "Requested: …"
+// say so. A control whose last command the station did not acknowledge is outlined in a warning colour,
+// with the reason in its tooltip, until the user works that control again or the station acknowledges one
+// of its commands. Changing the locomotive while it runs asks first.
 // Keys while it has focus: Up/Down/+/- speed, PageUp/PageDown larger steps, R direction, 0-9 F0-F9,
 // E emergency stop; Space and Escape are left to the window (STOP for the whole layout).
 class ThrottleWidget final : public QFrame {
@@ -51,13 +54,17 @@ public:
 
     // True while the control's last command was not acknowledged (function: its number, else ignored).
     bool isUnacknowledged(Control control, int function = -1) const;
+    // The confirmed speed ("50 km/h", "40 %", "—").
     QString speedText() const;
+    // The slider's speed while the station has not confirmed it ("Requested: 15 km/h"); empty otherwise.
+    QString requestText() const;
 
     QComboBox* locomotiveChoice() const { return m_choice; }
     QSlider* speedSlider() const { return m_slider; }
     SpeedScale* speedScale() const { return m_scale; }
     QPushButton* directionButton() const { return m_direction; }
     QPushButton* emergencyStopButton() const { return m_stop; }
+    QFrame* speedArea() const { return m_speedFrame; }
     QToolButton* closeButton() const { return m_close; }
     FunctionPad* functions() const { return m_functions; }
     QLabel* picture() const { return m_picture; }
@@ -77,12 +84,14 @@ private:
     QWidget* createSpeedArea();
     void fillChoice();
     void choose(int index);
+    bool confirmChange(std::uint32_t wanted);
     void showLocomotive();
     void showPicture();
     void showState();
     void locomotivesChanged(const QList<quint32>& ids);
     void sliderMoved(int percent);
     void sendSpeed();
+    void reverseDirection();
     void emergencyStop();
     void commandSent(quint32 loco, Control control, int function);
     void commandAcknowledged(quint32 loco, Control control, int function);
@@ -91,7 +100,12 @@ private:
     void clearMark(Control control);
     QWidget* markedWidget(Control control) const;
     bool handlesKey(const QKeyEvent* event) const;
+    bool drive(const QKeyEvent* event);
+    const model::Locomotive* driven() const;
+    QString speedWords(int speed) const;
     void retranslate();
+    void retranslateSpeed();
+    void retranslateMarks();
 
     QPointer<model::Railway> m_railway;
     std::uint32_t m_loco = 0;
@@ -106,6 +120,7 @@ private:
     QSlider* m_slider;
     SpeedScale* m_scale;
     QLabel* m_speedText;
+    QLabel* m_requestText;
     QPushButton* m_direction;
     QPushButton* m_stop;
     FunctionPad* m_functions;

@@ -1,7 +1,9 @@
 # Trust during a running session: views while the station is silent, reconnecting or has switched the
 # power off (against a simulated CS2 on loopback, asserting the wire and the screen). How panels arrange
-# their parts for the width they get.
+# their parts for the width they get. The wheel over a panel's controls.
 target_sources(stellwerk-ui-tests PRIVATE
     common/PanelArrangementTest.cpp
+    common/PanelWheelTest.cpp
     common/StationTrustTest.cpp
+    common/WheelGuardTest.cpp
 )

@@ -4,14 +4,18 @@
 
 #include "keyboard/TurnoutPanel.h"
 
+#include "common/Contrast.h"
 #include "keyboard/TurnoutKey.h"
 #include "support/KeyboardTestSupport.h"
 
 #include <QComboBox>
+#include <QImage>
 #include <QLabel>
 #include <QMenu>
 #include <QToolButton>
+#include <algorithm>
 #include <gtest/gtest.h>
+#include <map>
 
 using namespace stellwerk;
 using namespace stellwerk::ui;
@@ -189,3 +193,43 @@ TEST_F(TurnoutPanelTest, ASwitchingTheStationDoesNotConfirmIsMarked) {
 }
 
 } // namespace
+
+namespace {
+
+// The strongest contrast against the key's face within rows [from, to) of the key (fractions of its height).
+double strongestContrast(const QImage& key, double from, double to) {
+    const QColor face = key.pixelColor(key.width() / 2, 8);
+    double strongest = 1.0;
+    for (int y = int(from * key.height()); y < int(to * key.height()); ++y)
+        for (int x = 6; x < key.width() - 6; ++x)
+            strongest = std::max(strongest, Contrast::ratio(key.pixelColor(x, y), face));
+    return strongest;
+}
+
+} // namespace
+
+// Issue 32: greyed (not reported) keys showed their names at about 1.5:1 while a signal's drawing stayed
+// darker than anything else on the key. Greyed keys are paler than usable ones, yet readable.
+TEST_F(TurnoutPanelTest, GreyedKeysArePalerYetReadable) {
+    constexpr double Drawing = 0.15, Texts = 0.7; // the drawing's and the texts' rows
+    QTest::qWait(20);
+    std::map<int, std::pair<double, double>> usable; // key -> drawing, texts
+    for (const int address : {1, 6}) {
+        const QImage image = key(address).grab().toImage();
+        usable[address] = {strongestContrast(image, Drawing, 0.55), strongestContrast(image, Texts, 0.98)};
+    }
+    demo.stop();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !controller.railway()->isStateReported(); }, test::CommandMs));
+    for (const int address : {1, 6}) {
+        ASSERT_FALSE(key(address).isEnabled());
+        const QImage image = key(address).grab().toImage();
+        const double drawing = strongestContrast(image, Drawing, 0.55);
+        const double texts = strongestContrast(image, Texts, 0.98);
+        EXPECT_GE(texts, Contrast::ForText) << "key " << address;
+        EXPECT_LT(texts, usable[address].second) << "key " << address;
+        EXPECT_GE(drawing, Contrast::ForDrawings) << "key " << address;
+        EXPECT_LT(drawing, usable[address].first) << "key " << address;
+        EXPECT_LT(drawing, texts + 1.0)
+            << "key " << address << ": the drawing is not the darkest thing on it";
+    }
+}
