@@ -96,6 +96,73 @@
     </message>
 </context>
 <context>
+    <name>CorrectionText</name>
+    <message>
+        <source>%1: the station carried out a command late that had failed (%2); it stays, as it brings nothing into motion.</source>
+        <translation>%1: Die Zentrale hat einen fehlgeschlagenen Befehl verspätet ausgeführt (%2); das bleibt so, denn es setzt nichts in Bewegung.</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>angehalten</translation>
+    </message>
+    <message>
+        <source>set back to %1</source>
+        <translation>zurückgesetzt auf %1</translation>
+    </message>
+    <message>
+        <source>%1: the station carried out a command late that had failed (%2); %3.</source>
+        <translation>%1: Die Zentrale hat einen fehlgeschlagenen Befehl verspätet ausgeführt (%2); %3.</translation>
+    </message>
+    <message>
+        <source>%1: a command that had failed (%2) could still reach the station; %3.</source>
+        <translation>%1: Ein fehlgeschlagener Befehl (%2) hätte die Zentrale noch erreichen können; %3.</translation>
+    </message>
+    <message>
+        <source>Accessory %1</source>
+        <translation>Magnetartikel %1</translation>
+    </message>
+    <message>
+        <source>Address %1</source>
+        <translation>Adresse %1</translation>
+    </message>
+    <message>
+        <source>Track power</source>
+        <translation>Gleisspannung</translation>
+    </message>
+    <message>
+        <source>speed %1 %</source>
+        <translation>Fahrstufe %1 %</translation>
+    </message>
+    <message>
+        <source>backward</source>
+        <translation>rückwärts</translation>
+    </message>
+    <message>
+        <source>forward</source>
+        <translation>vorwärts</translation>
+    </message>
+    <message>
+        <source>F%1 on</source>
+        <translation>F%1 an</translation>
+    </message>
+    <message>
+        <source>F%1 off</source>
+        <translation>F%1 aus</translation>
+    </message>
+    <message>
+        <source>position %1</source>
+        <translation>Stellung %1</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>an</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+</context>
+<context>
     <name>FunctionIcons</name>
     <message>
         <source>Function</source>
@@ -361,6 +428,51 @@
     <message>
         <source>Route %1</source>
         <translation>Fahrstraße %1</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::AftermathMenu</name>
+    <message numerus="yes">
+        <source>The layout is back in step: %n states read again.</source>
+        <translation>
+            <numerusform>Die Anlage ist wieder im Takt: %n Zustand neu gelesen.</numerusform>
+            <numerusform>Die Anlage ist wieder im Takt: %n Zustände neu gelesen.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The layout is back in step, but %n states got no answer.</source>
+        <translation>
+            <numerusform>Die Anlage ist wieder im Takt, aber auf %n Abfrage kam keine Antwort.</numerusform>
+            <numerusform>Die Anlage ist wieder im Takt, aber auf %n Abfragen kam keine Antwort.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Stopping every locomotive and reading every state again…</source>
+        <translation>Alle Loks werden angehalten und alle Zustände neu gelesen …</translation>
+    </message>
+    <message>
+        <source>Sending every locomotive its confirmed speed and reading every state again…</source>
+        <translation>Jede Lok bekommt ihre bestätigte Geschwindigkeit, alle Zustände werden neu gelesen …</translation>
+    </message>
+    <message>
+        <source>After a &amp;failed command</source>
+        <translation>Nach einem &amp;fehlgeschlagenen Befehl</translation>
+    </message>
+    <message>
+        <source>&amp;Bring back what the station last confirmed</source>
+        <translation>&amp;Zurückholen, was die Zentrale zuletzt bestätigt hat</translation>
+    </message>
+    <message>
+        <source>&amp;Stop every locomotive that had one</source>
+        <translation>Jede betroffene Lok an&amp;halten</translation>
+    </message>
+    <message>
+        <source>Bring the layout back in &amp;step</source>
+        <translation>Anlage wieder in &amp;Takt bringen</translation>
+    </message>
+    <message>
+        <source>Sends every locomotive the speed the station last confirmed (or stops them all, as chosen under After a failed command) and reads every state again</source>
+        <translation>Schickt jeder Lok die zuletzt von der Zentrale bestätigte Geschwindigkeit (oder hält alle an, je nach Wahl unter „Nach einem fehlgeschlagenen Befehl“) und liest alle Zustände neu</translation>
     </message>
 </context>
 <context>
@@ -1017,6 +1129,24 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Locomotive</source>
         <translation>Lok</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::CorrectionNotice</name>
+    <message numerus="yes">
+        <source>%n set back after trouble</source>
+        <translation>
+            <numerusform>%n nach Störung zurückgesetzt</numerusform>
+            <numerusform>%n nach Störung zurückgesetzt</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Click for the list.</source>
+        <translation>Für die Liste klicken.</translation>
+    </message>
+    <message>
+        <source>Dismiss</source>
+        <translation>Verwerfen</translation>
     </message>
 </context>
 <context>

@@ -96,6 +96,73 @@
     </message>
 </context>
 <context>
+    <name>CorrectionText</name>
+    <message>
+        <source>%1: the station carried out a command late that had failed (%2); it stays, as it brings nothing into motion.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>set back to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the station carried out a command late that had failed (%2); %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: a command that had failed (%2) could still reach the station; %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Accessory %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Address %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Track power</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>speed %1 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>backward</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>forward</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>F%1 on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>F%1 off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>position %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>FunctionIcons</name>
     <message>
         <source>Function</source>
@@ -360,6 +427,51 @@
     </message>
     <message>
         <source>Route %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::AftermathMenu</name>
+    <message numerus="yes">
+        <source>The layout is back in step: %n states read again.</source>
+        <translation>
+            <numerusform>The layout is back in step: %n state read again.</numerusform>
+            <numerusform>The layout is back in step: %n states read again.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The layout is back in step, but %n states got no answer.</source>
+        <translation>
+            <numerusform>The layout is back in step, but %n state got no answer.</numerusform>
+            <numerusform>The layout is back in step, but %n states got no answer.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Stopping every locomotive and reading every state again…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sending every locomotive its confirmed speed and reading every state again…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>After a &amp;failed command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Bring back what the station last confirmed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Stop every locomotive that had one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bring the layout back in &amp;step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sends every locomotive the speed the station last confirmed (or stops them all, as chosen under After a failed command) and reads every state again</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1013,6 +1125,24 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Locomotive</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::CorrectionNotice</name>
+    <message numerus="yes">
+        <source>%n set back after trouble</source>
+        <translation>
+            <numerusform>%n set back after trouble</numerusform>
+            <numerusform>%n set back after trouble</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Click for the list.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dismiss</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
