@@ -19,6 +19,7 @@
 #include "programming/ProgrammingPanel.h"
 #include "shell/AboutBox.h"
 #include "shell/ApplicationInfo.h"
+#include "shell/FirstWindowSize.h"
 #include "shell/GuideBrowser.h"
 #include "shell/KeyList.h"
 #include "shell/LanguageMenu.h"
@@ -42,16 +43,24 @@
 #include <QMenuBar>
 #include <QScreen>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolBar>
 
 namespace stellwerk::ui {
+
+namespace {
+
+// How long a window manager may take to maximize the first window before the panels are arranged anyway.
+constexpr int MaximizingMs = 1000;
+
+} // namespace
 
 MainWindow::MainWindow(Translations& translations, QWidget* parent)
     : QMainWindow(parent), m_translations(translations) {
     setObjectName(QStringLiteral("mainWindow"));
     setWindowTitle(QStringLiteral("Stellwerk"));
     setWindowIcon(applicationIcon());
-    resize(firstSize());
+    setGeometry(FirstWindowSize::geometry(availableArea()));
     createPanels();
     createToolBar();
     createFileMenu();
@@ -60,14 +69,19 @@ MainWindow::MainWindow(Translations& translations, QWidget* parent)
     createHelpMenu();
     createStatusBar();
     retranslate();
-    m_workspace->restore();
+    m_placeRemembered = m_workspace->restore();
 }
 
-// Without a remembered size: most of the screen, as a control desk wants the room, but not beyond it.
-QSize MainWindow::firstSize() {
+QRect MainWindow::availableArea() {
     const QScreen* screen = QGuiApplication::primaryScreen();
-    const QSize available = screen ? screen->availableGeometry().size() : QSize(1280, 800);
-    return QSize(1280, 800).expandedTo(available * 9 / 10).boundedTo(available);
+    return screen ? screen->availableGeometry() : QRect(0, 0, 1366, 768);
+}
+
+void MainWindow::showAtStart() {
+    if (!m_placeRemembered && FirstWindowSize::opensMaximized(availableArea()))
+        showMaximized();
+    else
+        show();
 }
 
 void MainWindow::changeEvent(QEvent* event) {
@@ -83,8 +97,29 @@ void MainWindow::showEvent(QShowEvent* event) {
     if (m_shownBefore)
         return;
     m_shownBefore = true;
-    if (WindowLayoutSettings::load().state.isEmpty())
+    m_arrangementDue = WindowLayoutSettings::load().state.isEmpty();
+    arrangeOnceSized();
+    // A window manager that does not maximize (or none at all) leaves the window as it is.
+    QTimer::singleShot(MaximizingMs, this, [this] {
+        if (!m_arrangementDue)
+            return;
+        m_arrangementDue = false;
         arrangePanels();
+    });
+}
+
+void MainWindow::resizeEvent(QResizeEvent* event) {
+    QMainWindow::resizeEvent(event);
+    arrangeOnceSized();
+}
+
+// A maximized window gets its size from the window manager after it is shown; the panels are arranged
+// for that size, not for the smaller one it had before.
+void MainWindow::arrangeOnceSized() {
+    if (!m_arrangementDue || !isVisible() || (isMaximized() && width() <= normalGeometry().width()))
+        return;
+    m_arrangementDue = false;
+    arrangePanels();
 }
 
 // The keyboard with its four columns on the left; one throttle on the right (two where the screen is wide

@@ -75,6 +75,9 @@ public:
     void setConnection(connection::StationConnection* station);
     connection::StationConnection* stationConnection() const { return m_connection; }
 
+    // Shows the window where it was left, or at the first start sized to the screen (FirstWindowSize).
+    void showAtStart();
+
     // Opens Station → Connect…; on Connect the choice is stored and the connection reconnects.
     void showConnectDialog();
 
@@ -82,11 +85,13 @@ protected:
     void changeEvent(QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
     void showEvent(QShowEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
-    static QSize firstSize();
+    static QRect availableArea();
     void createPanels();
     void arrangePanels();
+    void arrangeOnceSized();
     void createToolBar();
     void createFileMenu();
     void createStationMenu();
@@ -138,6 +143,8 @@ private:
     connection::StationConnection* m_connection = nullptr;
     QPointer<LocomotivePictureBook> m_pictures;
     bool m_shownBefore = false;
+    bool m_arrangementDue = false;
+    bool m_placeRemembered = false;
 };
 
 } // namespace stellwerk::ui

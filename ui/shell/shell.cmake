@@ -4,6 +4,7 @@
 target_sources(stellwerk-ui PRIVATE
     shell/AboutBox.cpp shell/AboutBox.h
     shell/ApplicationInfo.cpp shell/ApplicationInfo.h
+    shell/FirstWindowSize.cpp shell/FirstWindowSize.h
     shell/GuideBrowser.cpp shell/GuideBrowser.h
     shell/KeyList.cpp shell/KeyList.h
     shell/Language.cpp shell/Language.h
