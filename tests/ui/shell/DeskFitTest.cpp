@@ -8,14 +8,19 @@
 #include "support/TrustTestSupport.h"
 #include "throttle/ThrottlePanel.h"
 #include "throttle/ThrottleWidget.h"
+#include "trackplan/TileTag.h"
+#include "trackplan/TrackPageView.h"
+#include "trackplan/TrackPlanPanel.h"
 
 #include <QAbstractButton>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QHash>
 #include <QLabel>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QStringList>
+#include <QTabWidget>
 #include <QTableView>
 #include <QToolBar>
 #include <QToolButton>
@@ -144,6 +149,40 @@ protected:
 TEST_P(DeskFitTest, NoPanelScrollsSidewaysAndNoTextIsCutOff) {
     const QStringList found = problems();
     EXPECT_TRUE(found.isEmpty()) << found.join(QLatin1Char('\n')).toStdString();
+}
+
+// Every page of the demo's plan, fitted into the room the first arrangement leaves it, is large enough for
+// the names of its contacts, turnouts, signals and routes, in a readable size; siblings, names that differ
+// only in their last word ("Block 1" … "Block 4", "Einfahrt 1" and "Einfahrt 2"), still differ where they
+// are shortened.
+TEST_P(DeskFitTest, ThePlanShowsItsNamesReadablyAndSiblingsDistinct) {
+    TrackPlanPanel* plan = window->trackPlan();
+    ASSERT_GE(plan->pageTabs()->count(), 3);
+    for (int page = 0; page < plan->pageTabs()->count(); ++page) {
+        plan->pageTabs()->setCurrentIndex(page);
+        QTest::qWait(30);
+        const TrackPageView* view = plan->pageView(page);
+        const std::string pageName = plan->pageTabs()->tabText(page).toStdString();
+        ASSERT_TRUE(plan->isFitted());
+        ASSERT_GE(view->tileSize(), TileTag::MinimumTile)
+            << "page " << pageName << " is drawn too small for names";
+        QHash<QString, QString> fileNameOf; // family and shown name → the name in the file
+        const model::LayoutPage& tiles = plan->layout()->pages().at(std::size_t(page));
+        for (int tile = 0; tile < int(tiles.tiles.size()); ++tile) {
+            const TileTag tag = view->tagOf(tile);
+            if (!tag.shown())
+                continue;
+            EXPECT_GE(tag.font().pixelSize(), TileTag::ReadablePixels);
+            const QString file = tiles.tiles.at(std::size_t(tile)).text.trimmed();
+            const QString shown = file.section(QLatin1Char(' '), 0, -2) + QStringLiteral(" | ") + tag.text();
+            EXPECT_EQ(fileNameOf.value(shown, file), file)
+                << "on " << pageName << " \"" << file.toStdString() << "\" and \""
+                << fileNameOf.value(shown).toStdString() << "\" both read \"" << tag.text().toStdString()
+                << "\"";
+            fileNameOf.insert(shown, file);
+        }
+        EXPECT_GE(fileNameOf.size(), 3) << "page " << pageName << " shows its names";
+    }
 }
 
 TEST_P(DeskFitTest, ToolbarsShowEveryButtonWithItsDrawing) {
