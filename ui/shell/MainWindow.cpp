@@ -24,6 +24,7 @@
 #include "shell/KeyList.h"
 #include "shell/LanguageMenu.h"
 #include "shell/LanguageSettings.h"
+#include "shell/PassingMessage.h"
 #include "shell/Translations.h"
 #include "shell/WindowLayoutSettings.h"
 #include "shell/Workspace.h"
@@ -274,18 +275,18 @@ void MainWindow::showStationProblem(const QString& message) {
     if (!m_connection || m_connection->state() == State::Failed)
         return;
     if (m_connection->state() == State::Connecting)
-        statusBar()->showMessage(
+        m_message->showMessage(
             message + QStringLiteral(" — ") + ConnectionStatus::advice(m_connection->endpoint()), 15000);
     else
-        statusBar()->showMessage(message, 8000);
+        m_message->showMessage(message, 8000);
 }
 
 // A failed connection says what to try, and keeps saying it until something changes.
 void MainWindow::connectionStateChanged() {
     if (m_connection && m_connection->state() == connection::StationConnection::State::Failed)
-        statusBar()->showMessage(ConnectionStatus::advice(m_connection->endpoint()));
+        m_message->showMessage(ConnectionStatus::advice(m_connection->endpoint()));
     else if (m_connection && m_connection->state() == connection::StationConnection::State::Ready)
-        statusBar()->clearMessage();
+        m_message->clearMessage();
 }
 
 void MainWindow::showConnectDialog() {
@@ -328,8 +329,10 @@ void MainWindow::createHelpMenu() {
     m_aboutAction->setMenuRole(QAction::AboutRole);
 }
 
-// Station state is permanent information; the left side stays free for temporary messages.
+// Station state is permanent information; the left side stays free for passing messages.
 void MainWindow::createStatusBar() {
+    m_message = new PassingMessage(this);
+    statusBar()->addWidget(m_message, 1);
     m_stationStatus = new ConnectionStatus(this);
     m_startupProgress = new StartupProgress(this);
     m_traffic = new TrafficStatus(this);
@@ -394,8 +397,7 @@ void MainWindow::retranslateDocks() {
 
 void MainWindow::chooseLanguage(Language language) {
     if (!m_translations.select(language)) {
-        statusBar()->showMessage(
-            tr("The translation \"%1\" could not be loaded.").arg(languageCode(language)));
+        m_message->showMessage(tr("The translation \"%1\" could not be loaded.").arg(languageCode(language)));
         m_languageMenu->setCurrent(m_translations.current());
         return;
     }

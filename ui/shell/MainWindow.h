@@ -27,6 +27,7 @@ class LayoutFileActions;
 class LayoutOverview;
 class LocomotivePanel;
 class LocomotivePictureBook;
+class PassingMessage;
 class PowerStatus;
 class ProgrammingPanel;
 class StartupProgress;
@@ -66,6 +67,8 @@ public:
     LocomotivePanel* locomotivePanel() const { return m_locomotivePanel; }
     ProgrammingPanel* programmingPanel() const { return m_programmingPanel; }
     StopGoButton* stopGoButton() const { return m_stopGo; }
+    // The status bar's passing message on its left (a station's problem, what to try).
+    PassingMessage* passingMessage() const { return m_message; }
     EmergencyStopKeys* stopKeys() const { return m_stopKeys; }
 
     // The railway the panels show and STOP / GO acts on (null: none); see RailwayBinding.
@@ -136,6 +139,7 @@ private:
     LanguageMenu* m_languageMenu = nullptr;
     QMenu* m_helpMenu = nullptr;
     QAction* m_aboutAction = nullptr;
+    PassingMessage* m_message = nullptr;
     ConnectionStatus* m_stationStatus = nullptr;
     StartupProgress* m_startupProgress = nullptr;
     TrafficStatus* m_traffic = nullptr;
