@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The first start on a fresh settings folder under a real window manager (openbox on Xvfb), at a laptop's
 # 1366x768 and at 1920x1080, in English and German: the window with its frame fits the screen's free area,
-# the status bar (station lamp, track power) is on the screen, and the plan is zoomed large enough for its
-# names, and no panel scrolls sideways. Offscreen tests cannot see this: there is no frame and no window manager there.
+# the status bar (station lamp, track power) is on the screen, the plan is zoomed large enough for its
+# names, and no panel scrolls sideways. Offscreen tests cannot see this: there is no frame and no window
+# manager there.
 #
 #   first-start-under-window-manager.sh STELLWERK_BINARY MINIMUM_TILE
 #
@@ -42,7 +43,7 @@ failures=0
 check() { # size language
     local size=$1 language=$2 report="$scratch/report-$1-$2"
     mkdir -p "$scratch/config-$size-$language"
-    REPORT="$report" XDG_CONFIG_HOME="$scratch/config-$size-$language" LANG="$language" LC_ALL= LANGUAGE= \
+    REPORT="$report" XDG_CONFIG_HOME="$scratch/config-$size-$language" LANG="$language" LC_ALL='' LANGUAGE='' \
         timeout 60 xvfb-run -a -s "-screen 0 ${size}x24" \
         openbox --sm-disable --startup "$scratch/stellwerk.sh" 2>"$scratch/openbox.err" || true
     if ! grep -q '^frame ' "$report" 2>/dev/null; then
