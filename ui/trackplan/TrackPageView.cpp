@@ -35,6 +35,7 @@ void TrackPageView::setTileSize(int pixels) {
         return;
     m_tileSize = pixels;
     m_tags.clear();
+    m_drawnArea.reset();
     updateGeometry();
     resize(sizeHint());
     update();
@@ -76,7 +77,9 @@ QRect TrackPageView::drawnArea(int tileSize) const {
 // The grid, and beyond it any text that runs over its edge, so that scrolling reaches all of it.
 QSize TrackPageView::sizeHint() const {
     const QSize grid = gridSize() * m_tileSize + QSize(2 * Margin, 2 * Margin);
-    const QRect drawn = drawnArea(m_tileSize);
+    if (!m_drawnArea)
+        m_drawnArea = drawnArea(m_tileSize);
+    const QRect drawn = *m_drawnArea;
     return drawn.isEmpty() ? grid
                            : grid.expandedTo(QSize(drawn.right() + 1 + Margin, drawn.bottom() + 1 + Margin));
 }
@@ -242,8 +245,10 @@ bool TrackPageView::event(QEvent* event) {
         m_colors = TrackColors::from(palette());
         update();
     }
-    if (event->type() == QEvent::FontChange || event->type() == QEvent::ScreenChangeInternal)
+    if (event->type() == QEvent::FontChange || event->type() == QEvent::ScreenChangeInternal) {
         m_tags.clear();
+        m_drawnArea.reset();
+    }
     return QWidget::event(event);
 }
 

@@ -91,6 +91,7 @@ private:
     mutable QFont m_tagFont; // the tags' font for m_tagFontTile and m_tagFontBase
     mutable QFont m_tagFontBase;
     mutable int m_tagFontTile = 0;
+    mutable std::optional<QRect> m_drawnArea; // drawnArea(m_tileSize), asked for by every layout pass
     int m_tileSize = 40;
     bool m_dimmed = false;
 };
