@@ -18,7 +18,7 @@ readonly packages=(
     libqt6svg6 qt6-translations-l10n
     libgl1-mesa-dev zlib1g-dev
     libgtest-dev libgmock-dev libbenchmark-dev
-    xvfb xauth
+    xvfb xauth openbox
 )
 
 # shellcheck source=common.sh

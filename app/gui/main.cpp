@@ -16,13 +16,20 @@
 #include "shell/Translations.h"
 #include "shell/Workspace.h"
 #include "sim/EmbeddedStation.h"
+#include "trackplan/TrackPlanPanel.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QDockWidget>
 #include <QPixmap>
+#include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
+#include <QStatusBar>
 #include <QTimer>
 #include <cstdio>
+#include <functional>
 
 namespace {
 
@@ -35,13 +42,41 @@ constexpr int SettleMs = 200;
 constexpr int LivelyMs = 1500;
 
 struct Options {
-    QString screenshotFile;   // empty: run normally
-    QString captureFile;      // a capture to open in the frame decoder
-    QString stationUrl;       // the station to connect to; empty: the embedded simulated station
-    QString panel;            // object name of the panel to bring to the front (for screenshots)
-    QSize size;               // the window's size (for screenshots); empty: as remembered
-    QStringList furtherBuses; // more buses to hold open beside the station's
+    QString screenshotFile;      // empty: run normally
+    QString captureFile;         // a capture to open in the frame decoder
+    QString stationUrl;          // the station to connect to; empty: the embedded simulated station
+    QString panel;               // object name of the panel to bring to the front (for screenshots)
+    QSize size;                  // the window's size (for screenshots); empty: as remembered
+    bool reportGeometry = false; // print where the window and its status bar are on the screen, and quit
+    QStringList furtherBuses;    // more buses to hold open beside the station's
 };
+
+QString rectText(const QRect& rect) {
+    return QStringLiteral("%1,%2 %3x%4").arg(rect.x()).arg(rect.y()).arg(rect.width()).arg(rect.height());
+}
+
+// The panels in front of their docks that scroll sideways, because their docks are narrower than they need.
+int panelsScrollingSideways(const stellwerk::ui::MainWindow& window) {
+    int count = 0;
+    for (const QDockWidget* dock : window.workspace()->docks()) {
+        const QWidget* panel = stellwerk::ui::Workspace::panelOf(dock);
+        const auto* scroll = qobject_cast<const QScrollArea*>(dock->widget());
+        count += panel && scroll && panel->isVisible() && scroll->horizontalScrollBar()->isVisible() ? 1 : 0;
+    }
+    return count;
+}
+
+// For the first-start test under a window manager: the screen's free area, the window with and without
+// its frame, the status bar (all in screen pixels), the plan's zoom and the panels that scroll sideways.
+void reportGeometry(const stellwerk::ui::MainWindow& window) {
+    const QRect statusBar(window.statusBar()->mapToGlobal(QPoint()), window.statusBar()->size());
+    std::printf("available %s\nframe %s\nwindow %s\nstatus bar %s\nplan tile %d\nscrolling sideways %d\n",
+                qPrintable(rectText(window.screen()->availableGeometry())),
+                qPrintable(rectText(window.frameGeometry())), qPrintable(rectText(window.geometry())),
+                qPrintable(rectText(statusBar)), window.trackPlan()->tileSize(),
+                panelsScrollingSideways(window));
+    std::fflush(stdout);
+}
 
 // --simulated wins over --station, which wins over the settings.
 QString stationUrl(const QCommandLineParser& parser, const QCommandLineOption& station,
@@ -130,12 +165,19 @@ Options parseOptions(const QCoreApplication& app) {
                                             "busMonitorPanel, throttlePanel, ...)."),
                              QStringLiteral("name"));
     parser.addOption(panel);
+    QCommandLineOption geometry(
+        QStringLiteral("report-geometry"),
+        QStringLiteral("Print where the window, its frame and its status bar are on the "
+                       "screen once the station is ready, and quit (for tests)."));
+    geometry.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOption(geometry);
     parser.process(app);
     return Options{parser.value(screenshot),
                    parser.value(decode),
                    stationUrl(parser, station, simulated),
                    parser.value(panel),
                    windowSize(parser.value(size)),
+                   parser.isSet(geometry),
                    parser.isSet(bus) ? parser.values(bus)
                                      : stellwerk::ui::StationUrlSettings::furtherBuses()};
 }
@@ -154,23 +196,39 @@ bool settled(StationConnection::State state) {
            state != StationConnection::State::LoadingConfiguration;
 }
 
-// For documentation: grabs the shown window a moment after the station is ready, so that the demo's trains
-// have moved and the layout shows occupied contacts and their times (or at once when it failed, or did not
-// get there in time, after the status bar had a moment to lay out its new text); then ends with 0 or 1.
-void saveScreenshotAndQuit(QWidget& window, const StationConnection& connection, const QString& file) {
+// Calls `then` `readyMs` after the station is ready (or a moment after it failed, or did not get there
+// in time, so that the status bar can lay out its new text).
+void whenSettled(QWidget& window, const StationConnection& connection, int readyMs,
+                 const std::function<void()>& then) {
     auto* patience = new QTimer(&window);
     patience->setSingleShot(true);
-    const auto grabIn = [&window, file, patience](int delayMs) {
+    const auto thenIn = [&window, then, patience](int delayMs) {
         patience->stop();
-        QTimer::singleShot(delayMs, &window, [&window, file] { grabAndQuit(window, file); });
+        QTimer::singleShot(delayMs, &window, then);
     };
-    QObject::connect(patience, &QTimer::timeout, &window, [grabIn] { grabIn(SettleMs); });
+    QObject::connect(patience, &QTimer::timeout, &window, [thenIn] { thenIn(SettleMs); });
     QObject::connect(&connection, &StationConnection::stateChanged, patience,
-                     [grabIn, patience](StationConnection::State state) {
+                     [thenIn, patience, readyMs](StationConnection::State state) {
                          if (patience->isActive() && settled(state))
-                             grabIn(state == StationConnection::State::Ready ? LivelyMs : SettleMs);
+                             thenIn(state == StationConnection::State::Ready ? readyMs : SettleMs);
                      });
     patience->start(ScreenshotPatienceMs);
+}
+
+// For documentation: grabs the shown window once the demo's trains have moved, so that the layout shows
+// occupied contacts and their times; for tests: reports the window's geometry first. Then ends with 0 or 1.
+void reportAndQuit(stellwerk::ui::MainWindow& window, const StationConnection& connection,
+                   const Options& options) {
+    const QString file = options.screenshotFile;
+    const bool report = options.reportGeometry;
+    whenSettled(window, connection, file.isEmpty() ? SettleMs : LivelyMs, [&window, file, report] {
+        if (report)
+            reportGeometry(window);
+        if (file.isEmpty())
+            QCoreApplication::exit(0);
+        else
+            grabAndQuit(window, file);
+    });
 }
 
 // The railway's accessories and contacts that devices switch and light, and the locos OpenRailCAN throttles
@@ -247,12 +305,14 @@ int main(int argc, char* argv[]) {
         std::fprintf(stderr, "stellwerk: there is no panel \"%s\"\n", qPrintable(options.panel));
         return 1;
     }
-    if (!options.size.isEmpty())
+    if (options.size.isEmpty()) {
+        window.showAtStart();
+    } else {
         window.resize(options.size);
-    window.show();
-    if (!options.screenshotFile.isEmpty()) {
-        saveScreenshotAndQuit(window, connection, options.screenshotFile);
+        window.show();
     }
+    if (!options.screenshotFile.isEmpty() || options.reportGeometry)
+        reportAndQuit(window, connection, options);
     QTimer::singleShot(0, &connection, [&connection, &options] {
         connection.connectTo(options.stationUrl, options.furtherBuses);
     });

@@ -1,5 +1,6 @@
 #include "transport/CanBusTransport.h"
 
+#include "transport/DurationText.h"
 #include "transport/TransportAddress.h"
 
 #include <QCanBus>
@@ -48,7 +49,7 @@ CanBusTransport::CanBusTransport(CanBusSettings settings, QObject* parent)
           this, [this] { createDevice(); },
           [this] {
               connectionLost(
-                  tr("no connection within %1 ms").arg(settings_.reconnect.attemptTimeout.count()));
+                  tr("no connection within %1").arg(durationText(settings_.reconnect.attemptTimeout)));
           }) {
     reconnector_.setTiming(settings_.reconnect);
 }

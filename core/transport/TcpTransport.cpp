@@ -1,5 +1,6 @@
 #include "transport/TcpTransport.h"
 
+#include "transport/DurationText.h"
 #include "transport/NetworkFraming.h"
 #include "transport/TransportAddress.h"
 
@@ -34,7 +35,7 @@ TcpTransport::TcpTransport(TcpSettings settings, QObject* parent)
       reconnector_(
           this, [this] { connectToStation(); },
           [this] {
-              connectionLost(tr("no answer within %1 ms").arg(settings_.reconnect.attemptTimeout.count()));
+              connectionLost(tr("no answer within %1").arg(durationText(settings_.reconnect.attemptTimeout)));
           }) {
     reconnector_.setTiming(settings_.reconnect);
     connect(socket_, &QTcpSocket::connected, this, &TcpTransport::onConnected);

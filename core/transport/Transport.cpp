@@ -1,5 +1,7 @@
 #include "transport/Transport.h"
 
+#include "transport/DurationText.h"
+
 #include <QLoggingCategory>
 #include <QMetaMethod>
 #include <algorithm>
@@ -122,7 +124,7 @@ void Transport::reportSent(std::span<const CanFrame> frames) {
 void Transport::reportConnectionLost(const QString& reason, std::chrono::milliseconds retryIn) {
     const QString failure = QStringLiteral("%1: %2").arg(description(), reason);
     emit connectionFailed(failure);
-    emit problem(tr("%1; trying again in %2 ms").arg(failure).arg(retryIn.count()));
+    emit problem(tr("%1; trying again in %2").arg(failure, durationText(retryIn)));
 }
 
 } // namespace stellwerk::transport

@@ -1,5 +1,6 @@
 #include "transport/UdpTransport.h"
 
+#include "transport/DurationText.h"
 #include "transport/NetworkFraming.h"
 #include "transport/TransportAddress.h"
 
@@ -29,9 +30,8 @@ UdpTransport::UdpTransport(UdpSettings settings, QObject* parent)
       reconnector_(
           this, [this] { resolveStation(); },
           [this] {
-              attemptFailed(tr("no address for %1 within %2 ms")
-                                .arg(settings_.host)
-                                .arg(settings_.reconnect.attemptTimeout.count()));
+              attemptFailed(tr("no address for %1 within %2")
+                                .arg(settings_.host, durationText(settings_.reconnect.attemptTimeout)));
           }) {
     reconnector_.setTiming(settings_.reconnect);
     connect(socket_, &QUdpSocket::readyRead, this, &UdpTransport::onReadyRead);

@@ -3,6 +3,8 @@ stellwerk_core_library(transport)
 target_sources(stellwerk-transport PRIVATE
     transport/CanBusTransport.cpp
     transport/CanBusTransport.h
+    transport/DurationText.cpp
+    transport/DurationText.h
     transport/FrameAssembler.cpp
     transport/LocalPeer.h
     transport/LoopbackTransport.cpp

@@ -92,7 +92,11 @@ QWidget* TurnoutPanel::buildNavigation() {
     m_pagePicker = new QComboBox(bar);
     m_pagePicker->setObjectName(QStringLiteral("pagePicker"));
     m_summary = new QLabel(bar);
+    m_summary->setObjectName(QStringLiteral("keyboardSummary"));
     m_summary->setEnabled(false);
+    // "… · positions not reported" wraps rather than widening the keyboard beyond its dock.
+    m_summary->setWordWrap(true);
+    m_summary->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     row->addWidget(m_previous);
     row->addWidget(m_pagePicker);
     row->addWidget(m_next);

@@ -11,6 +11,8 @@
 #include <QSplitter>
 #include <QTableView>
 #include <QVBoxLayout>
+#include <algorithm>
+#include <limits>
 
 namespace stellwerk::ui {
 
@@ -21,6 +23,12 @@ LayoutOverview::LayoutOverview(QWidget* parent)
     setObjectName(QStringLiteral("layoutOverview"));
     locomotiveView_->setModel(locomotives_);
     contactView_->setModel(contacts_);
+    // A longer name or speed text may need the room of another column (one refit per batch of changes).
+    for (QAbstractItemModel* model :
+         {static_cast<QAbstractItemModel*>(locomotives_), static_cast<QAbstractItemModel*>(contacts_)}) {
+        connect(model, &QAbstractItemModel::dataChanged, this, &LayoutOverview::fitColumns);
+        connect(model, &QAbstractItemModel::rowsInserted, this, &LayoutOverview::fitColumns);
+    }
     auto* tables = new QSplitter(Qt::Horizontal, this);
     locomotiveBox_ = tableBox(locomotiveView_, QStringLiteral("locomotiveBox"));
     contactBox_ = tableBox(contactView_, QStringLiteral("contactBox"));
@@ -98,11 +106,50 @@ void LayoutOverview::retranslate() {
     fitColumns(); // headers and texts of another language have other widths
 }
 
+void LayoutOverview::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    fitColumns();
+}
+
 // Every column but the last, which stretches over the rest.
 void LayoutOverview::fitColumns() {
     for (QTableView* view : {locomotiveView_, contactView_})
-        for (int column = 0; column + 1 < view->model()->columnCount(); ++column)
-            view->resizeColumnToContents(column);
+        fitColumnsOf(*view);
+}
+
+// Columns as wide as their contents; where the table is narrower than that (a laptop's dock, the longer
+// "(not reported)" texts), the widest columns give way and shorten their texts with "…" rather than
+// the table scrolling sideways. None gets narrower than its header.
+void LayoutOverview::fitColumnsOf(QTableView& view) {
+    const int columns = view.model()->columnCount();
+    const QAbstractItemView& cells = view; // where the contents' width is public
+    QList<int> wanted;
+    int total = 0;
+    for (int column = 0; column < columns; ++column) {
+        wanted << std::max(cells.sizeHintForColumn(column), view.horizontalHeader()->sectionSizeHint(column));
+        total += wanted.last();
+    }
+    // The stretched last column is never narrower than the header's default section.
+    total += std::max(0, view.horizontalHeader()->defaultSectionSize() - wanted.last());
+    wanted.last() = std::max(wanted.last(), view.horizontalHeader()->defaultSectionSize());
+    const int room = view.viewport()->width();
+    int widest = total > room ? widestAllowed(wanted, room) : std::numeric_limits<int>::max();
+    for (int column = 0; column + 1 < columns; ++column)
+        view.setColumnWidth(column, std::max(std::min(wanted[column], widest),
+                                             view.horizontalHeader()->sectionSizeHint(column)));
+}
+
+// The width at which capping every column of `wanted` makes them fit `room` together.
+int LayoutOverview::widestAllowed(QList<int> wanted, int room) {
+    std::sort(wanted.begin(), wanted.end());
+    int below = 0; // the columns narrower than the cap keep their widths
+    for (qsizetype i = 0; i < wanted.size(); ++i) {
+        const int cap = (room - below) / int(wanted.size() - i);
+        if (cap <= wanted[i])
+            return std::max(cap, 0);
+        below += wanted[i];
+    }
+    return wanted.isEmpty() ? room : wanted.last();
 }
 
 } // namespace stellwerk::ui

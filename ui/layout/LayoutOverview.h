@@ -2,6 +2,7 @@
 
 #include "station/StationUpdates.h"
 
+#include <QList>
 #include <QPointer>
 #include <QWidget>
 #include <optional>
@@ -39,12 +40,15 @@ public:
 
 protected:
     void changeEvent(QEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     QGroupBox* tableBox(QTableView* view, const QString& objectName);
     QTableView* tableView(const QString& objectName);
     void retranslate();
     void fitColumns();
+    static void fitColumnsOf(QTableView& view);
+    static int widestAllowed(QList<int> wanted, int room);
 
     QPointer<const model::Railway> railway_;
     LocomotiveTableModel* locomotives_;

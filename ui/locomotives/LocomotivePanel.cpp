@@ -43,6 +43,9 @@ LocomotivePanel::LocomotivePanel(QWidget* parent)
     setObjectName(QStringLiteral("locomotivePanel"));
     m_message->setObjectName(QStringLiteral("locomotiveMessage"));
     m_message->setWordWrap(true);
+    // "12 locomotives, changed and not saved" wraps rather than widening the panel beyond its dock.
+    m_title->setObjectName(QStringLiteral("locomotiveTitle"));
+    m_title->setWordWrap(true);
     m_emptyText->setAlignment(Qt::AlignCenter);
     m_emptyText->setEnabled(false);
     setUpTable();

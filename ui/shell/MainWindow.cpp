@@ -21,10 +21,12 @@
 #include "programming/ProgrammingPanel.h"
 #include "shell/AboutBox.h"
 #include "shell/ApplicationInfo.h"
+#include "shell/FirstWindowSize.h"
 #include "shell/GuideBrowser.h"
 #include "shell/KeyList.h"
 #include "shell/LanguageMenu.h"
 #include "shell/LanguageSettings.h"
+#include "shell/PassingMessage.h"
 #include "shell/Translations.h"
 #include "shell/WindowLayoutSettings.h"
 #include "shell/Workspace.h"
@@ -44,16 +46,24 @@
 #include <QMenuBar>
 #include <QScreen>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolBar>
 
 namespace stellwerk::ui {
+
+namespace {
+
+// How long a window manager may take to maximize the first window before the panels are arranged anyway.
+constexpr int MaximizingMs = 1000;
+
+} // namespace
 
 MainWindow::MainWindow(Translations& translations, QWidget* parent)
     : QMainWindow(parent), m_translations(translations) {
     setObjectName(QStringLiteral("mainWindow"));
     setWindowTitle(QStringLiteral("Stellwerk"));
     setWindowIcon(applicationIcon());
-    resize(firstSize());
+    setGeometry(FirstWindowSize::geometry(availableArea()));
     createPanels();
     createToolBar();
     createFileMenu();
@@ -62,14 +72,19 @@ MainWindow::MainWindow(Translations& translations, QWidget* parent)
     createHelpMenu();
     createStatusBar();
     retranslate();
-    m_workspace->restore();
+    m_placeRemembered = m_workspace->restore();
 }
 
-// Without a remembered size: most of the screen, as a control desk wants the room, but not beyond it.
-QSize MainWindow::firstSize() {
+QRect MainWindow::availableArea() {
     const QScreen* screen = QGuiApplication::primaryScreen();
-    const QSize available = screen ? screen->availableGeometry().size() : QSize(1280, 800);
-    return QSize(1280, 800).expandedTo(available * 9 / 10).boundedTo(available);
+    return screen ? screen->availableGeometry() : QRect(0, 0, 1366, 768);
+}
+
+void MainWindow::showAtStart() {
+    if (!m_placeRemembered && FirstWindowSize::opensMaximized(availableArea()))
+        showMaximized();
+    else
+        show();
 }
 
 void MainWindow::changeEvent(QEvent* event) {
@@ -85,8 +100,29 @@ void MainWindow::showEvent(QShowEvent* event) {
     if (m_shownBefore)
         return;
     m_shownBefore = true;
-    if (WindowLayoutSettings::load().state.isEmpty())
+    m_arrangementDue = WindowLayoutSettings::load().state.isEmpty();
+    arrangeOnceSized();
+    // A window manager that does not maximize (or none at all) leaves the window as it is.
+    QTimer::singleShot(MaximizingMs, this, [this] {
+        if (!m_arrangementDue)
+            return;
+        m_arrangementDue = false;
         arrangePanels();
+    });
+}
+
+void MainWindow::resizeEvent(QResizeEvent* event) {
+    QMainWindow::resizeEvent(event);
+    arrangeOnceSized();
+}
+
+// A maximized window gets its size from the window manager after it is shown; the panels are arranged
+// for that size, not for the smaller one it had before.
+void MainWindow::arrangeOnceSized() {
+    if (!m_arrangementDue || !isVisible() || (isMaximized() && width() <= normalGeometry().width()))
+        return;
+    m_arrangementDue = false;
+    arrangePanels();
 }
 
 // The keyboard with its four columns on the left; one throttle on the right (two where the screen is wide
@@ -249,18 +285,18 @@ void MainWindow::showStationProblem(const QString& message) {
     if (!m_connection || m_connection->state() == State::Failed)
         return;
     if (m_connection->state() == State::Connecting)
-        statusBar()->showMessage(
+        m_message->showMessage(
             message + QStringLiteral(" — ") + ConnectionStatus::advice(m_connection->endpoint()), 15000);
     else
-        statusBar()->showMessage(message, 8000);
+        m_message->showMessage(message, 8000);
 }
 
 // A failed connection says what to try, and keeps saying it until something changes.
 void MainWindow::connectionStateChanged() {
     if (m_connection && m_connection->state() == connection::StationConnection::State::Failed)
-        statusBar()->showMessage(ConnectionStatus::advice(m_connection->endpoint()));
+        m_message->showMessage(ConnectionStatus::advice(m_connection->endpoint()));
     else if (m_connection && m_connection->state() == connection::StationConnection::State::Ready)
-        statusBar()->clearMessage();
+        m_message->clearMessage();
 }
 
 void MainWindow::showConnectDialog() {
@@ -303,8 +339,10 @@ void MainWindow::createHelpMenu() {
     m_aboutAction->setMenuRole(QAction::AboutRole);
 }
 
-// Station state is permanent information; the left side stays free for temporary messages.
+// Station state is permanent information; the left side stays free for passing messages.
 void MainWindow::createStatusBar() {
+    m_message = new PassingMessage(this);
+    statusBar()->addWidget(m_message, 1);
     m_stationStatus = new ConnectionStatus(this);
     m_startupProgress = new StartupProgress(this);
     m_traffic = new TrafficStatus(this);
@@ -374,8 +412,7 @@ void MainWindow::retranslateDocks() {
 
 void MainWindow::chooseLanguage(Language language) {
     if (!m_translations.select(language)) {
-        statusBar()->showMessage(
-            tr("The translation \"%1\" could not be loaded.").arg(languageCode(language)));
+        m_message->showMessage(tr("The translation \"%1\" could not be loaded.").arg(languageCode(language)));
         m_languageMenu->setCurrent(m_translations.current());
         return;
     }

@@ -29,6 +29,7 @@ class LayoutFileActions;
 class LayoutOverview;
 class LocomotivePanel;
 class LocomotivePictureBook;
+class PassingMessage;
 class PowerStatus;
 class ProgrammingPanel;
 class StartupProgress;
@@ -68,6 +69,8 @@ public:
     LocomotivePanel* locomotivePanel() const { return m_locomotivePanel; }
     ProgrammingPanel* programmingPanel() const { return m_programmingPanel; }
     StopGoButton* stopGoButton() const { return m_stopGo; }
+    // The status bar's passing message on its left (a station's problem, what to try).
+    PassingMessage* passingMessage() const { return m_message; }
     EmergencyStopKeys* stopKeys() const { return m_stopKeys; }
     AftermathMenu* aftermathMenu() const { return m_aftermath; }
     CorrectionNotice* correctionNotice() const { return m_corrections; }
@@ -79,6 +82,9 @@ public:
     void setConnection(connection::StationConnection* station);
     connection::StationConnection* stationConnection() const { return m_connection; }
 
+    // Shows the window where it was left, or at the first start sized to the screen (FirstWindowSize).
+    void showAtStart();
+
     // Opens Station → Connect…; on Connect the choice is stored and the connection reconnects.
     void showConnectDialog();
 
@@ -86,11 +92,13 @@ protected:
     void changeEvent(QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
     void showEvent(QShowEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
-    static QSize firstSize();
+    static QRect availableArea();
     void createPanels();
     void arrangePanels();
+    void arrangeOnceSized();
     void createToolBar();
     void createFileMenu();
     void createStationMenu();
@@ -136,6 +144,7 @@ private:
     LanguageMenu* m_languageMenu = nullptr;
     QMenu* m_helpMenu = nullptr;
     QAction* m_aboutAction = nullptr;
+    PassingMessage* m_message = nullptr;
     ConnectionStatus* m_stationStatus = nullptr;
     StartupProgress* m_startupProgress = nullptr;
     TrafficStatus* m_traffic = nullptr;
@@ -144,6 +153,8 @@ private:
     connection::StationConnection* m_connection = nullptr;
     QPointer<LocomotivePictureBook> m_pictures;
     bool m_shownBefore = false;
+    bool m_arrangementDue = false;
+    bool m_placeRemembered = false;
 };
 
 } // namespace stellwerk::ui

@@ -81,13 +81,13 @@ bool Workspace::showPanel(QWidget* panel) {
     return true;
 }
 
-void Workspace::restore() {
+bool Workspace::restore() {
     m_initialState = m_window.saveState(LayoutVersion);
     const WindowLayout saved = WindowLayoutSettings::load();
-    if (!saved.geometry.isEmpty())
-        m_window.restoreGeometry(saved.geometry);
+    const bool placed = !saved.geometry.isEmpty() && m_window.restoreGeometry(saved.geometry);
     if (!saved.state.isEmpty())
         m_window.restoreState(saved.state, LayoutVersion);
+    return placed;
 }
 
 void Workspace::save() const {

@@ -33,8 +33,9 @@ public:
     bool showPanel(QWidget* panel);
     bool showPanel(const QString& objectName) { return showPanel(panel(objectName)); }
 
-    // Remembers the first arrangement (call once every panel was added), then restores the saved one.
-    void restore();
+    // Remembers the first arrangement (call once every panel was added), then restores the saved one;
+    // true when the window's remembered size and place were restored too.
+    bool restore();
     void save() const;
     // Back to the arrangement the panels had when they were added.
     void reset();

@@ -3,6 +3,7 @@
 #include "model/Railway.h"
 
 #include <QEvent>
+#include <algorithm>
 
 namespace stellwerk::ui {
 
@@ -14,10 +15,11 @@ const QString stopStyle =
                    "border: 2px solid #8e1c1c; padding: 6px 22px; } "
                    "QToolButton:pressed { background: #8e1c1c; } "
                    "QToolButton:disabled { background: #9e9e9e; color: #eeeeee; border-color: #9e9e9e; }");
-// Power off: dark red with amber text and a bright red edge. Nothing about it says "all is well".
+// Power off: dark red with amber text and a bright red edge. Nothing about it says "all is well". Its
+// thicker edge takes a pixel of the padding, so that every look has the same room around its text.
 const QString powerOffStyle = QStringLiteral(
     "QToolButton { background: #4a0d0d; color: #ffe082; font-weight: bold; border-radius: 6px; "
-    "border: 3px solid #e53935; padding: 5px 18px; } "
+    "border: 3px solid #e53935; padding: 5px 21px; } "
     "QToolButton:pressed { background: #2a0606; }");
 // Not reported: grey, still a STOP.
 const QString notReportedStyle =
@@ -90,32 +92,62 @@ void StopGoButton::changeEvent(QEvent* event) {
     QToolButton::changeEvent(event);
 }
 
+// As wide as its widest look in the current language: a change of state never moves the keys beside it.
+QSize StopGoButton::sizeHint() const {
+    QSize hint = QToolButton::sizeHint();
+    const auto width = [metrics = fontMetrics()](const QString& text) { // as QToolButton measures it
+        return metrics.size(Qt::TextShowMnemonic, text).width();
+    };
+    int widest = 0;
+    for (const Look look : {Look::Stop, Look::PowerOff, Look::Halted, Look::NotReported})
+        widest = std::max(widest, width(textOf(look)));
+    hint.rwidth() += widest - width(text());
+    return hint;
+}
+
+QSize StopGoButton::minimumSizeHint() const {
+    return sizeHint();
+}
+
+QString StopGoButton::textOf(Look look) {
+    switch (look) {
+    case Look::Stop:
+        return tr("STOP");
+    case Look::PowerOff:
+        return tr("TRACK POWER OFF · press to switch on");
+    case Look::Halted:
+        return tr("TRAINS HALTED · press to go on");
+    case Look::NotReported:
+        break;
+    }
+    return tr("STOP · power not reported");
+}
+
 void StopGoButton::refresh() {
     setEnabled(m_railway != nullptr);
-    switch (m_railway ? look() : Look::Stop) {
+    const Look shown = m_railway ? look() : Look::Stop;
+    setText(textOf(shown));
+    switch (shown) {
     case Look::Stop:
-        setText(tr("STOP"));
         setStyleSheet(stopStyle);
         setToolTip(tr("Track power is on. Press to switch it off: every train stops (Space)"));
         break;
     case Look::PowerOff:
-        setText(tr("TRACK POWER OFF · press to switch on"));
         setStyleSheet(powerOffStyle);
         setToolTip(tr("The layout is stopped: the station switched the track power off. Press to switch it "
                       "on again (GO); trains resume their speeds."));
         break;
     case Look::Halted:
-        setText(tr("TRAINS HALTED · press to go on"));
         setStyleSheet(powerOffStyle);
         setToolTip(tr("Every train was halted; the track still has power. Press to let them go on (GO)."));
         break;
     case Look::NotReported:
-        setText(tr("STOP · power not reported"));
         setStyleSheet(notReportedStyle);
         setToolTip(tr("The station has not reported the track power (silent, reconnecting or not yet "
                       "said). Press to switch it off anyway (Space)."));
         break;
     }
+    updateGeometry();
 }
 
 } // namespace stellwerk::ui

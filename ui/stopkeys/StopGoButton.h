@@ -16,7 +16,8 @@ namespace stellwerk::ui {
 // STOP while the station reports track power on; a dark red "TRACK POWER OFF" (or "TRAINS HALTED") after a
 // stop, which switches the power on again; and a grey STOP while the power is not reported (the station
 // is silent, reconnecting, or has not said yet), which still stops. It only asks the railway; what it
-// shows is what the station reported.
+// shows is what the station reported. It keeps the width of its widest look, so that nothing beside it
+// moves when the power changes.
 class StopGoButton final : public QToolButton {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(StopGoButton)
@@ -34,11 +35,14 @@ public:
     // What a click does now: true when it stops.
     bool stops() const;
     Look look() const;
+    QSize sizeHint() const override;
+    QSize minimumSizeHint() const override;
 
 protected:
     void changeEvent(QEvent* event) override;
 
 private:
+    static QString textOf(Look look);
     void press();
     void refresh();
 

@@ -90,21 +90,36 @@ void PageZoom::fitNow(Page& page) {
         return;
     const QSize room =
         page.scroll->viewport()->size() - QSize(2 * TrackPageView::Margin, 2 * TrackPageView::Margin);
-    const QRect drawn = page.view->drawnCells();
-    if (room.isEmpty() || drawn.isEmpty())
+    if (room.isEmpty() || page.view->drawnCells().isEmpty())
         return;
-    page.tile = std::clamp(std::min(room.width() / drawn.width(), room.height() / drawn.height()),
-                           MinimumTile, MaximumTile);
+    page.tile = fittingTile(*page.view, room);
     page.view->setTileSize(page.tile);
     centreDrawnPart(page);
 }
 
+// The largest tile size at which the page's drawn part, with the texts that run beyond their tiles, fits
+// into `room`. The texts grow with the tiles: first in proportion, then a step at a time.
+int PageZoom::fittingTile(const TrackPageView& view, QSize room) {
+    const auto fits = [&view, room](int tile) {
+        const QSize drawn = view.drawnArea(tile).size();
+        return drawn.width() <= room.width() && drawn.height() <= room.height();
+    };
+    const QRect cells = view.drawnCells();
+    const int byCells = std::clamp(std::min(room.width() / cells.width(), room.height() / cells.height()),
+                                   MinimumTile, MaximumTile);
+    const QSize drawn = view.drawnArea(byCells).size();
+    int tile = std::max(MinimumTile, std::min({byCells, byCells * room.width() / std::max(1, drawn.width()),
+                                               byCells * room.height() / std::max(1, drawn.height())}));
+    while (tile > MinimumTile && !fits(tile))
+        --tile;
+    while (tile < byCells && fits(tile + 1))
+        ++tile;
+    return tile;
+}
+
 // The drawn part in the middle of the window; the empty rest of the grid stays reachable by scrolling.
 void PageZoom::centreDrawnPart(const Page& page) {
-    const QRect drawn = page.view->drawnCells();
-    const QRect pixels(TrackPageView::Margin + drawn.left() * page.tile,
-                       TrackPageView::Margin + drawn.top() * page.tile, drawn.width() * page.tile,
-                       drawn.height() * page.tile);
+    const QRect pixels = page.view->drawnArea(page.tile);
     const QSize room = page.scroll->viewport()->size();
     page.scroll->horizontalScrollBar()->setValue(pixels.center().x() - room.width() / 2);
     page.scroll->verticalScrollBar()->setValue(pixels.center().y() - room.height() / 2);

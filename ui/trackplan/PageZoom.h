@@ -3,6 +3,7 @@
 #include <QHash>
 #include <QObject>
 #include <QPointer>
+#include <QSize>
 #include <cstdint>
 #include <optional>
 
@@ -13,9 +14,10 @@ namespace stellwerk::ui {
 
 class TrackPageView;
 
-// Each page of the plan keeps its own zoom. A page first shows its drawn part filling the window (not
-// the whole CS2 grid) and keeps fitting it while the window changes size, until the user zooms it;
-// Fit goes back to that. The zoom of a page outlives a reload of the layout (pages are known by id).
+// Each page of the plan keeps its own zoom. A page first shows its drawn part, texts that run beyond their
+// tiles included, filling the window (not the whole CS2 grid) and keeps fitting it while the window
+// changes size, until the user zooms it; Fit goes back to that. The zoom of a page outlives a reload of the
+// layout (pages are known by id).
 class PageZoom final : public QObject {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(PageZoom)
@@ -55,6 +57,7 @@ private:
     };
 
     void fitNow(Page& page);
+    static int fittingTile(const TrackPageView& view, QSize room);
     void centreDrawnPart(const Page& page);
 
     std::optional<std::int64_t> current() const;

@@ -1,6 +1,7 @@
 #include "trackplan/TileTag.h"
 
 #include "model/TrackLayout.h"
+#include "trackplan/NameElision.h"
 #include "trackplan/TrackColors.h"
 
 #include <QFontMetrics>
@@ -111,7 +112,7 @@ void TileTag::place(const QString& name, QPoint corner, int room) {
     m_text = name;
     int advance = laidOut(name);
     if (advance + 4 > room) { // shortening lays the text out again: only where it is needed
-        m_text = QFontMetrics(m_font).elidedText(name, Qt::ElideRight, room - 4);
+        m_text = NameElision::shorten(name, QFontMetrics(m_font), room - 4);
         advance = laidOut(m_text);
     }
     glyphTable().font(m_font);
@@ -154,7 +155,7 @@ int TileTag::laidOutByQt(const QString& text) {
 
 QFont TileTag::tagFont(const QFont& font, int tileSize) {
     QFont sized = font;
-    sized.setPixelSize(std::clamp(tileSize * 3 / 10, 8, 13));
+    sized.setPixelSize(std::clamp(tileSize * 3 / 10, ReadablePixels, 13));
     return sized;
 }
 

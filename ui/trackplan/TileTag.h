@@ -21,11 +21,14 @@ struct TrackColors;
 
 // The name an element carries in its file (`.text`: a turnout's number, a signal's name, an S88 contact's
 // number, a route's name), drawn small on a light backing at the tile's top left (under a route button)
-// and shortened to the tile, so that the plan reads like the station's own. Too small a zoom draws none.
+// and shortened to the tile keeping the end that tells neighbours apart (NameElision), so that the plan
+// reads like the station's own. Too small a zoom draws none.
 class TileTag final {
 public:
     // Tiles smaller than this carry no tag: the text would not be readable.
     static constexpr int MinimumTile = 26;
+    // The smallest text a tag is drawn in, in pixels: readable on a laptop's screen.
+    static constexpr int ReadablePixels = 9;
 
     // `font` is the plan's font; every tag of one zoom shares the font sized from it (tagFont).
     TileTag(const model::LayoutTile& tile, const QRect& cell, const QFont& font);

@@ -3,6 +3,7 @@
 #include "model/TrackLayout.h"
 #include "trackplan/PaintBands.h"
 #include "trackplan/TileTag.h"
+#include "trackplan/TrackTilePainter.h"
 
 #include <QContextMenuEvent>
 #include <QElapsedTimer>
@@ -34,6 +35,7 @@ void TrackPageView::setTileSize(int pixels) {
         return;
     m_tileSize = pixels;
     m_tags.clear();
+    m_drawnArea.reset();
     updateGeometry();
     resize(sizeHint());
     update();
@@ -58,14 +60,37 @@ QRect TrackPageView::drawnCells() const {
     return drawn;
 }
 
+QRect TrackPageView::drawnArea(int tileSize) const {
+    QRect drawn;
+    for (int i = 0; i < int(m_page.tiles.size()); ++i) {
+        const model::LayoutTile& tile = m_page.tiles[std::size_t(i)];
+        if (tile.type == QLatin1String("leer"))
+            continue;
+        const QRect cell = cellAt(i, tileSize);
+        drawn |= tile.category == cs2config::TrackCategory::Text
+                     ? cell | TrackTilePainter::area(cell, m_look(i), font()).toAlignedRect()
+                     : cell;
+    }
+    return drawn;
+}
+
+// The grid, and beyond it any text that runs over its edge, so that scrolling reaches all of it.
 QSize TrackPageView::sizeHint() const {
-    return gridSize() * m_tileSize + QSize(2 * Margin, 2 * Margin);
+    const QSize grid = gridSize() * m_tileSize + QSize(2 * Margin, 2 * Margin);
+    if (!m_drawnArea)
+        m_drawnArea = drawnArea(m_tileSize);
+    const QRect drawn = *m_drawnArea;
+    return drawn.isEmpty() ? grid
+                           : grid.expandedTo(QSize(drawn.right() + 1 + Margin, drawn.bottom() + 1 + Margin));
 }
 
 QRect TrackPageView::tileRect(int tile) const {
+    return cellAt(tile, m_tileSize);
+}
+
+QRect TrackPageView::cellAt(int tile, int tileSize) const {
     const model::LayoutTile& t = m_page.tiles[std::size_t(tile)];
-    return {Margin + t.position.column * m_tileSize, Margin + t.position.row * m_tileSize, m_tileSize,
-            m_tileSize};
+    return {Margin + t.position.column * tileSize, Margin + t.position.row * tileSize, tileSize, tileSize};
 }
 
 std::optional<int> TrackPageView::tileAt(QPoint point) const {
@@ -220,8 +245,10 @@ bool TrackPageView::event(QEvent* event) {
         m_colors = TrackColors::from(palette());
         update();
     }
-    if (event->type() == QEvent::FontChange || event->type() == QEvent::ScreenChangeInternal)
+    if (event->type() == QEvent::FontChange || event->type() == QEvent::ScreenChangeInternal) {
         m_tags.clear();
+        m_drawnArea.reset();
+    }
     return QWidget::event(event);
 }
 

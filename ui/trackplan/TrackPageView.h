@@ -45,8 +45,13 @@ public:
     QSize sizeHint() const override;
     // The size the page needs at one pixel per tile: columns x rows.
     QSize gridSize() const;
+    // The tile's cell at `tileSize` pixels per tile.
+    QRect cellAt(int tile, int tileSize) const;
     // The cells (column, row, columns, rows) that hold something drawn; empty for an empty page.
     QRect drawnCells() const;
+    // What the page draws at `tileSize` pixels per tile, in the view's pixels: the drawn cells and the
+    // texts that run beyond their tiles ("Lokschuppen 1" at the end of its track). Empty for an empty page.
+    QRect drawnArea(int tileSize) const;
     // Greyed: the states drawn are the last the station reported, not what it reports now.
     void setDimmed(bool dimmed);
     bool isDimmed() const { return m_dimmed; }
@@ -86,6 +91,7 @@ private:
     mutable QFont m_tagFont; // the tags' font for m_tagFontTile and m_tagFontBase
     mutable QFont m_tagFontBase;
     mutable int m_tagFontTile = 0;
+    mutable std::optional<QRect> m_drawnArea; // drawnArea(m_tileSize), asked for by every layout pass
     int m_tileSize = 40;
     bool m_dimmed = false;
 };

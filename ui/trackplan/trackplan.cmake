@@ -5,6 +5,7 @@ target_sources(stellwerk-ui PRIVATE
     trackplan/LayoutFileSettings.cpp trackplan/LayoutFileSettings.h
     trackplan/SignalShapes.cpp
     trackplan/TrackColors.cpp trackplan/TrackColors.h
+    trackplan/NameElision.cpp trackplan/NameElision.h
     trackplan/PageZoom.cpp trackplan/PageZoom.h
     trackplan/PaintBands.cpp trackplan/PaintBands.h
     trackplan/PaintThreads.cpp trackplan/PaintThreads.h

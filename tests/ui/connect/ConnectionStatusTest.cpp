@@ -2,14 +2,17 @@
 
 #include "EmbeddedStationSupport.h"
 #include "shell/MainWindow.h"
+#include "shell/PassingMessage.h"
 #include "shell/Translations.h"
 #include "support/StationTestSupport.h"
 
 #include <QCoreApplication>
 #include <QEvent>
 #include <QLabel>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QStatusBar>
+#include <QTest>
 #include <gtest/gtest.h>
 
 using namespace stellwerk;
@@ -135,7 +138,7 @@ TEST_F(ConnectionStatusTest, MainWindowShowsWhatToTryBesideAFailureInsteadOfRepe
     station.connectTo(QStringLiteral("http://cs2"));
     ASSERT_EQ(problems.count(), 1);
     EXPECT_EQ(
-        window.statusBar()->currentMessage(),
+        window.passingMessage()->text(),
         QStringLiteral("Try: correct the address in Station → Connect…, for example udp://192.168.2.5."));
 }
 
@@ -145,9 +148,51 @@ TEST_F(ConnectionStatusTest, MainWindowShowsProblemsWhileConnectingWithWhatToTry
     QSignalSpy problems(&station, &connection::StationConnection::problem);
     station.connectTo(QStringLiteral("tcp://127.0.0.1:%1").arg(test::closedTcpPort()));
     ASSERT_TRUE(problems.wait(test::ReadyMs));
-    const QString shown = window.statusBar()->currentMessage();
+    const QString shown = window.passingMessage()->text();
     EXPECT_TRUE(
         shown.startsWith(problems.last().at(0).toString() + QStringLiteral(" — Try: check that the station")))
         << shown.toStdString();
     EXPECT_TRUE(shown.contains(QStringLiteral("trying again")));
+}
+
+// The waits double from a quarter of a second: from one second on they are said in seconds ("1 s",
+// "2 s"), never "1000 ms".
+TEST_F(ConnectionStatusTest, MainWindowSaysLongerWaitsInSeconds) {
+    MainWindow window(translations);
+    window.setConnection(&station);
+    QSignalSpy problems(&station, &connection::StationConnection::problem);
+    station.connectTo(QStringLiteral("tcp://127.0.0.1:%1").arg(test::closedTcpPort()));
+    const QRegularExpression inSeconds(QStringLiteral("trying again in \\d+ s "));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return window.passingMessage()->text().contains(inSeconds); }, 3000))
+        << window.passingMessage()->text().toStdString();
+    for (const QList<QVariant>& problem : problems)
+        EXPECT_FALSE(problem.at(0).toString().contains(QRegularExpression(QStringLiteral("\\d{4,} ms"))))
+            << problem.at(0).toString().toStdString();
+}
+
+// On a laptop's 1366 pixels, in both languages, the message about a station that cannot be reached and
+// what to try is long: it takes a second line beside the station's line rather than being cut off.
+TEST_F(ConnectionStatusTest, MainWindowShowsAWholeLongProblemBesideTheStationLine) {
+    for (const Language language : {Language::English, Language::German}) {
+        choose(language);
+        MainWindow window(translations);
+        window.setConnection(&station);
+        window.resize(1366, 768);
+        window.show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+        QSignalSpy problems(&station, &connection::StationConnection::problem);
+        station.connectTo(QStringLiteral("tcp://127.0.0.1:%1").arg(test::closedTcpPort()));
+        ASSERT_TRUE(problems.wait(test::ReadyMs));
+        const PassingMessage* message = window.passingMessage();
+        ASSERT_TRUE(QTest::qWaitFor([&] { return message->isWhollyShown(); }, 1000))
+            << message->text().toStdString() << " is cut at " << message->width() << " px";
+        EXPECT_GT(message->fontMetrics().horizontalAdvance(message->text()), message->width())
+            << "the message is longer than one line here";
+        const auto* line = window.findChild<QWidget*>(QStringLiteral("connectionStatus"));
+        EXPECT_LE(message->mapTo(&window, QPoint(message->width(), 0)).x(),
+                  line->mapTo(&window, QPoint()).x())
+            << "it stays left of the station's line";
+        EXPECT_LE(window.statusBar()->geometry().bottom(), window.height() - 1);
+        station.disconnectFromStation();
+    }
 }

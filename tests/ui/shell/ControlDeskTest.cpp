@@ -10,6 +10,7 @@
 #include "monitor/BusMonitorPanel.h"
 #include "monitor/FrameDecoderPanel.h"
 #include "shell/MainWindow.h"
+#include "shell/PassingMessage.h"
 #include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "shell/Workspace.h"
@@ -220,8 +221,8 @@ TEST_F(ControlDeskTest, AFailedConnectionSaysWhatToTry) {
     window.setConnection(&station);
     station.connectTo(QStringLiteral("tcp://"));
     ASSERT_EQ(station.state(), State::Failed);
-    EXPECT_TRUE(window.statusBar()->currentMessage().startsWith(QStringLiteral("Try: correct the address")))
-        << window.statusBar()->currentMessage().toStdString();
+    EXPECT_TRUE(window.passingMessage()->text().startsWith(QStringLiteral("Try: correct the address")))
+        << window.passingMessage()->text().toStdString();
 }
 
 TEST_F(ControlDeskTest, StartupProgressDescribesAFileWithoutAnnouncedSize) {

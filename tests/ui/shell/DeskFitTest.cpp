@@ -1,21 +1,32 @@
 // The first arrangement of the desk on a laptop (1366x768) and a full-HD screen (1920x1080), in English
-// and German: every panel shows its content without a sideways scroll bar, no visible text is cut off, the
-// keyboard shows its four columns, and a throttle added below the others is scrolled into sight.
+// and German: every panel shows its content without a sideways scroll bar, in every state of a session
+// (connected, after an edit, power off, station silent), no visible text is cut off, the keyboard shows
+// its four columns, the plan is large enough for its names, and a throttle added below the others is
+// scrolled into sight.
 
 #include "keyboard/TurnoutKey.h"
 #include "keyboard/TurnoutPanel.h"
+#include "locomotives/LocomotiveForm.h"
+#include "locomotives/LocomotivePanel.h"
 #include "shell/Workspace.h"
 #include "support/TrustTestSupport.h"
 #include "throttle/ThrottlePanel.h"
 #include "throttle/ThrottleWidget.h"
+#include "trackplan/TileTag.h"
+#include "trackplan/TrackPageView.h"
+#include "trackplan/TrackPlanPanel.h"
 
 #include <QAbstractButton>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QHash>
+#include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QStringList>
+#include <QTabWidget>
 #include <QTableView>
 #include <QToolBar>
 #include <QToolButton>
@@ -85,7 +96,10 @@ QStringList sidewaysScrolling(const QWidget* dock) {
     if (const QWidget* overview = dock->findChild<QWidget*>(QStringLiteral("layoutOverview")))
         for (const QTableView* table : overview->findChildren<QTableView*>())
             if (isShown(table) && table->horizontalScrollBar()->isVisible())
-                found << QStringLiteral("%1 scrolls sideways").arg(nameOf(table));
+                found << QStringLiteral("%1 scrolls sideways (%2 of %3 px)")
+                             .arg(nameOf(table))
+                             .arg(table->viewport()->width())
+                             .arg(table->horizontalHeader()->length());
     for (const QScrollArea* scroll : dock->findChildren<QScrollArea*>())
         if (isShown(scroll) && scroll->horizontalScrollBar()->isVisible())
             found << QStringLiteral("%1 scrolls sideways (%2 of %3 px)")
@@ -117,6 +131,26 @@ protected:
         QTest::qWait(100);
     }
 
+    // Every panel in front of its dock in turn: whose minimum width is more than its dock gives it, and
+    // which dock scrolls sideways.
+    QStringList widerThanTheirDocks(const QString& state) {
+        QStringList found;
+        for (QDockWidget* dock : window->workspace()->docks()) {
+            QWidget* panel = Workspace::panelOf(dock);
+            window->workspace()->showPanel(panel);
+            QTest::qWait(60);
+            const auto* scroll = qobject_cast<QScrollArea*>(dock->widget());
+            if (panel->minimumSizeHint().width() > scroll->viewport()->width())
+                found << QStringLiteral("%1: %2 needs %3 px, its dock gives %4")
+                             .arg(state, panel->objectName())
+                             .arg(panel->minimumSizeHint().width())
+                             .arg(scroll->viewport()->width());
+            for (const QString& problem : sidewaysScrolling(dock))
+                found << state + QStringLiteral(": ") + problem;
+        }
+        return found;
+    }
+
     // Every panel in front of its dock in turn: what needs a sideways scroll bar, what text is cut off.
     QStringList problems() {
         QStringList found;
@@ -143,6 +177,61 @@ protected:
 
 TEST_P(DeskFitTest, NoPanelScrollsSidewaysAndNoTextIsCutOff) {
     const QStringList found = problems();
+    EXPECT_TRUE(found.isEmpty()) << found.join(QLatin1Char('\n')).toStdString();
+}
+
+// Every page of the demo's plan, fitted into the room the first arrangement leaves it, is large enough for
+// the names of its contacts, turnouts, signals and routes, in a readable size; siblings, names that differ
+// only in their last word ("Block 1" … "Block 4", "Einfahrt 1" and "Einfahrt 2"), still differ where they
+// are shortened.
+TEST_P(DeskFitTest, ThePlanShowsItsNamesReadablyAndSiblingsDistinct) {
+    TrackPlanPanel* plan = window->trackPlan();
+    ASSERT_GE(plan->pageTabs()->count(), 3);
+    for (int page = 0; page < plan->pageTabs()->count(); ++page) {
+        plan->pageTabs()->setCurrentIndex(page);
+        QTest::qWait(30);
+        const TrackPageView* view = plan->pageView(page);
+        const std::string pageName = plan->pageTabs()->tabText(page).toStdString();
+        ASSERT_TRUE(plan->isFitted());
+        ASSERT_GE(view->tileSize(), TileTag::MinimumTile)
+            << "page " << pageName << " is drawn too small for names";
+        QHash<QString, QString> fileNameOf; // family and shown name → the name in the file
+        const model::LayoutPage& tiles = plan->layout()->pages().at(std::size_t(page));
+        for (int tile = 0; tile < int(tiles.tiles.size()); ++tile) {
+            const TileTag tag = view->tagOf(tile);
+            if (!tag.shown())
+                continue;
+            EXPECT_GE(tag.font().pixelSize(), TileTag::ReadablePixels);
+            const QString file = tiles.tiles.at(std::size_t(tile)).text.trimmed();
+            const QString shown = file.section(QLatin1Char(' '), 0, -2) + QStringLiteral(" | ") + tag.text();
+            EXPECT_EQ(fileNameOf.value(shown, file), file)
+                << "on " << pageName << " \"" << file.toStdString() << "\" and \""
+                << fileNameOf.value(shown).toStdString() << "\" both read \"" << tag.text().toStdString()
+                << "\"";
+            fileNameOf.insert(shown, file);
+        }
+        EXPECT_GE(fileNameOf.size(), 3) << "page " << pageName << " shows its names";
+    }
+}
+
+// No panel grows wider than its dock from its own text, in any state a session goes through: connected,
+// after an edit (the Locomotives panel's "12 locomotives, changed and not saved"), with the track power
+// off, and with the station silent (the keyboard's "… · positions not reported"). A panel's minimum width
+// fits its dock, and no dock scrolls sideways.
+TEST_P(DeskFitTest, NoPanelGrowsWiderThanItsDockInAnyState) {
+    QStringList found = widerThanTheirDocks(QStringLiteral("connected"));
+    LocomotivePanel* locomotives = window->locomotivePanel();
+    ASSERT_TRUE(locomotives->selectLocomotive(QStringLiteral("V 100 2023")));
+    locomotives->form()->nameEdit()->setText(QStringLiteral("V 100 2023 Museumslok"));
+    ASSERT_TRUE(locomotives->applyForm()) << locomotives->messageText().toStdString();
+    ASSERT_TRUE(locomotives->hasUnsavedEdits());
+    found << widerThanTheirDocks(QStringLiteral("after an edit"));
+    railway()->stop();
+    ASSERT_TRUE(powerBecomes(station::PowerState::Stopped));
+    found << widerThanTheirDocks(QStringLiteral("power off"));
+    server.stop();
+    ASSERT_TRUE(reported(false));
+    found << widerThanTheirDocks(QStringLiteral("station silent"));
     EXPECT_TRUE(found.isEmpty()) << found.join(QLatin1Char('\n')).toStdString();
 }
 

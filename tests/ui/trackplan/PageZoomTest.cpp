@@ -5,6 +5,8 @@
 
 #include "trackplan/TrackPageView.h"
 #include "trackplan/TrackPlanPanel.h"
+#include "trackplan/TrackTileLook.h"
+#include "trackplan/TrackTilePainter.h"
 
 #include <QScrollArea>
 #include <QTabWidget>
@@ -118,4 +120,36 @@ TEST_F(PageZoomTest, TheZoomStaysWhenTheLayoutIsOpenedAgain) {
     QTest::qWait(20);
     EXPECT_EQ(panel.tileSize(), 30);
     EXPECT_FALSE(panel.isFitted());
+}
+
+// The demo's Bw page ends its three tracks with "Lokschuppen 1/2/3", written beyond the last tile: a
+// fitted page shows all of every such text, and the page scrolls far enough to reach it at any zoom.
+TEST_F(PageZoomTest, AFittedPageShowsTheTextsThatRunBeyondTheirTiles) {
+    ASSERT_TRUE(panel.openFolder(demoLayout()));
+    for (const QSize size : {QSize(560, 380), QSize(900, 500), QSize(1300, 700)}) {
+        panel.resize(size);
+        for (int page = 0; page < panel.pageTabs()->count(); ++page) {
+            panel.pageTabs()->setCurrentIndex(page);
+            panel.fitToWindow();
+            QTest::qWait(20);
+            const TrackPageView* view = panel.pageView(page);
+            const QRect shown = shownPixels(page);
+            const auto& tiles = panel.layout()->pages().at(std::size_t(page)).tiles;
+            int texts = 0;
+            for (int tile = 0; tile < int(tiles.size()); ++tile) {
+                if (tiles.at(std::size_t(tile)).category != stellwerk::cs2config::TrackCategory::Text)
+                    continue;
+                ++texts;
+                const QRect text =
+                    TrackTilePainter::area(view->tileRect(tile), panel.lookOf({page, tile}), view->font())
+                        .toAlignedRect();
+                EXPECT_TRUE(shown.contains(text))
+                    << "\"" << tiles.at(std::size_t(tile)).text.toStdString() << "\" on page " << page
+                    << " at " << size.width() << "x" << size.height() << " is cut: " << text.left() << ".."
+                    << text.right() << " shown " << shown.left() << ".." << shown.right();
+                EXPECT_LE(text.right() + 1, view->width()) << "the page reaches the end of the text";
+            }
+            EXPECT_GT(texts, 0);
+        }
+    }
 }

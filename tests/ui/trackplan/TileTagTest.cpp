@@ -4,6 +4,7 @@
 #include "trackplan/TileTag.h"
 
 #include "model/TrackLayout.h"
+#include "trackplan/NameElision.h"
 #include "trackplan/TrackColors.h"
 #include "trackplan/TrackPageView.h"
 #include "trackplan/TrackPlanPanel.h"
@@ -62,10 +63,65 @@ TEST(TileTag, ARouteNameStaysUnderItsButton) {
     const TileTag tag(tile(Category::RouteButton, QStringLiteral("Einfahrt von Westen über Gleis 2")), Cell,
                       QApplication::font());
     ASSERT_TRUE(tag.shown());
-    EXPECT_TRUE(tag.text().endsWith(QStringLiteral("…"))) << "a long name is shortened to the tile";
+    EXPECT_TRUE(tag.text().contains(QStringLiteral("…"))) << "a long name is shortened to the tile";
+    EXPECT_TRUE(tag.text().endsWith(QStringLiteral("s 2"))) << "keeping what tells it from its siblings";
     EXPECT_LE(tag.rect().width(), Cell.width() + 2);
     EXPECT_EQ(tag.rect().bottom(), Cell.bottom());
     EXPECT_NEAR(tag.rect().center().x(), Cell.center().x(), 1);
+}
+
+// Siblings on a plan differ at their end: shortened to a tile, "Block 1" … "Block 4" must not all read
+// "Blo…", nor the two entry routes "Ein…".
+TEST(TileTag, ShortenedSiblingNamesStayDistinct) {
+    const QList<QStringList> families = {
+        {QStringLiteral("Block 1"), QStringLiteral("Block 2"), QStringLiteral("Block 3"),
+         QStringLiteral("Block 4")},
+        {QStringLiteral("Einfahrt 1"), QStringLiteral("Einfahrt 2")},
+        {QStringLiteral("Einfahrt Gleis 1"), QStringLiteral("Einfahrt Gleis 2")},
+        {QStringLiteral("Lokschuppen1"), QStringLiteral("Lokschuppen2")}};
+    for (const int tileSize : {TileTag::MinimumTile, 30, 40}) {
+        const QRect cell(0, 0, tileSize, tileSize);
+        const QFont font = TileTag::tagFont(QApplication::font(), tileSize);
+        for (const Category category : {Category::Feedback, Category::RouteButton}) {
+            for (const QStringList& family : families) {
+                QStringList shown;
+                for (const QString& name : family) {
+                    const TileTag tag(tile(category, name), cell, font);
+                    ASSERT_TRUE(tag.shown());
+                    EXPECT_LE(tag.rect().width(), tileSize) << name.toStdString() << " stays on its tile";
+                    EXPECT_TRUE(tag.text().endsWith(name.right(1)))
+                        << tag.text().toStdString() << " lost the end of " << name.toStdString();
+                    shown << tag.text();
+                }
+                shown.removeDuplicates();
+                EXPECT_EQ(shown.size(), family.size())
+                    << "at " << tileSize << " px: " << shown.join(QStringLiteral(", ")).toStdString();
+            }
+        }
+    }
+}
+
+TEST(NameElision, KeepsTheLastWordWithTheCharacterBeforeIt) {
+    const QFontMetrics metrics(QApplication::font());
+    const QString name = QStringLiteral("Einfahrt Gleis 1");
+    EXPECT_EQ(NameElision::shorten(name, metrics, 1000), name) << "a name that fits stays whole";
+    const int room = metrics.horizontalAdvance(QStringLiteral("Einf…s 1"));
+    const QString shortened = NameElision::shorten(name, metrics, room);
+    EXPECT_EQ(shortened, QStringLiteral("Einf…s 1"));
+    EXPECT_EQ(NameElision::shorten(name, metrics, metrics.horizontalAdvance(QStringLiteral("…s 1"))),
+              QStringLiteral("…s 1"));
+    const QString tiny = NameElision::shorten(name, metrics, metrics.horizontalAdvance(QStringLiteral("…1")));
+    EXPECT_EQ(tiny, QStringLiteral("…1")) << "too narrow for the word: as much of the end as fits";
+    EXPECT_EQ(NameElision::shorten(QStringLiteral("Bahnbetriebswerk"), metrics,
+                                   metrics.horizontalAdvance(QStringLiteral("Bahn…"))),
+              QStringLiteral("Bahn…"))
+        << "a single word without a number ends where the room ends";
+}
+
+TEST(TileTag, TagsAreDrawnInAReadableSize) {
+    for (const int tileSize : {TileTag::MinimumTile, 30, 40, 160})
+        EXPECT_GE(TileTag::tagFont(QApplication::font(), tileSize).pixelSize(), TileTag::ReadablePixels)
+            << tileSize << " px tiles";
 }
 
 TEST(TileTag, TheCorpusPlanShowsItsContactAndTurnoutNumbers) {
