@@ -235,7 +235,7 @@ void MainWindow::createStationMenu() {
     m_stationMenu->addAction(m_aftermath->bringBackInStepAction());
     m_stationMenu->addMenu(m_aftermath);
     connect(m_aftermath, &AftermathMenu::report, this,
-            [this](const QString& sentence) { statusBar()->showMessage(sentence, 8000); });
+            [this](const QString& sentence) { m_message->showMessage(sentence, 8000); });
 }
 
 void MainWindow::setConnection(connection::StationConnection* station) {
@@ -351,7 +351,7 @@ void MainWindow::createStatusBar() {
     m_corrections = new CorrectionNotice(this);
     statusBar()->addPermanentWidget(m_corrections);
     connect(m_corrections, &CorrectionNotice::corrected, this,
-            [this](const QString& sentence) { statusBar()->showMessage(sentence, 20000); });
+            [this](const QString& sentence) { m_message->showMessage(sentence, 20000); });
     for (QWidget* part : {static_cast<QWidget*>(m_stationStatus), static_cast<QWidget*>(m_startupProgress),
                           static_cast<QWidget*>(m_traffic), static_cast<QWidget*>(m_power)}) {
         part->setContentsMargins(8, 0, 8, 0); // room between the parts, as between a panel's lamps

@@ -5,12 +5,12 @@
 #include "aftertrouble/AftermathMenu.h"
 #include "aftertrouble/AftermathSettings.h"
 #include "aftertrouble/CorrectionNotice.h"
+#include "shell/PassingMessage.h"
 #include "support/TrustTestSupport.h"
 
 #include <QMenu>
 #include <QMenuBar>
 #include <QSignalSpy>
-#include <QStatusBar>
 
 namespace stellwerk::ui::test {
 namespace {
@@ -51,7 +51,7 @@ TEST_F(AfterTroubleOnTheDesk, AStalledStationEndsWhereTheDeskShowedItAndTheStatu
     EXPECT_TRUE(said.first().startsWith(QStringLiteral("BR 218"))) << said.first().toStdString();
     EXPECT_TRUE(said.first().contains(QStringLiteral("speed 20 %"))) << said.first().toStdString();
     EXPECT_TRUE(said.first().endsWith(QStringLiteral("stopped."))) << said.first().toStdString();
-    EXPECT_EQ(window->statusBar()->currentMessage(), said.first());
+    EXPECT_EQ(window->passingMessage()->text(), said.first());
     EXPECT_TRUE(notice->text().contains(QStringLiteral("1 set back"))) << notice->text().toStdString();
     notice->dismiss();
     EXPECT_FALSE(notice->isVisible());
@@ -67,8 +67,8 @@ TEST_F(AfterTroubleOnTheDesk, BringingTheLayoutBackInStepFromTheStationMenu) {
     ASSERT_TRUE(QTest::qWaitFor([&] { return done.count() == 1; }, 3 * CommandMs));
     EXPECT_EQ(stationSpeed(Br218), 300) << "its confirmed speed, sent again";
     EXPECT_TRUE(
-        window->statusBar()->currentMessage().startsWith(QStringLiteral("The layout is back in step")))
-        << window->statusBar()->currentMessage().toStdString();
+        window->passingMessage()->text().startsWith(QStringLiteral("The layout is back in step")))
+        << window->passingMessage()->text().toStdString();
 }
 
 TEST_F(AfterTroubleOnTheDesk, TheStopChoiceIsRememberedAndStopsEveryLocomotiveWhenBroughtBackInStep) {
