@@ -10,16 +10,20 @@
 #include "trackplan/TrackPlanPanel.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QDir>
 #include <QFile>
+#include <QFileDialog>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMessageBox>
 #include <QSettings>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
-#include <QTextBrowser>
 #include <QTest>
+#include <QTextBrowser>
+#include <QTimer>
 #include <QToolBar>
 #include <algorithm>
 #include <filesystem>
@@ -125,6 +129,58 @@ TEST_F(FileAndHelpMenuTest, ExportWritesTheFolderRemembersItAndConfirms) {
     EXPECT_TRUE(done->isVisible());
     EXPECT_TRUE(done->text().contains(QDir::toNativeSeparators(folder))) << done->text().toStdString();
     done->accept();
+}
+
+namespace {
+
+// Answers the folder dialog that opens next: types `typed` into its name field and accepts. A message box
+// this brings up is closed, and the dialog too if it stays open, so that a refusal fails the test instead
+// of waiting for a person.
+void answerFolderDialog(const QString& typed) {
+    QTimer::singleShot(0, [typed] {
+        auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+        if (!dialog) {
+            ADD_FAILURE() << "no folder dialog";
+            return;
+        }
+        auto* boxes = new QTimer(dialog);
+        QObject::connect(boxes, &QTimer::timeout, [] {
+            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget()))
+                box->reject();
+        });
+        boxes->start(20);
+        dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"))->setText(typed);
+        static_cast<QDialog*>(dialog)->accept(); // QFileDialog's own accept() is protected
+        if (dialog->isVisible())
+            dialog->reject();
+    });
+}
+
+} // namespace
+
+// Issue 32: Qt's folder dialog refused a folder typed in that did not exist yet ("Directory not found").
+TEST_F(FileAndHelpMenuTest, ExportIntoAFolderTypedInThatIsNotThereYetMakesIt) {
+    QTemporaryDir target;
+    ASSERT_TRUE(target.isValid());
+    LayoutFileSettings::rememberExportFolder(target.path());
+    ASSERT_TRUE(window->layoutFiles()->open(gbertFolder()));
+    const QString typed = target.filePath(QStringLiteral("Anlage 2027/Export"));
+    answerFolderDialog(typed);
+    window->layoutFiles()->exportAction()->trigger();
+    EXPECT_TRUE(QFile::exists(typed + QStringLiteral("/config/gleisbild.cs2")));
+    EXPECT_EQ(LayoutFileSettings::exportFolder(), QDir::cleanPath(typed));
+    if (auto* done = window->findChild<QMessageBox*>(QStringLiteral("layoutExportedBox")))
+        done->accept();
+}
+
+TEST_F(FileAndHelpMenuTest, OpenTakesASingleTrackPlanPage) {
+    answerFolderDialog(gbertFolder() + QStringLiteral("/config/gleisbilder/karben.cs2"));
+    window->layoutFiles()->openAction()->trigger();
+    ASSERT_NE(window->trackPlan()->layout(), nullptr);
+    ASSERT_EQ(window->trackPlan()->pageTabs()->count(), 1);
+    EXPECT_EQ(window->trackPlan()->pageTabs()->tabText(0), QStringLiteral("karben"));
+    EXPECT_EQ(LayoutFileSettings::recent().value(0),
+              gbertFolder() + QStringLiteral("/config/gleisbilder/karben.cs2"));
 }
 
 TEST_F(FileAndHelpMenuTest, AFailedExportConfirmsNothingAndForgetsNothing) {
