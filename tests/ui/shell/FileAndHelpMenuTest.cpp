@@ -9,6 +9,7 @@
 #include "trackplan/LayoutFileSettings.h"
 #include "trackplan/TrackPlanPanel.h"
 
+#include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
 #include <QDir>
@@ -17,7 +18,9 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QMessageBox>
+#include <QScreen>
 #include <QSettings>
+#include <QShortcut>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -221,6 +224,85 @@ TEST_F(FileAndHelpMenuTest, TheKeyListNamesTheMenuCommandsAndThePanelKeys) {
     EXPECT_TRUE(german.contains(KeyUse{QStringLiteral("Strg+E"), QStringLiteral("Gleisbild exportieren")}));
     EXPECT_TRUE(std::any_of(german.begin(), german.end(),
                             [](const KeyUse& k) { return k.keys == QStringLiteral("Leertaste"); }));
+}
+
+namespace {
+
+// Whether a row's keys ("Ctrl+O", "Up, Down, +, −", "Alt+1 … Alt+9") name `key`.
+bool covers(const QString& keys, const QString& key) {
+    for (const QString& part : keys.split(QStringLiteral(", "))) {
+        const QStringList range = part.split(QStringLiteral(" … "));
+        if (range.size() == 1 && part == key)
+            return true;
+        if (range.size() == 2 && key.size() == range[0].size() && key.chopped(1) == range[0].chopped(1) &&
+            key.back() >= range[0].back() && key.back() <= range[1].back())
+            return true;
+    }
+    return false;
+}
+
+bool listed(const QList<KeyUse>& keys, const QString& key) {
+    return std::any_of(keys.begin(), keys.end(), [&](const KeyUse& use) { return covers(use.keys, key); });
+}
+
+} // namespace
+
+// Issue 32: Ctrl+S, Delete, the keyboard's Page Up/Down, F12 and the bus monitor's keys were missing, and
+// nothing said that Escape on the bare window stops the layout.
+TEST_F(FileAndHelpMenuTest, TheKeyListHasEveryShortcutTheWindowRegisters) {
+    const QList<KeyUse> keys = KeyList::of(*window);
+    int checked = 0;
+    for (const QAction* action : window->findChildren<QAction*>())
+        for (const QKeySequence& key : action->shortcuts()) {
+            const QString text = key.toString(QKeySequence::NativeText);
+            EXPECT_TRUE(listed(keys, text)) << text.toStdString() << " of " << action->text().toStdString();
+            ++checked;
+        }
+    for (const QShortcut* shortcut : window->findChildren<QShortcut*>()) {
+        const QString text = shortcut->key().toString(QKeySequence::NativeText);
+        EXPECT_TRUE(listed(keys, text))
+            << text.toStdString() << " of " << shortcut->parent()->objectName().toStdString();
+        ++checked;
+    }
+    const auto* monitor = window->findChild<QWidget*>(QStringLiteral("busMonitorPanel"));
+    ASSERT_NE(monitor, nullptr);
+    for (const QAbstractButton* button : monitor->findChildren<QAbstractButton*>())
+        if (const QKeySequence key = QKeySequence::mnemonic(button->text()); !key.isEmpty()) {
+            EXPECT_TRUE(listed(keys, key.toString(QKeySequence::NativeText))) << button->text().toStdString();
+            ++checked;
+        }
+    EXPECT_GT(checked, 20);
+    for (const char* key : {"Ctrl+S", "Del", "PgUp", "F12", "Alt+P", "Alt+9"})
+        EXPECT_TRUE(listed(keys, QString::fromLatin1(key))) << key;
+}
+
+TEST_F(FileAndHelpMenuTest, TheKeyListSaysPlainlyThatEscapeOnTheBareWindowStopsTheLayout) {
+    const QList<KeyUse> keys = KeyList::of(*window);
+    const auto escape =
+        std::find_if(keys.begin(), keys.end(), [](const KeyUse& k) { return k.keys == "Esc"; });
+    ASSERT_NE(escape, keys.end());
+    EXPECT_EQ(escape->use,
+              QStringLiteral(
+                  "On the bare window (nothing open on top): STOP, track power off for the whole layout"));
+    ASSERT_NE(escape + 1, keys.end());
+    EXPECT_EQ((escape + 1)->keys, QStringLiteral("Esc"));
+    EXPECT_EQ((escape + 1)->use, QStringLiteral("In a dialog, menu or popup: closes it, and nothing else"));
+    const auto extra =
+        std::find_if(keys.begin(), keys.end(), [](const KeyUse& k) { return k.keys == "F12"; });
+    ASSERT_NE(extra, keys.end());
+    EXPECT_TRUE(extra->use.startsWith(QStringLiteral("STOP"))) << extra->use.toStdString();
+    EXPECT_LT(escape - keys.begin(), 3) << "the STOP keys come first";
+}
+
+TEST_F(FileAndHelpMenuTest, TheUserGuideOpensAtAReadableSize) {
+    EXPECT_EQ(GuideBrowser::readableSize(QSize(1366, 728)), QSize(911, 650));
+    EXPECT_EQ(GuideBrowser::readableSize(QSize(1920, 1050)), QSize(1280, 700));
+    EXPECT_EQ(GuideBrowser::readableSize(QSize(800, 600)), QSize(800, 600)) << "never larger than the screen";
+    GuideBrowser guide(GuideBrowser::startPage(), window.get());
+    const QSize available = window->screen()->availableGeometry().size();
+    EXPECT_EQ(guide.size(), GuideBrowser::readableSize(available));
+    EXPECT_GE(guide.width(), std::min(900, available.width()));
+    EXPECT_GE(guide.height(), std::min(650, available.height()));
 }
 
 TEST_F(FileAndHelpMenuTest, TheUserGuideOpensAtItsContentsAndFollowsLinks) {
