@@ -886,16 +886,6 @@
         <translation>Mit einer Zentrale verbinden</translation>
     </message>
     <message>
-        <source>Examples:
-udp://192.168.2.5 — a CS2 with its CAN-UDP gateway switched on
-tcp://192.168.2.5 — a CS3, or a CS2 over TCP
-can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
-        <translation>Beispiele:
-udp://192.168.2.5 — eine CS2 mit eingeschaltetem CAN-UDP-Gateway
-tcp://192.168.2.5 — eine CS3 oder eine CS2 über TCP
-can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
-    </message>
-    <message>
         <source>&amp;Connect</source>
         <translation>&amp;Verbinden</translation>
     </message>
@@ -974,6 +964,18 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>The further bus %1 is the station&apos;s own address.</source>
         <translation>Der weitere Bus %1 ist die Adresse der Zentrale selbst.</translation>
+    </message>
+    <message>
+        <source>Examples:
+udp://192.168.2.5 — a CS2 with its CAN-UDP gateway switched on
+tcp://192.168.2.5 — a CS3, or a CS2 over TCP
+tcp://127.0.0.1:15731?http=8080 — stellwerk-sim, its pictures on port 8080
+can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
+        <translation>Beispiele:
+udp://192.168.2.5 — eine CS2 mit eingeschaltetem CAN-UDP-Gateway
+tcp://192.168.2.5 — eine CS3 oder eine CS2 über TCP
+tcp://127.0.0.1:15731?http=8080 — stellwerk-sim, seine Lokbilder auf Port 8080
+can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     </message>
 </context>
 <context>
@@ -1693,10 +1695,6 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <translation>Leertaste</translation>
     </message>
     <message>
-        <source>STOP: track power off for the whole layout (also while a throttle has the keys)</source>
-        <translation>STOPP: Gleisspannung für die ganze Anlage aus (auch wenn ein Fahrpult die Tastatur hat)</translation>
-    </message>
-    <message>
         <source>Alt+1 … Alt+9</source>
         <translation>Alt+1 … Alt+9</translation>
     </message>
@@ -1711,10 +1709,6 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>On a throttle: faster, slower</source>
         <translation>Am Fahrpult: schneller, langsamer</translation>
-    </message>
-    <message>
-        <source>Page Up, Page Down</source>
-        <translation>Bild auf, Bild ab</translation>
     </message>
     <message>
         <source>On a throttle: much faster, much slower</source>
@@ -1745,12 +1739,40 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <translation>Am Fahrpult: diese Lok anhalten</translation>
     </message>
     <message>
-        <source>Escape</source>
-        <translation>Esc</translation>
+        <source>STOP: track power off for the whole layout, from anywhere (also while a throttle has the keys)</source>
+        <translation>STOPP: Gleisspannung für die ganze Anlage aus, von überall (auch wenn ein Fahrpult die Tastatur hat)</translation>
     </message>
     <message>
-        <source>Close a dialog without changing anything</source>
-        <translation>Einen Dialog schließen, ohne etwas zu ändern</translation>
+        <source>STOP, the extra STOP key (choose another under Station → Extra STOP key)</source>
+        <translation>STOPP, die zusätzliche STOPP-Taste (eine andere unter Zentrale → Zusätzliche STOPP-Taste wählen)</translation>
+    </message>
+    <message>
+        <source>Turnout keyboard: previous page, next page</source>
+        <translation>Keyboard: vorige Seite, nächste Seite</translation>
+    </message>
+    <message>
+        <source>Turnout keyboard: switch the key that has the focus</source>
+        <translation>Keyboard: die Taste mit dem Fokus schalten</translation>
+    </message>
+    <message>
+        <source>Locomotives: save the changes to a folder</source>
+        <translation>Loks: die Änderungen in einen Ordner speichern</translation>
+    </message>
+    <message>
+        <source>Locomotives: remove the selected locomotive</source>
+        <translation>Loks: die gewählte Lok entfernen</translation>
+    </message>
+    <message>
+        <source>Bus monitor: %1</source>
+        <translation>Busmonitor: %1</translation>
+    </message>
+    <message>
+        <source>On the bare window (nothing open on top): STOP, track power off for the whole layout</source>
+        <translation>Im Hauptfenster (nichts darüber geöffnet): STOPP, Gleisspannung für die ganze Anlage aus</translation>
+    </message>
+    <message>
+        <source>In a dialog, menu or popup: closes it, and nothing else</source>
+        <translation>In einem Dialog, Menü oder Popup: schließt es, sonst nichts</translation>
     </message>
 </context>
 <context>
@@ -1771,14 +1793,6 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <translation>Das Gleisbild wurde als CS2-Konfigurationsordner nach %1 geschrieben.</translation>
     </message>
     <message>
-        <source>Open a CS2 layout folder</source>
-        <translation>CS2-Gleisbildordner öffnen</translation>
-    </message>
-    <message>
-        <source>Export the layout into a folder</source>
-        <translation>Gleisbild in einen Ordner exportieren</translation>
-    </message>
-    <message>
         <source>No layouts opened yet</source>
         <translation>Noch keine Gleisbilder geöffnet</translation>
     </message>
@@ -1789,6 +1803,25 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Open &amp;recent layout</source>
         <translation>&amp;Zuletzt geöffnete Gleisbilder</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::LayoutFileDialog</name>
+    <message>
+        <source>Open a CS2 layout folder or track plan page</source>
+        <translation>CS2-Gleisbildordner oder Gleisbildseite öffnen</translation>
+    </message>
+    <message>
+        <source>CS2 track plan files (*.cs2)</source>
+        <translation>CS2-Gleisbilddateien (*.cs2)</translation>
+    </message>
+    <message>
+        <source>Export the layout into a folder</source>
+        <translation>Gleisbild in einen Ordner exportieren</translation>
+    </message>
+    <message>
+        <source>The folder %1 cannot be made here. Choose another place.</source>
+        <translation>Der Ordner %1 lässt sich hier nicht anlegen. Wählen Sie einen anderen Ort.</translation>
     </message>
 </context>
 <context>
@@ -2146,6 +2179,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>not known yet</source>
         <translation>noch nicht bekannt</translation>
     </message>
+    <message>
+        <source>Looked for at %1</source>
+        <translation>Gesucht unter %1</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::LocomotiveTableModel</name>
@@ -2416,6 +2453,33 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Track power: not reported</source>
         <translation>Gleisspannung: nicht gemeldet</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::ProblemBar</name>
+    <message>
+        <source>Show all</source>
+        <translation>Alles zeigen</translation>
+    </message>
+    <message>
+        <source>Fold</source>
+        <translation>Einklappen</translation>
+    </message>
+    <message>
+        <source>Show the whole message</source>
+        <translation>Die ganze Meldung zeigen</translation>
+    </message>
+    <message>
+        <source>Show only the first line</source>
+        <translation>Nur die erste Zeile zeigen</translation>
+    </message>
+    <message>
+        <source>Dismiss this message</source>
+        <translation>Diese Meldung schließen</translation>
+    </message>
+    <message>
+        <source>Dismiss</source>
+        <translation>Schließen</translation>
     </message>
 </context>
 <context>
@@ -3174,6 +3238,25 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Locomotive on it: %1</source>
         <translation>Lok darauf: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 is missing: the %n page file(s) found in gleisbilder/ are shown in the order of their names. Export the layout to write a new gleisbild.cs2 for them.</source>
+        <translation>
+            <numerusform>%1 fehlt: die %n Seitendatei aus gleisbilder/ wird gezeigt. Exportieren Sie das Gleisbild, um eine neue gleisbild.cs2 für sie zu schreiben.</numerusform>
+            <numerusform>%1 fehlt: die %n Seitendateien aus gleisbilder/ werden in der Reihenfolge ihrer Namen gezeigt. Exportieren Sie das Gleisbild, um eine neue gleisbild.cs2 für sie zu schreiben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>This page has nothing to show: its name cannot be a file name, so no file was looked for.</source>
+        <translation>Diese Seite zeigt nichts: ihr Name kann kein Dateiname sein, darum wurde keine Datei gesucht.</translation>
+    </message>
+    <message>
+        <source>This page has nothing to show: its file %1 is missing.</source>
+        <translation>Diese Seite zeigt nichts: ihre Datei %1 fehlt.</translation>
+    </message>
+    <message>
+        <source>This page has nothing to show: its file %1 could not be read.</source>
+        <translation>Diese Seite zeigt nichts: ihre Datei %1 ließ sich nicht lesen.</translation>
     </message>
 </context>
 <context>

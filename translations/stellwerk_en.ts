@@ -886,13 +886,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Examples:
-udp://192.168.2.5 — a CS2 with its CAN-UDP gateway switched on
-tcp://192.168.2.5 — a CS3, or a CS2 over TCP
-can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>&amp;Connect</source>
         <translation type="unfinished"></translation>
     </message>
@@ -970,6 +963,14 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>The further bus %1 is the station&apos;s own address.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Examples:
+udp://192.168.2.5 — a CS2 with its CAN-UDP gateway switched on
+tcp://192.168.2.5 — a CS3, or a CS2 over TCP
+tcp://127.0.0.1:15731?http=8080 — stellwerk-sim, its pictures on port 8080
+can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1690,10 +1691,6 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>STOP: track power off for the whole layout (also while a throttle has the keys)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Alt+1 … Alt+9</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1707,10 +1704,6 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>On a throttle: faster, slower</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Page Up, Page Down</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1742,11 +1735,39 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Escape</source>
+        <source>STOP: track power off for the whole layout, from anywhere (also while a throttle has the keys)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Close a dialog without changing anything</source>
+        <source>STOP, the extra STOP key (choose another under Station → Extra STOP key)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turnout keyboard: previous page, next page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turnout keyboard: switch the key that has the focus</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Locomotives: save the changes to a folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Locomotives: remove the selected locomotive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bus monitor: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On the bare window (nothing open on top): STOP, track power off for the whole layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In a dialog, menu or popup: closes it, and nothing else</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1768,14 +1789,6 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Open a CS2 layout folder</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Export the layout into a folder</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>No layouts opened yet</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1785,6 +1798,25 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Open &amp;recent layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::LayoutFileDialog</name>
+    <message>
+        <source>Open a CS2 layout folder or track plan page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CS2 track plan files (*.cs2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the layout into a folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The folder %1 cannot be made here. Choose another place.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2143,6 +2175,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>not known yet</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Looked for at %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::LocomotiveTableModel</name>
@@ -2412,6 +2448,33 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Track power: not reported</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::ProblemBar</name>
+    <message>
+        <source>Show all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the whole message</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show only the first line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dismiss this message</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dismiss</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3170,6 +3233,25 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Locomotive on it: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 is missing: the %n page file(s) found in gleisbilder/ are shown in the order of their names. Export the layout to write a new gleisbild.cs2 for them.</source>
+        <translation>
+            <numerusform>%1 is missing: the %n page file found in gleisbilder/ is shown. Export the layout to write a new gleisbild.cs2 for it.</numerusform>
+            <numerusform>%1 is missing: the %n page files found in gleisbilder/ are shown in the order of their names. Export the layout to write a new gleisbild.cs2 for them.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>This page has nothing to show: its name cannot be a file name, so no file was looked for.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This page has nothing to show: its file %1 is missing.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This page has nothing to show: its file %1 could not be read.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -60,6 +60,8 @@ bool checkFolder(const std::filesystem::path& folder, std::ostream& out) {
         return false;
     }
     bool usable = true;
+    if (content.extent == LayoutFolder::Extent::PagesOnly) // the index is missing: what was done instead
+        out << content.layout.diagnostics.formatAll();
     for (const std::string& name : LayoutFolder::presentFiles(content))
         usable = checkFile(content.configDirectory / std::u8string(name.begin(), name.end()), out) && usable;
     for (const cs2config::LayoutFinding& finding : content.findings)

@@ -156,6 +156,18 @@ void plugInHandhelds(const Simulator& simulator) {
         simulator.orcDevices->plugIn();
 }
 
+// Stellwerk asks a station's web server for the pictures on port 80 unless the address names another.
+void tellStationAddress(const Simulator& simulator, const simapp::SimOptions& options) {
+    if (simulator.server->tcpPort() == 0)
+        return;
+    const QHostAddress listen = options.server.listenAddress;
+    const QString host = listen == QHostAddress::Any || listen == QHostAddress::AnyIPv4
+                             ? QStringLiteral("127.0.0.1")
+                             : listen.toString();
+    out() << "station address for Stellwerk (with the pictures): tcp://" << host << ':'
+          << simulator.server->tcpPort() << "?http=" << simulator.http->port() << Qt::endl;
+}
+
 bool start(Simulator& simulator, const simapp::SimOptions& options, sim::StationLayout layout) {
     sim::SimulatedStation::Options stationOptions;
     stationOptions.gleisbox = options.gleisbox;
@@ -186,6 +198,7 @@ bool start(Simulator& simulator, const simapp::SimOptions& options, sim::Station
         }
         out() << "listening: http://" << options.server.listenAddress.toString() << ':'
               << simulator.http->port() << "/config/" << Qt::endl;
+        tellStationAddress(simulator, options);
     }
     if (options.trains) {
         sim::TrainMovement::Options movement;

@@ -67,13 +67,22 @@ Expected<CanFrame, std::string> parseId(std::string_view text) {
     return frame;
 }
 
+// Bytes are missing after `given` of them. A DLC above 8 is the mistake then, not the bytes: no count
+// of bytes would have made such a frame right.
+std::string missingBytes(const CanFrame& frame, std::size_t given) {
+    if (frame.dlc > 8)
+        return "DLC " + std::to_string(frame.dlc) + " is above 8: a CAN frame has at most 8 data bytes (" +
+               std::to_string(given) + " given)";
+    return "DLC " + std::to_string(frame.dlc) + " announces " + std::to_string(frame.size()) +
+           " data bytes, only " + std::to_string(given) + " given";
+}
+
 // Fills frame.data from byte tokens, checking them against the DLC.
 std::optional<std::string> fillData(CanFrame& frame, const Tokens& tokens, std::size_t first) {
     const std::size_t count = frame.size();
     for (std::size_t i = 0; i < count; ++i) {
         if (first + i >= tokens.size())
-            return "DLC " + std::to_string(frame.dlc) + " announces " + std::to_string(count) +
-                   " data bytes, only " + std::to_string(i) + " given";
+            return missingBytes(frame, i);
         auto token = tokens[first + i];
         if (const auto paren = token.find('('); paren != std::string_view::npos && paren > 0)
             token = token.substr(0, paren); // can-monitor shows padding as "7b(00)"
@@ -81,9 +90,7 @@ std::optional<std::string> fillData(CanFrame& frame, const Tokens& tokens, std::
         if (!byte && token.size() == 2)
             return "data byte '" + std::string(tokens[first + i]) + "' is not two hex digits";
         if (!byte)
-            return "DLC " + std::to_string(frame.dlc) + " announces " + std::to_string(count) +
-                   " data bytes, only " + std::to_string(i) + " given before '" +
-                   std::string(tokens[first + i]) + "'";
+            return missingBytes(frame, i) + " before '" + std::string(tokens[first + i]) + "'";
         frame.data[i] = *byte;
     }
     if (first + count < tokens.size() && byteValue(tokens[first + count]))

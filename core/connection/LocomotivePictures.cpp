@@ -95,6 +95,7 @@ void LocomotivePictures::look(const QString& fileName, Entry& entry) {
         entry.status = Status::Missing;
         entry.reason = Reason::NoSource;
         entry.problem = QStringLiteral("no icons folder has %1 and no station to ask").arg(fileName);
+        entry.source = folder_.isEmpty() ? QString() : QDir(folder_).filePath(fileName);
         return;
     }
     entry = {Status::Loading, Reason::None, {}, {}, {}, {}};
@@ -229,6 +230,11 @@ LocomotivePictures::Reason LocomotivePictures::reason(const QString& icon) const
 QString LocomotivePictures::source(const QString& icon) const {
     const Entry* entry = entryFor(icon);
     return entry && entry->status == Status::Present ? entry->source : QString();
+}
+
+QString LocomotivePictures::lookedAt(const QString& icon) const {
+    const Entry* entry = entryFor(icon);
+    return entry ? entry->source : QString();
 }
 
 } // namespace stellwerk::connection

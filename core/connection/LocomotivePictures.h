@@ -57,6 +57,9 @@ public:
     Reason reason(const QString& icon) const;
     // Where the picture came from ("http://.../icons/BR%2086.png", a file path), when present.
     QString source(const QString& icon) const;
+    // Where the picture was looked for last, found or not: the address asked ("http://127.0.0.1:8080/
+    // icons/BR%2086.png") or the file read; empty while nothing was asked.
+    QString lookedAt(const QString& icon) const;
 
     // The station is back: pictures whose fetch failed are asked for again when next wanted.
     void retryFailed();

@@ -1,11 +1,10 @@
 #include "connection/StationConnection.h"
 
+#include "connection/StationAddress.h"
 #include "connection/StationLink.h"
 #include "cs2config/ConfigStreamKeys.h"
 #include "transport/TransportAddress.h"
 #include "transport/TransportFactory.h"
-
-#include <QUrl>
 
 namespace stellwerk::connection {
 
@@ -27,21 +26,6 @@ LoadingStep loadingStep(station::StartupSequence::Step step) {
         break;
     }
     return LoadingStep::ReadingStates;
-}
-
-// A CS2 or CS3 reached over the network serves its files and pictures on port 80 of the same host.
-QString webAddressOf(const transport::TransportSettings& settings) {
-    QString host;
-    if (const auto* udp = std::get_if<transport::UdpSettings>(&settings))
-        host = udp->host;
-    else if (const auto* tcp = std::get_if<transport::TcpSettings>(&settings))
-        host = tcp->host;
-    if (host.isEmpty())
-        return {};
-    QUrl url;
-    url.setScheme(QStringLiteral("http"));
-    url.setHost(host);
-    return url.isValid() ? url.toString() : QString();
 }
 
 } // namespace
@@ -117,13 +101,16 @@ Expected<std::unique_ptr<transport::Transport>, QString> StationConnection::stat
         link_->local = std::move(local);
         return transport::createTransport(address);
     }
-    const auto settings = transport::parseTransportUrl(address_);
+    const auto split = StationAddress::split(address_);
+    const auto settings = split ? transport::parseTransportUrl(split->transport)
+                                : Expected<transport::TransportSettings, QString>(
+                                      QStringLiteral("'%1': %2").arg(address_, split.error()));
     if (!settings) {
         endpoint_ = StationEndpoint::unusable(address_);
         return QString(settings.error());
     }
     endpoint_ = StationEndpoint::of(settings.value());
-    pictures_->setStation(webAddressOf(settings.value()));
+    pictures_->setStation(StationAddress::webServerOf(address_));
     return transport::createTransport(settings.value());
 }
 

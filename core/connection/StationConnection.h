@@ -152,8 +152,9 @@ public:
     // What the transport of the current connection counted (frames in and out, ...); zeros while there is
     // none.
     transport::TransportCounters transportCounters() const;
-    // The station's web server ("http://192.168.2.5"; the embedded station's own port), empty when the
-    // station is reached over CAN or there is none.
+    // The station's web server ("http://192.168.2.5", port 80 as on a CS2; the port of the address's
+    // `?http=` option; the embedded station's own port), empty when the station is reached over CAN or
+    // there is none.
     QString webAddress() const { return pictures_->station(); }
     // The locomotives' pictures from that web server (and the open layout's icons folder).
     LocomotivePictures& pictures() const { return *pictures_; }

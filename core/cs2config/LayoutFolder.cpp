@@ -1,6 +1,7 @@
 #include "cs2config/LayoutFolder.h"
 
 #include "cs2config/ConfigFile.h"
+#include "cs2config/ConfigKind.h"
 #include "cs2config/ConfigStreamKeys.h"
 
 #include <algorithm>
@@ -15,6 +16,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::string_view indexName = "gleisbild.cs2";
+constexpr std::string_view pageFolderName = "gleisbilder";
 constexpr std::string_view accessoryName = "magnetartikel.cs2";
 // What a CS2 keeps beside its track plan and reads back.
 constexpr std::string_view companions[] = {"magnetartikel.cs2", "lokomotive.cs2", "fahrstrassen.cs2",
@@ -90,39 +92,82 @@ fs::path LayoutFolder::configDirectoryOf(const fs::path& folder) {
     std::error_code error;
     if (fs::is_regular_file(folder / indexName, error))
         return folder;
-    return folder / "config";
+    const fs::path config = folder / "config";
+    if (fs::is_regular_file(config / indexName, error) || !TrackLayout::pageFiles(config).empty())
+        return config;
+    if (!TrackLayout::pageFiles(folder).empty())
+        return folder;
+    if (folder.filename() == pageFolderName && !TrackLayout::pageFiles(folder.parent_path()).empty())
+        return folder.parent_path();
+    return config;
 }
 
 std::filesystem::path LayoutFolder::iconsDirectoryOf(const std::filesystem::path& configDirectory) {
     return (configDirectory / ".." / "icons").lexically_normal();
 }
 
-LayoutFolder::Content LayoutFolder::open(const fs::path& folder) {
-    Content content;
+LayoutFolder::Content LayoutFolder::open(const fs::path& path) {
     std::error_code error;
-    if (!fs::is_directory(folder, error)) {
-        content.problem = "the folder " + folder.string() + " does not exist";
+    if (fs::is_regular_file(path, error))
+        return path.filename() == indexName ? open(path.parent_path()) : openPageFile(path);
+    Content content;
+    if (!fs::is_directory(path, error)) {
+        content.problem = "the folder " + path.string() + " does not exist";
         return content;
     }
-    content.configDirectory = configDirectoryOf(folder);
+    content.configDirectory = configDirectoryOf(path);
     const fs::path index = content.configDirectory / indexName;
-    if (!fs::is_regular_file(index, error)) {
-        content.problem = "there is no track plan (config/gleisbild.cs2) in " + folder.string();
+    if (fs::is_regular_file(index, error)) {
+        content.layout = TrackLayout::load(index);
+    } else if (!TrackLayout::pageFiles(content.configDirectory).empty()) {
+        content.extent = Extent::PagesOnly;
+        content.layout = TrackLayout::loadPages(content.configDirectory);
+    } else {
+        content.problem =
+            "there is no track plan (config/gleisbild.cs2, or pages in config/gleisbilder/) in " +
+            path.string();
         return content;
     }
-    content.layout = TrackLayout::load(index);
     if (content.layout.diagnostics.hasErrors() && content.layout.pages.empty()) {
         content.problem = content.layout.diagnostics.formatAll();
         return content;
     }
-    content.accessories = readAccessories(content.configDirectory);
-    content.findings =
-        LayoutCheck(content.layout, content.accessories ? &*content.accessories : nullptr).run();
+    checkAgainstAccessories(content);
     return content;
 }
 
+LayoutFolder::Content LayoutFolder::openPageFile(const fs::path& file) {
+    Content content;
+    content.extent = Extent::SinglePage;
+    content.layout = TrackLayout::loadPageFile(file);
+    content.configDirectory = content.layout.directory;
+    const TrackLayoutPage& page = content.layout.pages.front();
+    if (!page.loaded) {
+        content.problem = content.layout.diagnostics.formatAll();
+        return content;
+    }
+    Diagnostics kindNotes; // the page's own diagnostics have the header's warnings already
+    const ConfigKind kind = recogniseConfigKind(page.page.document, file.filename().string(), kindNotes);
+    if (kind != ConfigKind::TrackPage) {
+        content.problem =
+            file.string() + " is not a page of a track plan (it holds " + std::string(kindName(kind)) + ")";
+        return content;
+    }
+    checkAgainstAccessories(content);
+    return content;
+}
+
+// The names of the articles from magnetartikel.cs2 beside the plan, and what LayoutCheck finds.
+void LayoutFolder::checkAgainstAccessories(Content& content) {
+    content.accessories = readAccessories(content.configDirectory);
+    content.findings =
+        LayoutCheck(content.layout, content.accessories ? &*content.accessories : nullptr).run();
+}
+
 std::vector<std::string> LayoutFolder::presentFiles(const Content& content) {
-    std::vector<std::string> names{std::string{indexName}};
+    std::vector<std::string> names;
+    if (content.extent == Extent::Folder)
+        names.emplace_back(indexName);
     for (const TrackLayoutPage& page : content.layout.pages)
         if (!page.file.empty() && !page.missing &&
             std::find(names.begin(), names.end(), page.diagnostics.fileName()) == names.end())

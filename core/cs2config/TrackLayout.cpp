@@ -3,6 +3,7 @@
 #include "cs2config/ConfigKind.h"
 #include "cs2config/Text.h"
 
+#include <algorithm>
 #include <fstream>
 #include <system_error>
 
@@ -57,6 +58,24 @@ void noteKind(const Document& document, Diagnostics& diagnostics) {
     recogniseConfigKind(document, diagnostics.fileName(), diagnostics);
 }
 
+// Reads `page.file` into `page`; a file that cannot be read is reported in the index's diagnostics.
+TrackLayoutPage readPage(TrackLayoutPage page, const TrackPageEntry& entry, Diagnostics& indexDiagnostics) {
+    const FileContent content = readFile(page.file);
+    if (!content.bytes) {
+        page.missing = content.problem == missingProblem;
+        indexDiagnostics.warning(entry.line(),
+                                 "page file " + quoteForMessage(displayName(entry.name), 80) + " of page " +
+                                     std::to_string(entry.id) + " " + content.problem,
+                                 "the page is left empty");
+        return page;
+    }
+    const Document document = Document::parse(*content.bytes, page.diagnostics);
+    noteKind(document, page.diagnostics);
+    page.page = TrackPage::read(document, page.diagnostics);
+    page.loaded = true;
+    return page;
+}
+
 TrackLayoutPage loadPage(const std::filesystem::path& directory, const TrackPageEntry& entry,
                          Diagnostics& indexDiagnostics) {
     TrackLayoutPage page;
@@ -72,20 +91,52 @@ TrackLayoutPage loadPage(const std::filesystem::path& directory, const TrackPage
         return page;
     }
     page.file = *file;
-    const FileContent content = readFile(*file);
-    if (!content.bytes) {
-        page.missing = content.problem == missingProblem;
-        indexDiagnostics.warning(entry.line(),
-                                 "page file " + quoteForMessage(displayName(entry.name), 80) + " of page " +
-                                     std::to_string(entry.id) + " " + content.problem,
-                                 "the page is left empty");
-        return page;
+    return readPage(std::move(page), entry, indexDiagnostics);
+}
+
+// The file's name without ".cs2", as the page's name in an index made up for it.
+std::string pageNameOf(const std::filesystem::path& file) {
+    const std::u8string stem = file.stem().u8string();
+    return std::string(stem.begin(), stem.end());
+}
+
+// An index listing `names` as pages 0, 1, 2...: written like a new one when the layout is exported.
+TrackPlan madeUpIndex(const std::vector<std::string>& names) {
+    TrackPlan plan;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        plan.pages.push_back({std::int64_t(i), names[i], {}});
+    return plan;
+}
+
+bool isDigit(char c) {
+    return c >= '0' && c <= '9';
+}
+
+// "2 - Bottom" before "10 - Hafen": runs of digits compare by their value, everything else bytewise.
+bool inNameOrder(std::string_view a, std::string_view b) {
+    std::size_t i = 0, j = 0;
+    while (i < a.size() && j < b.size()) {
+        if (isDigit(a[i]) && isDigit(b[j])) {
+            const std::size_t startA = i, startB = j;
+            while (i < a.size() && isDigit(a[i]))
+                ++i;
+            while (j < b.size() && isDigit(b[j]))
+                ++j;
+            std::string_view numberA = a.substr(startA, i - startA), numberB = b.substr(startB, j - startB);
+            numberA.remove_prefix(std::min(numberA.find_first_not_of('0'), numberA.size()));
+            numberB.remove_prefix(std::min(numberB.find_first_not_of('0'), numberB.size()));
+            if (numberA.size() != numberB.size())
+                return numberA.size() < numberB.size();
+            if (numberA != numberB)
+                return numberA < numberB;
+            continue;
+        }
+        if (a[i] != b[j])
+            return static_cast<unsigned char>(a[i]) < static_cast<unsigned char>(b[j]);
+        ++i;
+        ++j;
     }
-    const Document document = Document::parse(*content.bytes, page.diagnostics);
-    noteKind(document, page.diagnostics);
-    page.page = TrackPage::read(document, page.diagnostics);
-    page.loaded = true;
-    return page;
+    return a.size() - i < b.size() - j;
 }
 
 void writeDiagnosticsJson(JsonWriter& json, const Diagnostics& diagnostics) {
@@ -127,6 +178,51 @@ TrackLayout TrackLayout::load(const std::filesystem::path& indexFile) {
     for (const TrackPageEntry& entry : layout.plan.pages)
         layout.pages.push_back(loadPage(layout.directory, entry, layout.diagnostics));
     return layout;
+}
+
+TrackLayout TrackLayout::loadPages(const std::filesystem::path& directory) {
+    TrackLayout layout;
+    layout.directory = directory;
+    layout.diagnostics.setFileName("gleisbild.cs2");
+    const std::vector<std::filesystem::path> files = pageFiles(directory);
+    std::vector<std::string> names;
+    for (const std::filesystem::path& file : files)
+        names.push_back(pageNameOf(file));
+    layout.plan = madeUpIndex(names);
+    layout.diagnostics.warning(0, "the track plan index is missing",
+                               "the " + std::to_string(files.size()) + " page file(s) in " +
+                                   std::string(pageDirectory) +
+                                   "/ are shown in the order of their names, numbered from 0");
+    for (const TrackPageEntry& entry : layout.plan.pages)
+        layout.pages.push_back(loadPage(directory, entry, layout.diagnostics));
+    return layout;
+}
+
+TrackLayout TrackLayout::loadPageFile(const std::filesystem::path& pageFile) {
+    TrackLayout layout;
+    const std::filesystem::path folder = pageFile.parent_path();
+    layout.directory = folder.filename() == pageDirectory ? folder.parent_path() : folder;
+    layout.diagnostics.setFileName("gleisbild.cs2");
+    layout.plan = madeUpIndex({pageNameOf(pageFile)});
+    const TrackPageEntry& entry = layout.plan.pages.front();
+    TrackLayoutPage page;
+    page.name = entry.name;
+    page.file = pageFile;
+    page.diagnostics.setFileName(displayName(entry.name));
+    layout.pages.push_back(readPage(std::move(page), entry, layout.diagnostics));
+    return layout;
+}
+
+std::vector<std::filesystem::path> TrackLayout::pageFiles(const std::filesystem::path& directory) {
+    std::vector<std::filesystem::path> files;
+    std::error_code error;
+    for (std::filesystem::directory_iterator it(directory / pageDirectory, error), end; !error && it != end;
+         it.increment(error))
+        if (it->path().extension() == pageExtension && it->is_regular_file(error))
+            files.push_back(it->path());
+    std::sort(files.begin(), files.end(),
+              [](const auto& a, const auto& b) { return inNameOrder(pageNameOf(a), pageNameOf(b)); });
+    return files;
 }
 
 std::string toJson(const TrackLayout& layout) {

@@ -44,6 +44,16 @@ struct TrackLayout {
     // Reads the index file and the page files beside it. Never throws; every problem is reported in
     // `diagnostics` or in the page's own.
     static TrackLayout load(const std::filesystem::path& indexFile);
+    // The pages of `directory` whose gleisbild.cs2 is missing: every file of pageFiles(directory) under an
+    // index made up for them (numbered from 0 in that order, named after the files). `diagnostics` says
+    // that the index is missing and what was done instead.
+    static TrackLayout loadPages(const std::filesystem::path& directory);
+    // One page file alone ("config/gleisbilder/Bahnhof.cs2"), as page 0 of an index made up for it; the
+    // layout's directory is the one above `gleisbilder`, or the file's own folder.
+    static TrackLayout loadPageFile(const std::filesystem::path& pageFile);
+    // The `.cs2` files in `directory`/gleisbilder in the order of their names, numbers in them counted
+    // as numbers ("2 - Bottom" before "10 - Hafen"); empty when there are none.
+    static std::vector<std::filesystem::path> pageFiles(const std::filesystem::path& directory);
 };
 
 std::string toJson(const TrackLayout& layout);

@@ -71,7 +71,8 @@ struct DeviceBindings {
     // The demo layout's (resources/demo-layout) on the embedded station's devices: turnout W1 Einfahrt West
     // (1) on relay 1 of "Demo RO", signal A Einfahrsignal (6) on output 0 of the OpenRailCAN decoder with
     // bus id 0x0101 (UID 0x3A2E0101), the siding's contact (Abstellgleis, 0/9) on input 0 of the encoder
-    // with UID 0x3A2E0102, and contact 0/20 on input 1 of "Demo RO".
+    // with UID 0x3A2E0102 (its occupancy detector: lit while a train stands there), and contact 0/20,
+    // which the plan does not show, on input 1 of "Demo RO".
     static DeviceBindings demo();
 
     // Read from and written to the group "deviceBindings" of `settings`; entries that cannot be read are

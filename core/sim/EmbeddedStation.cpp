@@ -29,7 +29,7 @@ struct DemoRun {
 };
 constexpr DemoRun DemoRuns[] = {{0x4001, 600}, {0x4002, 600}};
 constexpr std::uint8_t Headlights = 0; // F0
-constexpr int SidingPeriodMs = 5000;
+constexpr int ModuleInputPeriodMs = 5000;
 
 // Commands the station as a controller on the bus would, before anyone connects.
 void command(SimulatedStation& station, cs2::MessageBody body) {
@@ -53,7 +53,7 @@ EmbeddedStation::EmbeddedStation() = default;
 
 // Trains first (they drive the station), then the server (it forwards the station's frames).
 EmbeddedStation::~EmbeddedStation() {
-    siding_.reset();
+    moduleInput_.reset();
     gateway_.reset();
     encoder_.reset();
     decoder_.reset();
@@ -97,6 +97,7 @@ bool EmbeddedStation::start() {
     if (!startWebServer() || !startDeviceBus())
         return false;
     trains_ = std::make_unique<TrainMovement>(*station_, TrainTrack::demo());
+    wireSidingToEncoder();
     if (report_)
         QObject::connect(trains_.get(), &TrainMovement::occupantChanged, trains_.get(), report_);
     trains_->start();
@@ -146,13 +147,22 @@ bool EmbeddedStation::startDeviceBus() {
         error_ = gateway_->errorString();
         return false;
     }
-    siding_ = std::make_unique<QTimer>();
-    QObject::connect(siding_.get(), &QTimer::timeout, [this] {
-        encoder_->setInput(0, !(encoder_->inputs() & 1)); // a wagon pushed onto the siding and back
-        roModule_->setInput(1, !roModule_->input(1));
-    });
-    siding_->start(SidingPeriodMs);
+    moduleInput_ = std::make_unique<QTimer>();
+    QObject::connect(moduleInput_.get(), &QTimer::timeout,
+                     [this] { roModule_->setInput(1, !roModule_->input(1)); }); // a switch on the desk
+    moduleInput_->start(ModuleInputPeriodMs);
     return true;
+}
+
+// The siding's occupancy detector is wired to the encoder's input 0, which DeviceBindings::demo() binds to
+// the siding's contact: the contact is lit while a train stands there (the Köf from the start), as an S88
+// contact would be, only reported by the encoder. Connected before the trains are placed.
+void EmbeddedStation::wireSidingToEncoder() {
+    QObject::connect(trains_.get(), &TrainMovement::occupantChanged, trains_.get(),
+                     [this](std::uint16_t device, std::uint16_t contact, std::uint32_t locId) {
+                         if (device == 0 && contact == DemoSidingContact && encoder_)
+                             encoder_->setInput(0, locId != 0);
+                     });
 }
 
 std::vector<transport::TransportSettings> EmbeddedStation::deviceBuses() const {

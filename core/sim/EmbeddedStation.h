@@ -37,6 +37,8 @@ public:
     // of the simulator's profile (ro::RoProfile::simulator(1)).
     static constexpr std::uint32_t DemoOrcDecoder = 0x3A2E0101;
     static constexpr std::uint32_t DemoOrcEncoder = 0x3A2E0102;
+    // The S88 contact of the demo's siding (Abstellgleis), whose occupancy the encoder's input 0 reports.
+    static constexpr std::uint16_t DemoSidingContact = 9;
 
     // Makes a new embedded station for each connection that asks for the simulated one.
     static transport::LocalPeerFactory factory();
@@ -80,6 +82,7 @@ private:
     void putOnBus();
     bool startDeviceBus();
     bool startWebServer();
+    void wireSidingToEncoder();
 
     std::unique_ptr<SimulatedBus> bus_;
     std::unique_ptr<SimulatedStation> station_;
@@ -93,7 +96,7 @@ private:
     std::unique_ptr<SimulatedOrcDecoder> decoder_;
     std::unique_ptr<SimulatedOrcEncoder> encoder_;
     std::unique_ptr<BusGateway> gateway_;
-    std::unique_ptr<QTimer> siding_; // the encoder's input 0 and the module's input 1 change now and then
+    std::unique_ptr<QTimer> moduleInput_; // the module's input 1 changes now and then
     OccupantReport report_;
     QString error_;
 };

@@ -87,10 +87,27 @@ TEST(Cs2CheckFolder, AFolderWithoutTrackPlanIsNotUsable) {
     folder.add("lokomotive.cs2", "[lokomotive]\nlokomotive\n .name=V 100\n");
     const Outcome outcome = cs2({"check", folder.path()});
     EXPECT_EQ(outcome.status, 1);
-    EXPECT_NE(
-        outcome.out.find(folder.path() + ": not usable - there is no track plan (config/gleisbild.cs2)"),
-        std::string::npos)
+    EXPECT_NE(outcome.out.find(folder.path() +
+                               ": not usable - there is no track plan (config/gleisbild.cs2, or pages in "
+                               "config/gleisbilder/)"),
+              std::string::npos)
         << outcome.out;
+}
+
+// Issue 32: the pages of a folder whose gleisbild.cs2 is missing are checked, and the missing index said.
+TEST(Cs2CheckFolder, PagesWithoutTheirIndexAreCheckedAndTheIndexReportedMissing) {
+    ScratchFolder folder;
+    folder.add("gleisbilder/Bahnhof.cs2", "[gleisbildseite]\nelement\n .id=0x101\n .typ=gerade\n");
+    const Outcome outcome = cs2({"check", folder.path()});
+    EXPECT_EQ(outcome.status, 0) << outcome.out;
+    for (const std::string& line :
+         {std::string("gleisbild.cs2: warning: the track plan index is missing; the 1 page file(s) in "
+                      "gleisbilder/ are shown in the order of their names, numbered from 0\n"),
+          folder.config().string() + "/gleisbilder/Bahnhof.cs2: ok - track plan page: 1 element\n",
+          folder.path() + ": usable as a layout, 0 layout warnings - 1 page\n"})
+        EXPECT_NE(outcome.out.find(line), std::string::npos) << line << "\n" << outcome.out;
+    EXPECT_EQ(outcome.out.find("config/gleisbild.cs2:"), std::string::npos)
+        << "the missing file is not checked";
 }
 
 TEST(Cs2CheckFolder, AnUnusableFileMakesTheFolderUnusable) {

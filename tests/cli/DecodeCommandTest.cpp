@@ -96,6 +96,19 @@ TEST(CliDecode, DlcAboveEightIsAnErrorLine) {
     EXPECT_NE(run.out.find("ERROR DLC 9 is above 8"), std::string::npos) << run.out;
 }
 
+// Issue 32: with fewer bytes than eight the line named the missing bytes instead of the DLC.
+TEST(CliDecode, DlcAboveEightWithOneByteSaysTheDlcIsAboveEight) {
+    const auto run = decode({"00164711 9 00"});
+    EXPECT_EQ(run.status, 1);
+    EXPECT_EQ(run.out, "");
+    EXPECT_EQ(run.err, "stellwerk-cli decode: line 1: DLC 9 is above 8: a CAN frame has at most 8 data bytes "
+                       "(1 given): 00164711 9 00\n");
+    const auto json = decode({"--json", "00164711 9 00"});
+    EXPECT_EQ(json.out,
+              "{\"input\":\"00164711 9 00\",\"error\":\"DLC 9 is above 8: a CAN frame has at most 8 "
+              "data bytes (1 given)\"}\n");
+}
+
 TEST(CliDecode, UnknownOptionIsAUsageError) {
     const auto run = decode({"--yaml"});
     EXPECT_EQ(run.status, 2);

@@ -3,10 +3,12 @@
 #include "connection/LocomotivePictures.h"
 
 #include <QApplication>
+#include <QDir>
 #include <QImage>
 #include <QPainter>
 #include <QPainterPath>
 #include <QPalette>
+#include <QUrl>
 
 namespace stellwerk::ui {
 
@@ -103,7 +105,14 @@ QString LocomotivePictureBook::describe(const QString& icon) const {
     case Status::Failed:
         break;
     }
-    return tr("No picture “%1”: %2").arg(icon, why(m_pictures->reason(icon)));
+    const QString missing = tr("No picture “%1”: %2").arg(icon, why(m_pictures->reason(icon)));
+    const QString where = m_pictures->lookedAt(icon);
+    if (where.isEmpty())
+        return missing;
+    const QUrl url(where);
+    const QString place = url.scheme().startsWith(QLatin1String("http")) ? url.toDisplayString()
+                                                                         : QDir::toNativeSeparators(where);
+    return missing + QLatin1Char('\n') + tr("Looked for at %1").arg(place);
 }
 
 QString LocomotivePictureBook::why(connection::LocomotivePictures::Reason reason) {

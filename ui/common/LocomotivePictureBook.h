@@ -26,7 +26,8 @@ public:
     QPixmap picture(const QString& icon, const QSize& box, qreal devicePixelRatio = 1.0);
     // True when picture() shows the locomotive's own picture, not the placeholder.
     bool hasPicture(const QString& icon);
-    // What the picture is, in words, for a tooltip: "Picture “BR 218”", "No picture “BR 86”: ...".
+    // What the picture is, in words, for a tooltip: "Picture “BR 218”", "No picture “BR 86”: ..." and,
+    // on a second line, where it was looked for (the station's address, a file).
     QString describe(const QString& icon) const;
 
     // The placeholder alone, fitted into `box`.

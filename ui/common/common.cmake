@@ -1,8 +1,8 @@
 # What several features share: the words and lamps for station state ("not reported", the status dots, the
-# track power line, the "layout stopped" banner), the railway's locomotives as a table, the row index of
-# such tables, greys that keep their contrast, the function keys' and the toolbars' icons, two parts side by
-# side or stacked and widgets wrapping into rows as a panel's width allows, the wheel that only scrolls past
-# a panel's controls, and where the remembered settings live.
+# track power line, the "layout stopped" banner, the red bar of a file's problem), the railway's locomotives
+# as a table, the row index of such tables, greys that keep their contrast, the function keys' and the
+# toolbars' icons, two parts side by side or stacked and widgets wrapping into rows as a panel's width
+# allows, the wheel that only scrolls past a panel's controls, and where the remembered settings live.
 target_sources(stellwerk-ui PRIVATE
     common/Contrast.cpp common/Contrast.h
     common/FunctionIcons.cpp common/FunctionIcons.h
@@ -11,6 +11,7 @@ target_sources(stellwerk-ui PRIVATE
     common/LocomotiveTableModel.cpp common/LocomotiveTableModel.h
     common/NotReported.cpp common/NotReported.h
     common/PowerStatus.cpp common/PowerStatus.h
+    common/ProblemBar.cpp common/ProblemBar.h
     common/RowIndex.h
     common/SideBySide.cpp common/SideBySide.h
     common/StatusDot.cpp common/StatusDot.h

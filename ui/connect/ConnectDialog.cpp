@@ -223,6 +223,7 @@ void ConnectDialog::retranslate() {
     m_examples->setText(tr("Examples:\n"
                            "udp://192.168.2.5 — a CS2 with its CAN-UDP gateway switched on\n"
                            "tcp://192.168.2.5 — a CS3, or a CS2 over TCP\n"
+                           "tcp://127.0.0.1:15731?http=8080 — stellwerk-sim, its pictures on port 8080\n"
                            "can://socketcan/can0 — a Gleisbox through a CAN adapter"));
     m_furtherLabel->setText(tr("Further &buses:"));
     m_furtherHint->setText(tr("Optional: more CAN buses to watch beside the station, such as a USB-CAN "

@@ -4,8 +4,10 @@
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QFileInfo>
+#include <QGuiApplication>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScreen>
 #include <QTextBrowser>
 #include <QUrl>
 #include <QVBoxLayout>
@@ -41,7 +43,14 @@ GuideBrowser::GuideBrowser(const QString& page, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_browser, 1);
     layout->addWidget(buttons);
-    resize(fontMetrics().averageCharWidth() * 110, fontMetrics().height() * 40);
+    const QScreen* screen = parent ? parent->screen() : QGuiApplication::primaryScreen();
+    if (screen)
+        resize(readableSize(screen->availableGeometry().size()));
+}
+
+QSize GuideBrowser::readableSize(const QSize& available) {
+    const QSize least(900, 650);
+    return (available * 2 / 3).expandedTo(least).boundedTo(available);
 }
 
 void GuideBrowser::showGuide(QWidget* parent) {

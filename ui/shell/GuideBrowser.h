@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QDialog>
+#include <QSize>
 #include <QString>
 
 class QTextBrowser;
@@ -21,6 +22,10 @@ public:
 
     explicit GuideBrowser(const QString& page, QWidget* parent = nullptr);
     QTextBrowser* browser() const { return m_browser; }
+
+    // The size the guide opens at on a screen with `available` room: about two thirds of it, at least
+    // 900 x 650 where that fits, never more than the screen.
+    static QSize readableSize(const QSize& available);
 
     // Shows the guide, or says where it would be when it cannot be found.
     static void showGuide(QWidget* parent);

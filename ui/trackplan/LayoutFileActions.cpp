@@ -1,11 +1,11 @@
 #include "trackplan/LayoutFileActions.h"
 
+#include "trackplan/LayoutFileDialog.h"
 #include "trackplan/LayoutFileSettings.h"
 #include "trackplan/TrackPlanPanel.h"
 
 #include <QAction>
 #include <QDir>
-#include <QFileDialog>
 #include <QMenu>
 #include <QMessageBox>
 
@@ -55,19 +55,18 @@ bool LayoutFileActions::exportTo(const QString& folder) {
 void LayoutFileActions::chooseFolderToOpen() {
     if (!m_plan.mayOpen())
         return;
-    const QString folder = QFileDialog::getExistingDirectory(&m_window, tr("Open a CS2 layout folder"),
-                                                             LayoutFileSettings::recent().value(0));
-    if (!folder.isEmpty())
-        open(folder);
+    LayoutFileDialog dialog(LayoutFileDialog::Purpose::Open, LayoutFileSettings::recent().value(0),
+                            &m_window);
+    if (dialog.exec() == QDialog::Accepted && !dialog.chosen().isEmpty())
+        open(dialog.chosen());
 }
 
 void LayoutFileActions::chooseFolderToExport() {
     const QString start =
         LayoutFileSettings::exportFolder().isEmpty() ? QDir::homePath() : LayoutFileSettings::exportFolder();
-    const QString folder =
-        QFileDialog::getExistingDirectory(&m_window, tr("Export the layout into a folder"), start);
-    if (!folder.isEmpty())
-        exportTo(folder);
+    LayoutFileDialog dialog(LayoutFileDialog::Purpose::Export, start, &m_window);
+    if (dialog.exec() == QDialog::Accepted && !dialog.chosen().isEmpty())
+        exportTo(dialog.chosen());
 }
 
 // One entry per recent layout (keys 1, 2, ... while the menu is open), newest first, and a way to clear

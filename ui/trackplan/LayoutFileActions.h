@@ -11,9 +11,10 @@ namespace stellwerk::ui {
 
 class TrackPlanPanel;
 
-// The layout's file commands, the same in the File menu and on the plan's toolbar: Open layout… (Ctrl+O)
-// with the layouts opened recently, and Export layout… (Ctrl+E), whose folder dialog starts where the last
-// export went (new folders can be made there) and which says where it wrote the layout.
+// The layout's file commands, the same in the File menu and on the plan's toolbar: Open layout… (Ctrl+O:
+// a folder or a single page file) with the layouts opened recently, and Export layout… (Ctrl+E), whose
+// folder dialog starts where the last export went (a folder typed in that is not there yet is made) and
+// which says where it wrote the layout.
 class LayoutFileActions final : public QObject {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(LayoutFileActions)

@@ -2,6 +2,7 @@
 
 #include "common/LayoutStateBanner.h"
 #include "common/NotReported.h"
+#include "common/ProblemBar.h"
 #include "common/ToolIcons.h"
 #include "connection/StationConnection.h"
 #include "model/Railway.h"
@@ -67,14 +68,9 @@ TrackPlanPanel::TrackPlanPanel(QWidget* parent) : QWidget(parent) {
     updateIcons();
     layout->addWidget(m_toolBar);
 
-    m_banner = new QLabel(this);
-    m_banner->setObjectName(QStringLiteral("trackPlanProblem"));
-    m_banner->setWordWrap(true);
-    m_banner->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_banner->setStyleSheet(QStringLiteral("QLabel { background: #c82c2c; color: white; padding: 8px;"
-                                           " border-radius: 4px; }"));
-    m_banner->hide();
-    layout->addWidget(m_banner);
+    m_problem = new ProblemBar(this);
+    m_problem->setObjectName(QStringLiteral("trackPlanProblem"));
+    layout->addWidget(m_problem);
     m_layoutState = new LayoutStateBanner(this);
     m_layoutState->setObjectName(QStringLiteral("trackPlanLayoutState"));
     layout->addWidget(m_layoutState);
@@ -130,7 +126,9 @@ void TrackPlanPanel::setConnection(connection::StationConnection* connection) {
 bool TrackPlanPanel::openFolder(const QString& folder) {
     cs2config::LayoutFolder::Content content = cs2config::LayoutFolder::open(folder.toStdString());
     if (!content.problem.empty()) {
-        showProblem(tr("Cannot open the layout: %1").arg(QString::fromStdString(content.problem)));
+        showProblem([problem = QString::fromStdString(content.problem)] {
+            return tr("Cannot open the layout: %1").arg(problem);
+        });
         return false;
     }
     m_folderNames.clear();
@@ -138,18 +136,29 @@ bool TrackPlanPanel::openFolder(const QString& folder) {
         for (const cs2config::Accessory& accessory : content.accessories->accessories)
             m_folderNames[accessory.id] = QString::fromStdString(accessory.name);
     m_folderLayout = model::TrackLayout(downloadedPages(content.layout));
-    const QString findings = findingsText(content.findings);
     if (m_connection) // the pictures of the folder's locomotives, in its icons folder
         m_connection->pictures().setFolder(QString::fromStdString(
             cs2config::LayoutFolder::iconsDirectoryOf(content.configDirectory).string()));
+    const bool withoutIndex = content.extent == cs2config::LayoutFolder::Extent::PagesOnly;
+    showProblem([withoutIndex, findings = content.findings, pages = int(content.layout.pages.size()),
+                 index = content.configDirectory / "gleisbild.cs2"] {
+        QStringList parts;
+        if (withoutIndex)
+            parts << tr("%1 is missing: the %n page file(s) found in gleisbilder/ are shown in the order of "
+                        "their names. Export the layout to write a new gleisbild.cs2 for them.",
+                        "", pages)
+                         .arg(QString::fromStdString(index.string()));
+        if (!findings.empty())
+            parts << findingsText(findings);
+        return parts.join(QLatin1Char('\n'));
+    });
     m_folder = std::move(content);
-    showProblem(findings);
     rebuild();
     return true;
 }
 
 // What the layout check found, the first few in full (`stellwerk-cli cs2 check DIR` lists them all).
-QString TrackPlanPanel::findingsText(const std::vector<cs2config::LayoutFinding>& findings) const {
+QString TrackPlanPanel::findingsText(const std::vector<cs2config::LayoutFinding>& findings) {
     if (findings.empty())
         return {};
     constexpr int Shown = 5;
@@ -173,7 +182,7 @@ void TrackPlanPanel::showStationPlan() {
         m_connection->pictures().setFolder({});
     m_folderLayout = {};
     m_folderNames.clear();
-    showProblem(QString());
+    showProblem({});
     rebuild();
 }
 
@@ -195,12 +204,18 @@ bool TrackPlanPanel::exportTo(const QString& folder) {
         files = cs2config::LayoutFolder::filesOf(*result.trackPlan, pages);
         files.merge(cs2config::LayoutFolder::stationFiles(result.files));
     } else {
-        showProblem(tr("There is no track plan to export: connect to a station or open a layout first."));
+        showProblem([] {
+            return tr("There is no track plan to export: connect to a station or open a layout first.");
+        });
         return false;
     }
     const std::string problem = cs2config::LayoutFolder::write(folder.toStdString(), files);
-    showProblem(problem.empty() ? QString()
-                                : tr("Cannot export the layout: %1").arg(QString::fromStdString(problem)));
+    if (problem.empty())
+        showProblem({});
+    else
+        showProblem([problem = QString::fromStdString(problem)] {
+            return tr("Cannot export the layout: %1").arg(problem);
+        });
     return problem.empty();
 }
 
@@ -238,6 +253,22 @@ void TrackPlanPanel::addPage(int index) {
     const model::LayoutPage& page = m_layout->pages()[std::size_t(index)];
     auto* scroll = new QScrollArea(m_tabs);
     scroll->setFrameShape(QFrame::NoFrame);
+    const QString tabText = page.name.isEmpty() ? tr("Page %1").arg(page.id) : page.name;
+    if (const QString empty = emptyPageText(index); !empty.isEmpty()) { // nothing to draw: say why
+        auto* notice = new QLabel(empty, scroll);
+        notice->setObjectName(QStringLiteral("emptyPageNotice"));
+        notice->setAlignment(Qt::AlignCenter);
+        notice->setWordWrap(true);
+        notice->setMargin(24);
+        if (m_folder)
+            notice->setToolTip(
+                QString::fromStdString(m_folder->layout.pages[std::size_t(index)].file.string()));
+        scroll->setWidgetResizable(true);
+        scroll->setWidget(notice);
+        m_views.push_back(nullptr);
+        m_tabs->addTab(scroll, tabText);
+        return;
+    }
     auto* view = new TrackPageView(
         std::shared_ptr<const model::LayoutPage>(m_layout, &page),
         [this, index, shown = m_layout](int tile) {
@@ -257,7 +288,23 @@ void TrackPlanPanel::addPage(int index) {
         m_zoom->zoomTo(id, PageZoom::stepped(view->tileSize(), steps));
     });
     m_views.push_back(view);
-    m_tabs->addTab(scroll, page.name.isEmpty() ? tr("Page %1").arg(page.id) : page.name);
+    m_tabs->addTab(scroll, tabText);
+}
+
+// Why a page of an opened folder has nothing to show (its file is missing or unreadable); empty for a
+// page that was read.
+QString TrackPlanPanel::emptyPageText(int index) const {
+    if (!m_folder || index < 0 || index >= int(m_folder->layout.pages.size()))
+        return {};
+    const cs2config::TrackLayoutPage& page = m_folder->layout.pages[std::size_t(index)];
+    if (page.loaded)
+        return {};
+    if (page.file.empty())
+        return tr(
+            "This page has nothing to show: its name cannot be a file name, so no file was looked for.");
+    const QString file = QString::fromStdString(page.diagnostics.fileName()); // gleisbilder/<page>.cs2
+    return page.missing ? tr("This page has nothing to show: its file %1 is missing.").arg(file)
+                        : tr("This page has nothing to show: its file %1 could not be read.").arg(file);
 }
 
 void TrackPlanPanel::indexRoutes() {
@@ -338,7 +385,8 @@ bool TrackPlanPanel::isReported() const {
 // Greyed while not reported; the states drawn come back as they were read again.
 void TrackPlanPanel::stateReportedChanged() {
     for (TrackPageView* view : m_views)
-        view->setDimmed(isLive() && !isReported());
+        if (view)
+            view->setDimmed(isLive() && !isReported());
 }
 
 QString TrackPlanPanel::accessoryName(std::int64_t id) const {
@@ -362,7 +410,8 @@ void TrackPlanPanel::tilesChanged(const QList<model::TileRef>& tiles) {
 void TrackPlanPanel::updateSetRoutes() {
     if (m_setRoutes->update(isLive() ? m_railway.data() : nullptr))
         for (TrackPageView* view : m_views)
-            view->update();
+            if (view)
+                view->update();
 }
 
 void TrackPlanPanel::routeChanged(qint64 route) {
@@ -414,12 +463,11 @@ void TrackPlanPanel::zoomOut() {
 }
 
 QString TrackPlanPanel::problemText() const {
-    return m_banner->isHidden() ? QString() : m_banner->text();
+    return m_problem->text();
 }
 
-void TrackPlanPanel::showProblem(const QString& text) {
-    m_banner->setText(text);
-    m_banner->setVisible(!text.isEmpty());
+void TrackPlanPanel::showProblem(std::function<QString()> describe) {
+    m_problem->setProblem(std::move(describe));
 }
 
 bool TrackPlanPanel::mayOpen() const {
@@ -429,8 +477,10 @@ bool TrackPlanPanel::mayOpen() const {
 void TrackPlanPanel::updateActions() {
     m_station->setVisible(m_folder.has_value() && m_railway);
     m_export->setEnabled(m_folder.has_value() || (m_connection && m_connection->startupResult().trackPlan));
+    const bool drawn =
+        std::any_of(m_views.begin(), m_views.end(), [](const TrackPageView* view) { return view; });
     for (QAction* action : {m_zoomIn, m_zoomOut, m_fit})
-        action->setEnabled(!m_views.empty());
+        action->setEnabled(drawn);
 }
 
 void TrackPlanPanel::retranslate() {
@@ -454,9 +504,12 @@ void TrackPlanPanel::retranslate() {
                     : QString());
     m_source->setToolTip(QString::fromStdString(config.string()));
     if (m_layout)
-        for (int i = 0; i < m_tabs->count(); ++i)
+        for (int i = 0; i < m_tabs->count(); ++i) {
             if (m_layout->pages()[std::size_t(i)].name.isEmpty())
                 m_tabs->setTabText(i, tr("Page %1").arg(m_layout->pages()[std::size_t(i)].id));
+            if (auto* notice = m_tabs->widget(i)->findChild<QLabel*>(QStringLiteral("emptyPageNotice")))
+                notice->setText(emptyPageText(i));
+        }
 }
 
 void TrackPlanPanel::updateIcons() {

@@ -29,6 +29,7 @@ class Railway;
 namespace stellwerk::ui {
 
 class LayoutStateBanner;
+class ProblemBar;
 class SetRoutes;
 class TrackPageView;
 struct TrackTileLook;
@@ -49,8 +50,9 @@ public:
     // The connection whose downloaded files an export writes beside the plan.
     void setConnection(connection::StationConnection* connection);
 
-    // Shows the layout of a CS2 configuration folder (the folder or its `config`); false and a
-    // problem shown when it cannot be read.
+    // Shows the layout of a CS2 configuration folder (the folder or its `config`), as far as it is there
+    // (the pages of gleisbilder/ when gleisbild.cs2 is missing, with a warning), or a single page file;
+    // false and a problem shown when nothing can be read.
     bool openFolder(const QString& folder);
     // Asked before "Open layout..." shows its folder dialog; opening goes on only when it returns true
     // (the window asks about unsaved locomotive edits there).
@@ -84,6 +86,8 @@ public:
     bool isFitted() const { return m_zoom->isCurrentFitted(); }
     // The problem shown in the banner; empty while it is hidden.
     QString problemText() const;
+    // The red bar that shows it (folded, dismissed).
+    ProblemBar* problemBar() const { return m_problem; }
 
 signals:
     // The pages shown were rebuilt (another railway, a reload, an opened folder).
@@ -110,8 +114,9 @@ private:
     void showTileMenu(int page, int tile, QPoint where);
     void goToPage(std::int64_t pageId);
     QString accessoryName(std::int64_t id) const;
-    void showProblem(const QString& text);
-    QString findingsText(const std::vector<cs2config::LayoutFinding>& findings) const;
+    void showProblem(std::function<QString()> describe);
+    static QString findingsText(const std::vector<cs2config::LayoutFinding>& findings);
+    QString emptyPageText(int index) const;
     void updateActions();
     void updateIcons();
     void retranslate();
@@ -138,7 +143,7 @@ private:
     QAction* m_zoomOut = nullptr;
     QAction* m_fit = nullptr;
     QLabel* m_source = nullptr;
-    QLabel* m_banner = nullptr;
+    ProblemBar* m_problem = nullptr;
     LayoutStateBanner* m_layoutState = nullptr;
     QLabel* m_emptyText = nullptr;
     QTabWidget* m_tabs = nullptr;

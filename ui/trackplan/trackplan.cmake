@@ -2,6 +2,7 @@
 target_sources(stellwerk-ui PRIVATE
     trackplan/FeatureShapes.cpp
     trackplan/LayoutFileActions.cpp trackplan/LayoutFileActions.h
+    trackplan/LayoutFileDialog.cpp trackplan/LayoutFileDialog.h
     trackplan/LayoutFileSettings.cpp trackplan/LayoutFileSettings.h
     trackplan/SignalShapes.cpp
     trackplan/TrackColors.cpp trackplan/TrackColors.h

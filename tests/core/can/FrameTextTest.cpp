@@ -72,6 +72,17 @@ TEST(FrameText, OversizedDlcParsesSoTheDecoderCanReportIt) {
     EXPECT_EQ(parsed("00004711 9 00 00 00 00 00 00 00 00").frame.dlc, 9);
 }
 
+// Issue 32: "00164711 9 00" was reported as "DLC 9 announces 8 data bytes, only 1 given", which asks for
+// bytes no frame can carry. The DLC is what is wrong, in the document notation and the bracketed one.
+TEST(FrameText, ADlcAboveEightWithFewerBytesSaysTheDlcIsWrong) {
+    EXPECT_EQ(errorOf("00164711 9 00"), "DLC 9 is above 8: a CAN frame has at most 8 data bytes (1 given)");
+    EXPECT_EQ(errorOf("00164711 15"), "DLC 15 is above 8: a CAN frame has at most 8 data bytes (0 given)");
+    EXPECT_EQ(errorOf("can0 00164711 [12] 00 11"),
+              "DLC 12 is above 8: a CAN frame has at most 8 data bytes (2 given)");
+    EXPECT_EQ(errorOf("00164711 9 00 x"),
+              "DLC 9 is above 8: a CAN frame has at most 8 data bytes (1 given) before 'x'");
+}
+
 // Issue 11 (found by fuzzing): the network form accepted a DLC byte of 16..255, and `decode` then
 // printed a frame it could not read back. Its data is padded to eight bytes: more cannot be written.
 TEST(FrameText, NetworkFormRefusesADlcAboveEight) {

@@ -1,9 +1,11 @@
 // The app's demo (issue 15): the embedded station brings an OpenRailCAN decoder and encoder and an RO
 // module on a device bus of its own; with the demo's bindings a route of the demo plan switches turnout
-// W1 by an RO relay and signal A by a decoder output, and the siding's contact is an encoder input.
+// W1 by an RO relay and signal A by a decoder output, and the siding's contact is an encoder input that
+// reports the train standing there.
 
 #include "EmbeddedStationSupport.h"
 #include "model/RailwayDevices.h"
+#include "sim/EmbeddedStation.h"
 #include "sim/SimulatedOrcDevices.h"
 #include "sim/SimulatedRoModule.h"
 
@@ -97,16 +99,34 @@ TEST(EmbeddedDemoDevices, ARouteOfTheDemoPlanSwitchesTheRelayAndTheDecoderOutput
     EXPECT_TRUE(app.railway->isRouteSet(1));
 }
 
-// The siding's contact follows encoder input 0, which the demo changes every 5 s.
-TEST(EmbeddedDemoDevices, TheSidingsContactIsTheEncodersInput) {
+TEST(EmbeddedDemoDevices, TheEncodersFirstInputIsTheSidingsOccupancyFromTheStart) {
+    sim::EmbeddedStation station;
+    ASSERT_TRUE(station.start());
+    EXPECT_EQ(station.orcEncoder()->inputs() & 1u, 1u) << "the Köf is placed on the siding";
+    EXPECT_EQ(station.orcEncoder()->inputs() & ~1u, 0u);
+}
+
+// Issue 32: the demo's encoder toggled the siding's contact every 5 s, a train that came and went while
+// the Köf stood still. Its input 0 is the siding's occupancy detector: lit while the Köf stands there, and
+// it stays lit while the demo's other input (the RO module's, contact 0/20) changes.
+TEST(EmbeddedDemoDevices, TheSidingsContactIsLitByTheEncoderWhileTheKoefStandsThere) {
     DemoApp app;
     app.connection.connectTo(QString());
-    const model::ContactKey siding = model::contactKey(0, 9);
+    const model::ContactKey siding = model::contactKey(0, sim::EmbeddedStation::DemoSidingContact);
+    const model::ContactKey moduleInput = model::contactKey(0, 20);
     ASSERT_TRUE(QTest::qWaitFor(
-        [&] { return app.railway && app.railway->contact(siding) && app.railway->contact(siding)->known(); },
+        [&] {
+            return app.railway && app.railway->contact(siding) && app.railway->contact(siding)->known() &&
+                   app.railway->contact(moduleInput) && app.railway->contact(moduleInput)->known();
+        },
         WaitMs));
-    const bool first = app.railway->contact(siding)->occupied();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return app.railway->contact(siding)->occupied() != first; }, WaitMs));
+    EXPECT_TRUE(app.devices->lights(siding)) << "the encoder lights it, not the station's S88";
+    EXPECT_TRUE(app.railway->contact(siding)->occupied());
+    const bool moduleFirst = app.railway->contact(moduleInput)->occupied();
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return app.railway->contact(moduleInput)->occupied() != moduleFirst; }, WaitMs))
+        << "the demo's RO input still changes on its own";
+    EXPECT_TRUE(app.railway->contact(siding)->occupied()) << "no train came or went on the siding";
 }
 
 } // namespace

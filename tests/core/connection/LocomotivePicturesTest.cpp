@@ -5,13 +5,16 @@
 
 #include "EmbeddedStationSupport.h"
 #include "FakeWebServer.h"
+#include "SimProgram.h"
 #include "connection/StationConnection.h"
 #include "sim/EmbeddedStation.h"
 #include "sim/StationLayout.h"
 
 #include <QDir>
 #include <QFile>
+#include <QRegularExpression>
 #include <QSignalSpy>
+#include <QTcpServer>
 #include <QTemporaryDir>
 #include <QTest>
 #include <gtest/gtest.h>
@@ -244,6 +247,63 @@ TEST(LocomotivePictures, WithoutFolderOrStationAPictureIsMissing) {
     EXPECT_EQ(pictures.status("BR 218"), Status::Missing);
     EXPECT_EQ(pictures.problem("BR 218"), "no icons folder has BR 218.png and no station to ask");
     EXPECT_EQ(pictures.reason("BR 218"), LocomotivePictures::Reason::NoSource);
+}
+
+TEST_F(PicturesFromAStation, AMissingPictureSaysWhereItWasLookedFor) {
+    ASSERT_TRUE(settled(pictures_, "BR 86"));
+    EXPECT_EQ(pictures_.status("BR 86"), Status::Missing);
+    EXPECT_EQ(pictures_.lookedAt("BR 86"), web_.address() + "/icons/BR%2086.png");
+    EXPECT_EQ(pictures_.source("BR 86"), "") << "the source is where a picture came from";
+}
+
+TEST(LocomotivePictures, WithoutAStationTheIconsFolderIsWhereItWasLookedFor) {
+    QTemporaryDir icons;
+    LocomotivePictures pictures;
+    pictures.setFolder(icons.path());
+    EXPECT_EQ(pictures.picture("BR 218"), std::nullopt);
+    EXPECT_EQ(pictures.lookedAt("BR 218"), QDir(icons.path()).filePath("BR 218.png"));
+}
+
+// Issue 32: a station whose web server is not on port 80 (a simulator started with --http-port 8080, a
+// gateway) is named with `?http=<port>` after its address; the pictures come from that port.
+TEST(StationConnectionPictures, AnAddressWithAnHttpPortFetchesThePicturesThere) {
+    FakeWebServer web;
+    web.add("ICE 3.png", demoPicture("ICE 3.png"));
+    const QString port = web.address().section(QLatin1Char(':'), -1);
+    StationConnection connection(support::withEmbeddedStation());
+    connection.connectTo("tcp://127.0.0.1:1?http=" + port);
+    EXPECT_EQ(connection.webAddress(), web.address());
+    EXPECT_EQ(connection.endpoint().description(), QStringLiteral("CS2 at 127.0.0.1:1 (TCP)"));
+    ASSERT_TRUE(settled(connection.pictures(), "ICE 3"));
+    EXPECT_EQ(connection.pictures().picture("ICE 3"), demoPicture("ICE 3.png"));
+    EXPECT_EQ(web.requests(), 1);
+    connection.connectTo("udp://127.0.0.1?listen=0&http=" + port);
+    EXPECT_EQ(connection.webAddress(), web.address());
+    connection.connectTo("tcp://127.0.0.1:1?http=80");
+    EXPECT_EQ(connection.webAddress(), "http://127.0.0.1");
+}
+
+// stellwerk-sim serves the pictures on its --http-port and says which address to give Stellwerk for them;
+// through that address they come from the simulator.
+TEST(StationConnectionPictures, StellwerkSimSaysTheAddressThroughWhichItsPicturesLoad) {
+    QTcpServer probe;
+    ASSERT_TRUE(probe.listen(QHostAddress::LocalHost, 0));
+    const std::uint16_t http = probe.serverPort();
+    probe.close();
+    support::SimProgram sim({"--listen", "127.0.0.1", "--udp-port", "0", "--udp-reply-host", "127.0.0.1",
+                             "--tcp-port", "0", "--http-port", QString::number(http), "--no-trains"});
+    ASSERT_TRUE(sim.printed("station address for Stellwerk")) << sim.output().toStdString();
+    const QRegularExpression said(QStringLiteral(
+        "station address for Stellwerk \\(with the pictures\\): (tcp://127\\.0\\.0\\.1:\\d+\\?http=(\\d+))"));
+    const QRegularExpressionMatch match = said.match(sim.output());
+    ASSERT_TRUE(match.hasMatch()) << sim.output().toStdString();
+    EXPECT_EQ(match.captured(2).toUInt(), http);
+    StationConnection connection(support::withEmbeddedStation());
+    connection.connectTo(match.captured(1));
+    EXPECT_EQ(connection.webAddress(), QStringLiteral("http://127.0.0.1:%1").arg(http));
+    ASSERT_TRUE(settled(connection.pictures(), "BR 218"));
+    EXPECT_EQ(connection.pictures().status("BR 218"), Status::Present)
+        << connection.pictures().problem("BR 218").toStdString();
 }
 
 TEST(StationConnectionPictures, TheWebAddressFollowsTheStation) {

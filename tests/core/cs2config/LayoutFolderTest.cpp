@@ -49,7 +49,9 @@ TEST(LayoutFolder, AMissingFolderSaysSo) {
 TEST(LayoutFolder, AFolderWithoutTrackPlanSaysSo) {
     QTemporaryDir empty;
     const LayoutFolder::Content content = LayoutFolder::open(empty.path().toStdString());
-    EXPECT_NE(content.problem.find("there is no track plan (config/gleisbild.cs2)"), std::string::npos);
+    EXPECT_NE(content.problem.find(
+                  "there is no track plan (config/gleisbild.cs2, or pages in config/gleisbilder/)"),
+              std::string::npos);
 }
 
 TEST(LayoutFolder, AMissingPageFileLeavesThatPageEmptyAndTheOthersLoaded) {
@@ -63,6 +65,98 @@ TEST(LayoutFolder, AMissingPageFileLeavesThatPageEmptyAndTheOthersLoaded) {
         loaded += page.loaded ? 1 : 0;
     EXPECT_EQ(loaded, 1);
     EXPECT_NE(content.layout.diagnostics.formatAll().find("is missing"), std::string::npos);
+}
+
+namespace {
+
+// A copy of the can2udp folder without its gleisbild.cs2, with karben.cs2 also as "10 - Hafen" and
+// "2 - Bahnhof", and magnetartikel.cs2 for the names.
+fs::path folderWithoutIndex(const QTemporaryDir& target) {
+    const fs::path config = fs::path(target.path().toStdString()) / "config";
+    const fs::path source = gbertFolder() / "config";
+    fs::create_directories(config / "gleisbilder");
+    for (const char* name : {"karben.cs2", "10 - Hafen.cs2", "2 - Bahnhof.cs2"})
+        fs::copy_file(source / "gleisbilder" / "karben.cs2", config / "gleisbilder" / name);
+    fs::copy_file(source / "magnetartikel.cs2", config / "magnetartikel.cs2");
+    return config.parent_path();
+}
+
+} // namespace
+
+// Issue 32: a folder whose gleisbild.cs2 is missing was refused ("there is no track plan"), although its
+// pages were there. They are shown as a person would number them, and the index is reported missing.
+TEST(LayoutFolder, WithoutItsIndexThePagesFoundAreOpenedInTheOrderOfTheirNames) {
+    QTemporaryDir target;
+    const fs::path folder = folderWithoutIndex(target);
+    const LayoutFolder::Content content = LayoutFolder::open(folder);
+    ASSERT_EQ(content.problem, "");
+    EXPECT_EQ(content.extent, LayoutFolder::Extent::PagesOnly);
+    EXPECT_EQ(content.configDirectory, folder / "config");
+    ASSERT_EQ(content.layout.pages.size(), 3U);
+    EXPECT_EQ(content.layout.pages[0].name, "2 - Bahnhof");
+    EXPECT_EQ(content.layout.pages[1].name, "10 - Hafen");
+    EXPECT_EQ(content.layout.pages[2].name, "karben");
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(content.layout.pages[i].id, std::int64_t(i));
+        EXPECT_TRUE(content.layout.pages[i].loaded);
+        EXPECT_EQ(content.layout.pages[i].page.elements.size(), 37U);
+    }
+    EXPECT_EQ(
+        content.layout.diagnostics.formatAll(),
+        "gleisbild.cs2: warning: the track plan index is missing; the 3 page file(s) in gleisbilder/ are "
+        "shown in the order of their names, numbered from 0\n");
+    ASSERT_TRUE(content.accessories) << "the article names come from magnetartikel.cs2 as before";
+}
+
+TEST(LayoutFolder, AnExportOfPagesWithoutIndexWritesANewIndexForThem) {
+    QTemporaryDir source, target;
+    const LayoutFolder::Content content = LayoutFolder::open(folderWithoutIndex(source));
+    const fs::path folder = target.path().toStdString();
+    ASSERT_EQ(LayoutFolder::write(folder, LayoutFolder::filesOf(content.layout.plan, content.layout.pages)),
+              "");
+    const LayoutFolder::Content again = LayoutFolder::open(folder);
+    ASSERT_EQ(again.problem, "");
+    EXPECT_EQ(again.extent, LayoutFolder::Extent::Folder);
+    ASSERT_EQ(again.layout.pages.size(), 3U);
+    EXPECT_EQ(again.layout.pages[1].name, "10 - Hafen");
+    EXPECT_EQ(again.layout.pages[1].id, 1);
+    EXPECT_FALSE(again.layout.diagnostics.hasErrors()) << again.layout.diagnostics.formatAll();
+}
+
+TEST(LayoutFolder, TheGleisbilderFolderItselfOpensItsPages) {
+    QTemporaryDir target;
+    const fs::path folder = folderWithoutIndex(target);
+    const LayoutFolder::Content content = LayoutFolder::open(folder / "config" / "gleisbilder");
+    ASSERT_EQ(content.problem, "");
+    EXPECT_EQ(content.configDirectory, folder / "config");
+    EXPECT_EQ(content.layout.pages.size(), 3U);
+}
+
+TEST(LayoutFolder, ASinglePageFileOpensAlone) {
+    const LayoutFolder::Content content =
+        LayoutFolder::open(gbertFolder() / "config" / "gleisbilder" / "karben.cs2");
+    ASSERT_EQ(content.problem, "");
+    EXPECT_EQ(content.extent, LayoutFolder::Extent::SinglePage);
+    EXPECT_EQ(content.configDirectory, gbertFolder() / "config");
+    ASSERT_EQ(content.layout.pages.size(), 1U);
+    EXPECT_EQ(content.layout.pages[0].name, "karben");
+    EXPECT_EQ(content.layout.pages[0].page.elements.size(), 37U);
+    ASSERT_TRUE(content.accessories) << "magnetartikel.cs2 beside gleisbilder/ names the articles";
+    EXPECT_EQ(content.layout.diagnostics.formatAll(), "");
+}
+
+TEST(LayoutFolder, TheIndexFileOpensItsFolder) {
+    const LayoutFolder::Content content = LayoutFolder::open(gbertFolder() / "config" / "gleisbild.cs2");
+    ASSERT_EQ(content.problem, "");
+    EXPECT_EQ(content.extent, LayoutFolder::Extent::Folder);
+    EXPECT_EQ(content.layout.pages.size(), 1U);
+}
+
+TEST(LayoutFolder, AFileThatIsNoPageIsRefusedWithWhatItHolds) {
+    const LayoutFolder::Content content = LayoutFolder::open(gbertFolder() / "config" / "magnetartikel.cs2");
+    EXPECT_NE(content.problem.find("magnetartikel.cs2 is not a page of a track plan (it holds "),
+              std::string::npos)
+        << content.problem;
 }
 
 TEST(LayoutFolder, RoundTripGivesTheCorpusFilesBackByteForByte) {

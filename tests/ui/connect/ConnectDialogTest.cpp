@@ -76,6 +76,22 @@ TEST_F(ConnectDialogTest, ShowsExamplesOfEveryKindOfAddress) {
     EXPECT_TRUE(examples.contains(QStringLiteral("can://socketcan/can0")));
 }
 
+// Issue 32: a station whose web server is not on port 80 (stellwerk-sim --http-port 8080) is named with
+// `?http=8080`; the dialog takes it, and a new host keeps it.
+TEST_F(ConnectDialogTest, AnAddressWithTheWebServerPortIsTakenAndKeptForANewHost) {
+    ConnectDialog dialog{QString()};
+    enter(dialog, QStringLiteral("tcp://127.0.0.1:15731?http=8080"));
+    EXPECT_TRUE(part<QPushButton>(dialog, "connectButton")->isEnabled())
+        << part<QLabel>(dialog, "urlError")->text().toStdString();
+    EXPECT_TRUE(part<QAbstractButton>(dialog, "useTcp")->isChecked());
+    EXPECT_EQ(part<QLineEdit>(dialog, "stationHost")->text(), QStringLiteral("127.0.0.1"));
+    QLineEdit* host = part<QLineEdit>(dialog, "stationHost");
+    host->clear();
+    QTest::keyClicks(host, QStringLiteral("10.0.0.7"));
+    EXPECT_EQ(dialog.url(), QStringLiteral("tcp://10.0.0.7:15731?http=8080"));
+    EXPECT_TRUE(part<QLabel>(dialog, "urlExamples")->text().contains(QStringLiteral("?http=8080")));
+}
+
 TEST_F(ConnectDialogTest, ConnectStoresTheAddressInTheSettings) {
     ConnectDialog dialog{QString()};
     enter(dialog, QStringLiteral(" tcp://192.168.2.5 "));

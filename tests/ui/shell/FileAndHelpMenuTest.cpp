@@ -9,17 +9,24 @@
 #include "trackplan/LayoutFileSettings.h"
 #include "trackplan/TrackPlanPanel.h"
 
+#include <QAbstractButton>
 #include <QAction>
+#include <QApplication>
 #include <QDir>
 #include <QFile>
+#include <QFileDialog>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMessageBox>
+#include <QScreen>
 #include <QSettings>
+#include <QShortcut>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
-#include <QTextBrowser>
 #include <QTest>
+#include <QTextBrowser>
+#include <QTimer>
 #include <QToolBar>
 #include <algorithm>
 #include <filesystem>
@@ -127,6 +134,58 @@ TEST_F(FileAndHelpMenuTest, ExportWritesTheFolderRemembersItAndConfirms) {
     done->accept();
 }
 
+namespace {
+
+// Answers the folder dialog that opens next: types `typed` into its name field and accepts. A message box
+// this brings up is closed, and the dialog too if it stays open, so that a refusal fails the test instead
+// of waiting for a person.
+void answerFolderDialog(const QString& typed) {
+    QTimer::singleShot(0, [typed] {
+        auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+        if (!dialog) {
+            ADD_FAILURE() << "no folder dialog";
+            return;
+        }
+        auto* boxes = new QTimer(dialog);
+        QObject::connect(boxes, &QTimer::timeout, [] {
+            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget()))
+                box->reject();
+        });
+        boxes->start(20);
+        dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"))->setText(typed);
+        static_cast<QDialog*>(dialog)->accept(); // QFileDialog's own accept() is protected
+        if (dialog->isVisible())
+            dialog->reject();
+    });
+}
+
+} // namespace
+
+// Issue 32: Qt's folder dialog refused a folder typed in that did not exist yet ("Directory not found").
+TEST_F(FileAndHelpMenuTest, ExportIntoAFolderTypedInThatIsNotThereYetMakesIt) {
+    QTemporaryDir target;
+    ASSERT_TRUE(target.isValid());
+    LayoutFileSettings::rememberExportFolder(target.path());
+    ASSERT_TRUE(window->layoutFiles()->open(gbertFolder()));
+    const QString typed = target.filePath(QStringLiteral("Anlage 2027/Export"));
+    answerFolderDialog(typed);
+    window->layoutFiles()->exportAction()->trigger();
+    EXPECT_TRUE(QFile::exists(typed + QStringLiteral("/config/gleisbild.cs2")));
+    EXPECT_EQ(LayoutFileSettings::exportFolder(), QDir::cleanPath(typed));
+    if (auto* done = window->findChild<QMessageBox*>(QStringLiteral("layoutExportedBox")))
+        done->accept();
+}
+
+TEST_F(FileAndHelpMenuTest, OpenTakesASingleTrackPlanPage) {
+    answerFolderDialog(gbertFolder() + QStringLiteral("/config/gleisbilder/karben.cs2"));
+    window->layoutFiles()->openAction()->trigger();
+    ASSERT_NE(window->trackPlan()->layout(), nullptr);
+    ASSERT_EQ(window->trackPlan()->pageTabs()->count(), 1);
+    EXPECT_EQ(window->trackPlan()->pageTabs()->tabText(0), QStringLiteral("karben"));
+    EXPECT_EQ(LayoutFileSettings::recent().value(0),
+              gbertFolder() + QStringLiteral("/config/gleisbilder/karben.cs2"));
+}
+
 TEST_F(FileAndHelpMenuTest, AFailedExportConfirmsNothingAndForgetsNothing) {
     QTemporaryDir target;
     ASSERT_TRUE(target.isValid());
@@ -165,6 +224,85 @@ TEST_F(FileAndHelpMenuTest, TheKeyListNamesTheMenuCommandsAndThePanelKeys) {
     EXPECT_TRUE(german.contains(KeyUse{QStringLiteral("Strg+E"), QStringLiteral("Gleisbild exportieren")}));
     EXPECT_TRUE(std::any_of(german.begin(), german.end(),
                             [](const KeyUse& k) { return k.keys == QStringLiteral("Leertaste"); }));
+}
+
+namespace {
+
+// Whether a row's keys ("Ctrl+O", "Up, Down, +, −", "Alt+1 … Alt+9") name `key`.
+bool covers(const QString& keys, const QString& key) {
+    for (const QString& part : keys.split(QStringLiteral(", "))) {
+        const QStringList range = part.split(QStringLiteral(" … "));
+        if (range.size() == 1 && part == key)
+            return true;
+        if (range.size() == 2 && key.size() == range[0].size() && key.chopped(1) == range[0].chopped(1) &&
+            key.back() >= range[0].back() && key.back() <= range[1].back())
+            return true;
+    }
+    return false;
+}
+
+bool listed(const QList<KeyUse>& keys, const QString& key) {
+    return std::any_of(keys.begin(), keys.end(), [&](const KeyUse& use) { return covers(use.keys, key); });
+}
+
+} // namespace
+
+// Issue 32: Ctrl+S, Delete, the keyboard's Page Up/Down, F12 and the bus monitor's keys were missing, and
+// nothing said that Escape on the bare window stops the layout.
+TEST_F(FileAndHelpMenuTest, TheKeyListHasEveryShortcutTheWindowRegisters) {
+    const QList<KeyUse> keys = KeyList::of(*window);
+    int checked = 0;
+    for (const QAction* action : window->findChildren<QAction*>())
+        for (const QKeySequence& key : action->shortcuts()) {
+            const QString text = key.toString(QKeySequence::NativeText);
+            EXPECT_TRUE(listed(keys, text)) << text.toStdString() << " of " << action->text().toStdString();
+            ++checked;
+        }
+    for (const QShortcut* shortcut : window->findChildren<QShortcut*>()) {
+        const QString text = shortcut->key().toString(QKeySequence::NativeText);
+        EXPECT_TRUE(listed(keys, text))
+            << text.toStdString() << " of " << shortcut->parent()->objectName().toStdString();
+        ++checked;
+    }
+    const auto* monitor = window->findChild<QWidget*>(QStringLiteral("busMonitorPanel"));
+    ASSERT_NE(monitor, nullptr);
+    for (const QAbstractButton* button : monitor->findChildren<QAbstractButton*>())
+        if (const QKeySequence key = QKeySequence::mnemonic(button->text()); !key.isEmpty()) {
+            EXPECT_TRUE(listed(keys, key.toString(QKeySequence::NativeText))) << button->text().toStdString();
+            ++checked;
+        }
+    EXPECT_GT(checked, 20);
+    for (const char* key : {"Ctrl+S", "Del", "PgUp", "F12", "Alt+P", "Alt+9"})
+        EXPECT_TRUE(listed(keys, QString::fromLatin1(key))) << key;
+}
+
+TEST_F(FileAndHelpMenuTest, TheKeyListSaysPlainlyThatEscapeOnTheBareWindowStopsTheLayout) {
+    const QList<KeyUse> keys = KeyList::of(*window);
+    const auto escape =
+        std::find_if(keys.begin(), keys.end(), [](const KeyUse& k) { return k.keys == "Esc"; });
+    ASSERT_NE(escape, keys.end());
+    EXPECT_EQ(escape->use,
+              QStringLiteral(
+                  "On the bare window (nothing open on top): STOP, track power off for the whole layout"));
+    ASSERT_NE(escape + 1, keys.end());
+    EXPECT_EQ((escape + 1)->keys, QStringLiteral("Esc"));
+    EXPECT_EQ((escape + 1)->use, QStringLiteral("In a dialog, menu or popup: closes it, and nothing else"));
+    const auto extra =
+        std::find_if(keys.begin(), keys.end(), [](const KeyUse& k) { return k.keys == "F12"; });
+    ASSERT_NE(extra, keys.end());
+    EXPECT_TRUE(extra->use.startsWith(QStringLiteral("STOP"))) << extra->use.toStdString();
+    EXPECT_LT(escape - keys.begin(), 3) << "the STOP keys come first";
+}
+
+TEST_F(FileAndHelpMenuTest, TheUserGuideOpensAtAReadableSize) {
+    EXPECT_EQ(GuideBrowser::readableSize(QSize(1366, 728)), QSize(911, 650));
+    EXPECT_EQ(GuideBrowser::readableSize(QSize(1920, 1050)), QSize(1280, 700));
+    EXPECT_EQ(GuideBrowser::readableSize(QSize(800, 600)), QSize(800, 600)) << "never larger than the screen";
+    GuideBrowser guide(GuideBrowser::startPage(), window.get());
+    const QSize available = window->screen()->availableGeometry().size();
+    EXPECT_EQ(guide.size(), GuideBrowser::readableSize(available));
+    EXPECT_GE(guide.width(), std::min(900, available.width()));
+    EXPECT_GE(guide.height(), std::min(650, available.height()));
 }
 
 TEST_F(FileAndHelpMenuTest, TheUserGuideOpensAtItsContentsAndFollowsLinks) {

@@ -135,8 +135,10 @@ TEST_F(DeskPictures, APictureCutOffMidwayIsNeverShownAndAppearsWhenTheStationIsB
     ASSERT_TRUE(QTest::qWaitFor(
         [&] { return pictures.status("BR 218") == connection::LocomotivePictures::Status::Failed; }, WaitMs));
     EXPECT_FALSE(showsPicture(throttle.picture()));
-    EXPECT_EQ(throttle.picture()->toolTip(),
-              "No picture “BR 218”: the station did not send it; asked again when it is back");
+    EXPECT_EQ(
+        throttle.picture()->toolTip(),
+        "No picture “BR 218”: the station did not send it; asked again when it is back\nLooked for at " +
+            web.address() + "/icons/BR 218.png");
 
     web.stop();
     QTest::qWait(1000);

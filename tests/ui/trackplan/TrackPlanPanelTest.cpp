@@ -14,11 +14,13 @@
 
 #include <QAction>
 #include <QImage>
+#include <QLabel>
 #include <QMenu>
 #include <QSignalSpy>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolButton>
 #include <gtest/gtest.h>
 
 using namespace stellwerk;
@@ -327,6 +329,121 @@ TEST(TrackPlanPanelFiles, AMissingFolderIsShownAsAProblemAndKeepsThePlan) {
     EXPECT_TRUE(panel.problemText().contains(QStringLiteral("/nonexistent/layout does not exist")))
         << panel.problemText().toStdString();
     EXPECT_EQ(panel.pageTabs()->count(), 1);
+}
+
+// Issue 32: a folder whose gleisbild.cs2 is missing was refused, although its pages were there.
+TEST(TrackPlanPanelFiles, PagesWithoutTheirIndexAreShownWithAWarning) {
+    QTemporaryDir folder;
+    const std::string page = "[gleisbildseite]\nelement\n .id=0x102\n .typ=gerade\n";
+    ASSERT_EQ(
+        cs2config::LayoutFolder::write(folder.path().toStdString(),
+                                       {{"gleisbilder/Bw.cs2", page}, {"gleisbilder/Bahnhof.cs2", page}}),
+        "");
+    TrackPlanPanel panel;
+    ASSERT_TRUE(panel.openFolder(folder.path())) << panel.problemText().toStdString();
+    ASSERT_EQ(panel.pageTabs()->count(), 2);
+    EXPECT_EQ(panel.pageTabs()->tabText(0), QStringLiteral("Bahnhof"));
+    EXPECT_EQ(panel.pageTabs()->tabText(1), QStringLiteral("Bw"));
+    EXPECT_EQ(panel.layout()->pages()[1].tiles.size(), 1U);
+    EXPECT_EQ(
+        panel.problemText(),
+        folder.filePath(QStringLiteral("config/gleisbild.cs2")) +
+            QStringLiteral(" is missing: the 2 page file(s) found in gleisbilder/ are shown in the order of "
+                           "their names. Export the layout to write a new gleisbild.cs2 for them."));
+}
+
+TEST(TrackPlanPanelFiles, ASinglePageFileOpensAlone) {
+    TrackPlanPanel panel;
+    ASSERT_TRUE(panel.openFolder(
+        QString::fromStdString((gbertFolder() / "config" / "gleisbilder" / "karben.cs2").string())))
+        << panel.problemText().toStdString();
+    ASSERT_EQ(panel.pageTabs()->count(), 1);
+    EXPECT_EQ(panel.pageTabs()->tabText(0), QStringLiteral("karben"));
+    EXPECT_EQ(panel.layout()->pages()[0].tiles.size(), 37U);
+}
+
+// The sample layout lists five pages and ships only "5 - Test.cs2": the other tabs say why they are empty.
+TEST(TrackPlanPanelFiles, AnEmptyTabOfAMissingPageSaysSoInsideTheTab) {
+    const auto sample =
+        std::filesystem::path(STELLWERK_SHARED_DIR) / "corpus/bob123456678__TrainControl/cs2_sample_layout";
+    TrackPlanPanel panel;
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(sample.string())));
+    ASSERT_EQ(panel.pageTabs()->count(), 5);
+    auto* notice = panel.pageTabs()->widget(0)->findChild<QLabel*>(QStringLiteral("emptyPageNotice"));
+    ASSERT_NE(notice, nullptr);
+    EXPECT_EQ(notice->text(),
+              QStringLiteral("This page has nothing to show: its file gleisbilder/1 - Main.cs2 is missing."));
+    EXPECT_EQ(notice->toolTip(),
+              QString::fromStdString((sample / "config/gleisbilder/1 - Main.cs2").string()));
+    EXPECT_EQ(panel.pageView(0), nullptr);
+    EXPECT_EQ(panel.pageTabs()->widget(4)->findChild<QLabel*>(QStringLiteral("emptyPageNotice")), nullptr);
+    ASSERT_NE(panel.pageView(4), nullptr) << "the page that is there is drawn";
+    panel.pageTabs()->setCurrentIndex(4);
+    EXPECT_GT(panel.tileSize(), 0);
+}
+
+// A bar made in English follows a switch to German (the findings' own words stay as the files say them).
+TEST(TrackPlanPanelFiles, TheProblemBarFollowsALanguageSwitch) {
+    Translations translations;
+    ASSERT_TRUE(translations.select(Language::English));
+    TrackPlanPanel panel;
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    ASSERT_TRUE(panel.problemText().startsWith(QStringLiteral("The layout's files disagree in 13 places:")))
+        << panel.problemText().toStdString();
+    ASSERT_TRUE(translations.select(Language::German));
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+    EXPECT_TRUE(panel.problemText().startsWith(
+        QStringLiteral("Die Dateien des Gleisplans widersprechen sich an 13 Stellen:")))
+        << panel.problemText().toStdString();
+    EXPECT_TRUE(panel.problemText().endsWith(QStringLiteral("... und 8 weitere.")))
+        << panel.problemText().toStdString();
+    auto* fold = panel.findChild<QToolButton*>(QStringLiteral("foldProblem"));
+    ASSERT_NE(fold, nullptr);
+    EXPECT_EQ(fold->text(), QStringLiteral("Alles zeigen")) << "seven lines start folded";
+    ASSERT_TRUE(translations.select(Language::English));
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+    EXPECT_TRUE(panel.problemText().startsWith(QStringLiteral("The layout's files disagree")));
+}
+
+// A long problem starts folded to its first line (it would cover most of the plan on a laptop); the user
+// unfolds it, folds it again, and dismisses it until the next problem.
+TEST(TrackPlanPanelFiles, TheProblemBarFoldsToOneLineAndCanBeDismissed) {
+    TrackPlanPanel panel;
+    panel.resize(900, 600);
+    panel.show();
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    auto* bar = panel.findChild<QWidget*>(QStringLiteral("trackPlanProblem"));
+    auto* text = panel.findChild<QLabel*>(QStringLiteral("problemText"));
+    auto* fold = panel.findChild<QToolButton*>(QStringLiteral("foldProblem"));
+    auto* dismiss = panel.findChild<QToolButton*>(QStringLiteral("dismissProblem"));
+    ASSERT_TRUE(bar && text && fold && dismiss);
+    EXPECT_FALSE(text->text().contains(QLatin1Char('\n'))) << "seven lines start folded";
+    EXPECT_TRUE(text->text().startsWith(QStringLiteral("The layout's files disagree in 13 place(s):")));
+    EXPECT_EQ(fold->text(), QStringLiteral("Show all"));
+    EXPECT_EQ(panel.problemText().count(QLatin1Char('\n')), 6) << "folding hides nothing for good";
+    const int foldedHeight = bar->sizeHint().height();
+    fold->click();
+    EXPECT_EQ(text->text().count(QLatin1Char('\n')), 6) << "unfolded: the heading, five findings, the rest";
+    EXPECT_GT(bar->sizeHint().height(), 2 * foldedHeight);
+    EXPECT_EQ(fold->text(), QStringLiteral("Fold"));
+    fold->click();
+    EXPECT_FALSE(text->text().contains(QLatin1Char('\n')));
+    dismiss->click();
+    EXPECT_FALSE(bar->isVisible());
+    EXPECT_EQ(panel.problemText(), QString());
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    EXPECT_TRUE(bar->isVisible()) << "the next problem shows again";
+}
+
+// A short problem is shown whole, without a fold button.
+TEST(TrackPlanPanelFiles, AShortProblemIsShownWholeWithoutAFoldButton) {
+    TrackPlanPanel panel;
+    panel.show();
+    EXPECT_FALSE(panel.openFolder(QStringLiteral("/nonexistent/layout")));
+    auto* fold = panel.findChild<QToolButton*>(QStringLiteral("foldProblem"));
+    ASSERT_NE(fold, nullptr);
+    EXPECT_FALSE(fold->isVisible());
+    EXPECT_EQ(panel.findChild<QLabel*>(QStringLiteral("problemText"))->text(), panel.problemText());
 }
 
 TEST(TrackPlanPanelFiles, ExportingWithoutALayoutSaysWhy) {
