@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Makes every picture in docs/screenshots/ from the current build, on a virtual screen with settings of its
 # own (two throttles open on the demo's running trains) and the embedded simulated station. Needs xvfb-run
-# (package xvfb) and a build in build/.
+# (package xvfb), openbox and a build in build/.
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -13,13 +13,23 @@ printf '[throttles]\nlocomotives=0x4001, 0x4002\n' >"$config/Stellwerk/Stellwerk
 
 app() { XDG_CONFIG_HOME=$config xvfb-run -a -s "-screen 0 1920x1080x24" build/app/gui/stellwerk "$@"; }
 
-# The first start on a laptop: no throttle open yet, the throttle page offers locomotives to drive.
-first=$(mktemp -d)
-XDG_CONFIG_HOME=$first xvfb-run -a -s "-screen 0 1920x1080x24" build/app/gui/stellwerk --size 1366x768 \
-    --screenshot "$shots/main-window-first-start.png"
-XDG_CONFIG_HOME=$first LANG=de_DE.UTF-8 xvfb-run -a -s "-screen 0 1920x1080x24" build/app/gui/stellwerk \
-    --size 1366x768 --screenshot "$shots/main-window-first-start-de.png"
-rm -rf "$first"
+# The first start on a laptop (1366 × 768) under a window manager (openbox), with fresh settings: the window
+# as it really opens there, no throttle open yet, the throttle page offers locomotives to drive.
+first_start() { # LANG file
+    local first
+    first=$(mktemp -d)
+    cat >"$first/run.sh" <<INSIDE
+#!/usr/bin/env bash
+QT_QPA_PLATFORM=xcb "$PWD/build/app/gui/stellwerk" --simulated --screenshot "$PWD/$shots/$2"
+openbox --exit 2>/dev/null
+INSIDE
+    chmod +x "$first/run.sh"
+    XDG_CONFIG_HOME=$first LANG=$1 xvfb-run -a -s "-screen 0 1366x768x24" \
+        openbox --sm-disable --startup "$first/run.sh" 2>/dev/null || true
+    rm -rf "$first"
+}
+first_start en_US.UTF-8 main-window-first-start.png
+first_start de_DE.UTF-8 main-window-first-start-de.png
 
 # The whole desk on a laptop's screen and on a full-HD one, in English and German.
 app --size 1366x768 --screenshot "$shots/main-window.png"
@@ -43,4 +53,4 @@ LANG=de_DE.UTF-8 app --panel handheldsPanel --size 1920x1080 --screenshot "$shot
 # The single panels, drawn offscreen by their widget tests; and the whole desk with the track power off and
 # with the station silent ("not reported"), at both sizes and in both languages (StationTrustTest).
 export QT_QPA_PLATFORM=offscreen STELLWERK_SCREENSHOT_DIR=$PWD/$shots
-build/tests/ui/stellwerk-ui-tests --gtest_filter='*Screenshot*:ThrottlePanelTest.ThreeThrottles*:TrackPlanPanelTest.TheDemoPlanIsDrawnInLightAndDarkPalettes:StationTrustTest.While*:StationTrustTest.WithThePowerOff*'
+build/tests/ui/stellwerk-ui-tests --gtest_filter='*Screenshot*:ThrottlePanelTest.ThreeThrottles*:TrackPlanPanelTest.TheDemoPlanIsDrawnInLightAndDarkPalettes:StationTrustTest.While*:StationTrustTest.WithThePowerOff*:AfterTroubleOnTheDesk.AStalledStation*'

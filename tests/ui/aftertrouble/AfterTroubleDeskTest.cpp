@@ -28,6 +28,18 @@ protected:
         railway()->setSpeed(loco, speed);
         return QTest::qWaitFor([&] { return railway()->locomotive(loco)->speed() == speed; }, CommandMs);
     }
+    // For docs/screenshots: the desk with the notice, in English and German, when STELLWERK_SCREENSHOT_DIR is
+    // set.
+    void saveScreenshots() {
+        const QString folder = qEnvironmentVariable("STELLWERK_SCREENSHOT_DIR");
+        if (folder.isEmpty())
+            return;
+        EXPECT_TRUE(window->grab().save(folder + QStringLiteral("/after-trouble.png")));
+        ASSERT_TRUE(translations.select(Language::German));
+        QCoreApplication::processEvents();
+        EXPECT_TRUE(window->grab().save(folder + QStringLiteral("/after-trouble-de.png")));
+        ASSERT_TRUE(translations.select(Language::English));
+    }
     QAction* stationMenuAction(const QString& name) const {
         return window->findChild<QMenu*>(QStringLiteral("stationMenu"))->findChild<QAction*>(name);
     }
@@ -53,6 +65,7 @@ TEST_F(AfterTroubleOnTheDesk, AStalledStationEndsWhereTheDeskShowedItAndTheStatu
     EXPECT_TRUE(said.first().endsWith(QStringLiteral("stopped."))) << said.first().toStdString();
     EXPECT_EQ(window->passingMessage()->text(), said.first());
     EXPECT_TRUE(notice->text().contains(QStringLiteral("1 set back"))) << notice->text().toStdString();
+    saveScreenshots();
     notice->dismiss();
     EXPECT_FALSE(notice->isVisible());
 }
@@ -66,8 +79,7 @@ TEST_F(AfterTroubleOnTheDesk, BringingTheLayoutBackInStepFromTheStationMenu) {
     bringBack->trigger();
     ASSERT_TRUE(QTest::qWaitFor([&] { return done.count() == 1; }, 3 * CommandMs));
     EXPECT_EQ(stationSpeed(Br218), 300) << "its confirmed speed, sent again";
-    EXPECT_TRUE(
-        window->passingMessage()->text().startsWith(QStringLiteral("The layout is back in step")))
+    EXPECT_TRUE(window->passingMessage()->text().startsWith(QStringLiteral("The layout is back in step")))
         << window->passingMessage()->text().toStdString();
 }
 
