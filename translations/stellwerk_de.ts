@@ -131,7 +131,7 @@
     </message>
     <message>
         <source>speed %1 %</source>
-        <translation>Fahrstufe %1 %</translation>
+        <translation>Geschwindigkeit %1 %</translation>
     </message>
     <message>
         <source>backward</source>
@@ -1143,12 +1143,16 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         </translation>
     </message>
     <message>
-        <source>Click for the list.</source>
-        <translation>Für die Liste klicken.</translation>
-    </message>
-    <message>
         <source>Dismiss</source>
         <translation>Verwerfen</translation>
+    </message>
+    <message>
+        <source>Everything set back since the last Dismiss, with its time</source>
+        <translation>Alles seit dem letzten „Verwerfen“ Zurückgesetzte, mit Uhrzeit</translation>
+    </message>
+    <message>
+        <source>I have read it: hide this strip until something is set back again</source>
+        <translation>Gelesen: diese Leiste ausblenden, bis wieder etwas zurückgesetzt wird</translation>
     </message>
 </context>
 <context>
@@ -2368,6 +2372,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Devices</source>
         <translation>Geräte</translation>
+    </message>
+    <message>
+        <source>Set back after trouble</source>
+        <translation>Nach Störung zurückgesetzt</translation>
     </message>
 </context>
 <context>

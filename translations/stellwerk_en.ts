@@ -1139,11 +1139,15 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         </translation>
     </message>
     <message>
-        <source>Click for the list.</source>
+        <source>Dismiss</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Dismiss</source>
+        <source>Everything set back since the last Dismiss, with its time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>I have read it: hide this strip until something is set back again</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2363,6 +2367,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Devices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set back after trouble</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -2,12 +2,15 @@
 
 #include "model/UnconfirmedCommands.h"
 
+#include <QFrame>
 #include <QPointer>
 #include <QTime>
-#include <QToolButton>
 #include <vector>
 
+class QLabel;
 class QMenu;
+class QPushButton;
+class QToolButton;
 
 namespace stellwerk::model {
 class Railway;
@@ -15,11 +18,11 @@ class Railway;
 
 namespace stellwerk::ui {
 
-// The status bar's word that Stellwerk brought something back after a command the station did not confirm
-// (Railway::stateCorrected): hidden until that happens, then "⚠ 2 set back" until the person has read the
-// list (a click shows each with its time) and dismissed it. Each new one is also passed on as a sentence
-// for the status bar's message line.
-class CorrectionNotice final : public QToolButton {
+// The amber strip below the STOP key that says what Stellwerk brought back after a command the station
+// did not confirm (Railway::stateCorrected): hidden until that happens, then the newest sentence, "⚠ 2 set
+// back" with the whole list and each one's time, and Dismiss. It stays until the person dismissed it: it
+// says that something on the layout happened that nobody asked for at that moment.
+class CorrectionNotice final : public QFrame {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(CorrectionNotice)
 
@@ -29,10 +32,14 @@ public:
     void setRailway(model::Railway* railway);
     // The sentences of what was brought back since the last dismissal, oldest first.
     QStringList entries() const;
+    // What the strip says now: the count, and the newest sentence.
+    QString summary() const;
+    QString newest() const;
     void dismiss();
 
 signals:
-    void corrected(const QString& sentence);
+    // The strip wants to be shown (something was set back) or hidden (dismissed).
+    void wanted(bool shown);
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -50,7 +57,10 @@ private:
 
     QPointer<model::Railway> m_railway;
     std::vector<Entry> m_entries;
+    QLabel* m_sentence;
+    QToolButton* m_list;
     QMenu* m_menu;
+    QPushButton* m_dismiss;
 };
 
 } // namespace stellwerk::ui

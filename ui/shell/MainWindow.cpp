@@ -73,6 +73,7 @@ MainWindow::MainWindow(Translations& translations, QWidget* parent)
     createStatusBar();
     retranslate();
     m_placeRemembered = m_workspace->restore();
+    m_noticeBar->setVisible(false); // a remembered arrangement never shows an empty strip
 }
 
 QRect MainWindow::availableArea() {
@@ -194,6 +195,16 @@ void MainWindow::createToolBar() {
     m_stopKeys = new EmergencyStopKeys(this, this);
     m_stopKeys->setExtraKey(StopKeySettings::load());
     connect(m_stopKeys, &EmergencyStopKeys::stopRequested, m_stopGo, &StopGoButton::stopEverything);
+    // What was brought back after trouble, in a row of its own below the STOP key until it was read.
+    addToolBarBreak();
+    m_noticeBar = addToolBar(QString());
+    m_noticeBar->setObjectName(QStringLiteral("correctionToolBar"));
+    m_noticeBar->setMovable(false);
+    m_noticeBar->toggleViewAction()->setEnabled(false);
+    m_corrections = new CorrectionNotice(m_noticeBar);
+    m_noticeBar->addWidget(m_corrections);
+    m_noticeBar->setVisible(false);
+    connect(m_corrections, &CorrectionNotice::wanted, m_noticeBar, &QToolBar::setVisible);
 }
 
 void MainWindow::createFileMenu() {
@@ -347,11 +358,6 @@ void MainWindow::createStatusBar() {
     m_startupProgress = new StartupProgress(this);
     m_traffic = new TrafficStatus(this);
     m_power = new PowerStatus(this);
-    // What was brought back after trouble stays until read; the newest also passes by on the left.
-    m_corrections = new CorrectionNotice(this);
-    statusBar()->addPermanentWidget(m_corrections);
-    connect(m_corrections, &CorrectionNotice::corrected, this,
-            [this](const QString& sentence) { m_message->showMessage(sentence, 20000); });
     for (QWidget* part : {static_cast<QWidget*>(m_stationStatus), static_cast<QWidget*>(m_startupProgress),
                           static_cast<QWidget*>(m_traffic), static_cast<QWidget*>(m_power)}) {
         part->setContentsMargins(8, 0, 8, 0); // room between the parts, as between a panel's lamps
@@ -379,6 +385,7 @@ void MainWindow::retranslate() {
     m_stopAction->setText(tr("&Stop everything") + QStringLiteral("\t") + stopKeysText());
     m_stopAction->setStatusTip(tr("Switch the track power off: every train stops"));
     m_toolBar->setWindowTitle(tr("Stop and go"));
+    m_noticeBar->setWindowTitle(tr("Set back after trouble"));
     m_panelsMenu->setTitle(tr("&Panels"));
     m_resetLayoutAction->setText(tr("&Reset panel layout"));
     m_resetLayoutAction->setStatusTip(tr("Put every panel back where it was at the first start"));

@@ -126,6 +126,7 @@ private:
     LocomotivePanel* m_locomotivePanel = nullptr;
     ProgrammingPanel* m_programmingPanel = nullptr;
     QToolBar* m_toolBar = nullptr;
+    QToolBar* m_noticeBar = nullptr;
     StopGoButton* m_stopGo = nullptr;
     EmergencyStopKeys* m_stopKeys = nullptr;
     QMenu* m_fileMenu = nullptr;

@@ -1,6 +1,7 @@
 #include "trackplan/NameElision.h"
 
 #include <QFontMetrics>
+#include <algorithm>
 
 namespace stellwerk::ui {
 
@@ -24,9 +25,14 @@ QString NameElision::shorten(const QString& name, const QFontMetrics& metrics, i
         if (fits(text, metrics, width))
             return text;
     }
-    // Too narrow even for that: the last word alone ("…1"), or as much of the end as fits.
-    const QString lastWord = Ellipsis + name.mid(name.lastIndexOf(QLatin1Char(' ')) + 1);
-    return fits(lastWord, metrics, width) ? lastWord : metrics.elidedText(name, Qt::ElideLeft, width);
+    // Too narrow even for that: the last word alone ("…1"); else a number keeps its end ("…12") and a
+    // word both ends of the name ("E…t" and "A…t" for "Einfahrt West" and "Ausfahrt Ost", which end alike).
+    const QString word = name.mid(name.lastIndexOf(QLatin1Char(' ')) + 1);
+    if (fits(Ellipsis + word, metrics, width))
+        return Ellipsis + word;
+    const bool number = std::all_of(word.begin(), word.end(), [](QChar c) { return c.isDigit(); });
+    const QString ends = name.trimmed().left(1) + Ellipsis + name.trimmed().right(1);
+    return !number && fits(ends, metrics, width) ? ends : metrics.elidedText(name, Qt::ElideLeft, width);
 }
 
 qsizetype NameElision::tailLength(const QString& name) {

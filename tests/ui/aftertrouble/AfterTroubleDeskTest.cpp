@@ -10,6 +10,7 @@
 
 #include <QMenu>
 #include <QMenuBar>
+#include <QPushButton>
 #include <QSignalSpy>
 
 namespace stellwerk::ui::test {
@@ -36,7 +37,7 @@ protected:
             return;
         EXPECT_TRUE(window->grab().save(folder + QStringLiteral("/after-trouble.png")));
         ASSERT_TRUE(translations.select(Language::German));
-        QCoreApplication::processEvents();
+        QTest::qWait(300); // the panels lay out their German texts
         EXPECT_TRUE(window->grab().save(folder + QStringLiteral("/after-trouble-de.png")));
         ASSERT_TRUE(translations.select(Language::English));
     }
@@ -63,11 +64,14 @@ TEST_F(AfterTroubleOnTheDesk, AStalledStationEndsWhereTheDeskShowedItAndTheStatu
     EXPECT_TRUE(said.first().startsWith(QStringLiteral("BR 218"))) << said.first().toStdString();
     EXPECT_TRUE(said.first().contains(QStringLiteral("speed 20 %"))) << said.first().toStdString();
     EXPECT_TRUE(said.first().endsWith(QStringLiteral("stopped."))) << said.first().toStdString();
-    EXPECT_EQ(window->passingMessage()->text(), said.first());
-    EXPECT_TRUE(notice->text().contains(QStringLiteral("1 set back"))) << notice->text().toStdString();
+    EXPECT_EQ(notice->newest(), said.first());
+    EXPECT_TRUE(notice->summary().contains(QStringLiteral("1 set back"))) << notice->summary().toStdString();
+    EXPECT_TRUE(notice->isVisible()) << "in its row below the STOP key until read";
+    ASSERT_TRUE(reported(true));
     saveScreenshots();
-    notice->dismiss();
+    notice->findChild<QPushButton*>(QStringLiteral("dismissCorrections"))->click();
     EXPECT_FALSE(notice->isVisible());
+    EXPECT_TRUE(notice->entries().isEmpty());
 }
 
 TEST_F(AfterTroubleOnTheDesk, BringingTheLayoutBackInStepFromTheStationMenu) {

@@ -116,6 +116,16 @@ TEST(NameElision, KeepsTheLastWordWithTheCharacterBeforeIt) {
                                    metrics.horizontalAdvance(QStringLiteral("Bahn…"))),
               QStringLiteral("Bahn…"))
         << "a single word without a number ends where the room ends";
+    const int narrow = metrics.horizontalAdvance(QStringLiteral("W…t"));
+    const QString west = NameElision::shorten(QStringLiteral("Einfahrt West"), metrics, narrow);
+    const QString east = NameElision::shorten(QStringLiteral("Ausfahrt Ost"), metrics, narrow);
+    EXPECT_NE(west, east) << "names that end alike keep their start too: " << west.toStdString();
+    EXPECT_TRUE(west.startsWith(QLatin1Char('E'))) << west.toStdString();
+    EXPECT_TRUE(east.startsWith(QLatin1Char('A'))) << east.toStdString();
+    EXPECT_EQ(NameElision::shorten(QStringLiteral("Block 12"), metrics,
+                                   metrics.horizontalAdvance(QStringLiteral("…12"))),
+              QStringLiteral("…12"))
+        << "a number keeps its end";
 }
 
 TEST(TileTag, TagsAreDrawnInAReadableSize) {
