@@ -51,6 +51,7 @@ TrackGraph GraphAssembly::run() {
     buildBlocks();
     checkDrawings();
     buildConnections();
+    checkTurnoutDrawings();
     checkRoutes();
     findConflicts();
     graph_.problems_ = problems_.take();

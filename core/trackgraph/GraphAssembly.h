@@ -7,7 +7,9 @@
 
 #include <cstdint>
 #include <map>
+#include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace stellwerk::trackgraph {
@@ -48,6 +50,8 @@ private:
     // Connections (GraphConnections.cpp).
     void buildConnections();
     Connection connectionOf(const RawWay& way) const;
+    void checkTurnoutDrawings();
+    std::string describeJoins(const std::set<std::tuple<int, int, int>>& joins, TurnoutKind kind) const;
     void checkRoutes();
     void checkRoute(const cs2config::Route& route, const std::vector<std::int64_t>& turnoutArticles);
     void reportRoute(const cs2config::Route& route, const std::map<std::int64_t, int>& settings);

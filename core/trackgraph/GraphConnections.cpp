@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <tuple>
 
 namespace stellwerk::trackgraph {
@@ -88,6 +89,47 @@ Connection GraphAssembly::connectionOf(const RawWay& way) const {
     for (const TrackStep& step : way.path)
         connection.lengthMm += step.lengthMm;
     return connection;
+}
+
+// A turnout drawn on several pages is one turnout: each drawing must join the same blocks in the same
+// positions. Compared with the drawing first in plan order; drawings on one page are separate turnouts
+// that share an address (a crossover), not drawings of one.
+void GraphAssembly::checkTurnoutDrawings() {
+    std::map<TileId, std::set<std::tuple<int, int, int>>> joins; // turnout tile -> (block, block, position)
+    for (const RawWay& way : ways_)
+        for (const TurnoutOnWay& turnout : way.turnouts) {
+            const int from = int(blockOfPiece_[way.from.piece]) + 1;
+            const int to = int(blockOfPiece_[way.to.piece]) + 1;
+            joins[turnout.tile].insert({std::min(from, to), std::max(from, to), turnout.position});
+        }
+    std::map<std::int64_t, TileId> first;
+    const TrackTiles& tiles = graph_.tiles_;
+    for (TileId id = 0; id < tiles.size(); ++id) {
+        const Tile& tile = tiles.tile(id);
+        if (tile.role() != TileRole::Turnout || !tile.accessory)
+            continue;
+        const auto [reference, fresh] = first.emplace(*tile.accessory, id);
+        if (!fresh && tiles.tile(reference->second).page != tile.page &&
+            joins[id] != joins[reference->second])
+            problems_.add(ProblemKind::DrawingsDisagree, id,
+                          "Turnout " + std::to_string(*tile.accessory) + " is also drawn at " +
+                              describePlace(tiles, reference->second) + ", and the drawings differ: here " +
+                              describeJoins(joins[id], tile.shape.turnout) + ", there " +
+                              describeJoins(joins[reference->second], tile.shape.turnout) +
+                              "; make the pages agree.");
+    }
+}
+
+std::string GraphAssembly::describeJoins(const std::set<std::tuple<int, int, int>>& joins,
+                                         TurnoutKind kind) const {
+    if (joins.empty())
+        return "it joins no blocks";
+    std::string text;
+    for (const auto& [a, b, position] : joins)
+        text += std::string(text.empty() ? "" : ", ") + "'" + graph_.blocks_[std::size_t(a - 1)].name +
+                "' and '" + graph_.blocks_[std::size_t(b - 1)].name + "' " +
+                std::string(positionName(kind, position));
+    return "it joins " + text;
 }
 
 void GraphAssembly::checkRoutes() {

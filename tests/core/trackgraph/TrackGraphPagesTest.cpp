@@ -190,3 +190,45 @@ TEST(TrackGraphPages, AContactOnlyTheOverviewShowsIsPlacedAlongTheFirstDrawing) 
     EXPECT_EQ(block.contacts[1].toMm, 600);
     EXPECT_EQ(countProblems(graph, ProblemKind::DrawingsDisagree), 1U);
 }
+
+namespace {
+
+// The turnout fan of TrackGraphTest on an overview page: the same contacts and turnout 5; `swapped` draws
+// its straight leg to contact 3 and its diverging leg to contact 2.
+DrawnPage fanOverview(bool swapped) {
+    DrawnPage page(1, "Übersicht");
+    page.bufferStop(0, 1, true).contact(1, 1, 1).accessory(2, 1, "linksweiche", 3, 5);
+    page.straight(3, 3, 1).contact(4, 1, swapped ? 3 : 2).bufferStop(5, 1, false);
+    page.tile(2, 0, "bogen").contact(3, 0, swapped ? 2 : 3).bufferStop(4, 0, false);
+    return page;
+}
+
+DrawnPage fanDetail() {
+    DrawnPage page(0, "Bahnhof");
+    page.bufferStop(0, 1, true).contact(1, 1, 1, "Zufahrt").accessory(2, 1, "linksweiche", 3, 5);
+    page.straight(3, 3, 1).contact(4, 1, 2, "Gerade").bufferStop(5, 1, false);
+    page.tile(2, 0, "bogen").contact(3, 0, 3, "Abzweig").bufferStop(4, 0, false);
+    return page;
+}
+
+} // namespace
+
+TEST(TrackGraphPages, ATurnoutDrawnOnTwoPagesIsOneTurnout) {
+    const TrackGraph graph = derived({fanDetail(), fanOverview(false)});
+    EXPECT_EQ(graph.blocks().size(), 3U);
+    EXPECT_EQ(graph.connections().size(), 4U); // the overview's ways are the detail's
+    EXPECT_TRUE(graph.problems().empty());
+}
+
+TEST(TrackGraphPages, ATurnoutWhoseDrawingsLeadElsewhereIsReported) {
+    const TrackGraph graph = derived({fanDetail(), fanOverview(true)});
+    ASSERT_EQ(graph.problems().size(), 1U);
+    const Problem& problem = graph.problems()[0];
+    EXPECT_EQ(problem.kind, ProblemKind::DrawingsDisagree);
+    EXPECT_EQ(placeOf(graph, problem.tile), (TilePlace{1, 2, 1}));
+    EXPECT_EQ(problem.text,
+              "Turnout 5 is also drawn at page 'Bahnhof', column 2, row 1, and the drawings differ: "
+              "here it joins 'Abzweig' and 'Zufahrt' straight, 'Zufahrt' and 'Gerade' diverging, "
+              "there it joins 'Abzweig' and 'Zufahrt' diverging, 'Zufahrt' and 'Gerade' straight; "
+              "make the pages agree.");
+}
