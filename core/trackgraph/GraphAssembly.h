@@ -45,6 +45,7 @@ private:
     void indexBlocks();
     void checkDrawings();
     void compareDrawings(std::uint32_t piece, std::uint32_t reference);
+    std::string drawingDifference(std::uint32_t piece, std::uint32_t reference) const;
     std::string neighbours(std::uint32_t piece, End end) const;
 
     // Connections (GraphConnections.cpp).

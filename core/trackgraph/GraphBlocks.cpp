@@ -184,22 +184,27 @@ void GraphAssembly::compareDrawings(std::uint32_t piece, std::uint32_t reference
                 block.name + "'.");
         return;
     }
-    std::vector<ContactKey> mineOriented = contactsOf(piece);
-    if (flipped_[piece] != flipped_[reference])
-        std::reverse(mineOriented.begin(), mineOriented.end());
-    std::string difference;
-    if (mineOriented != theirs)
-        difference =
-            "here its block holds contacts " + contactList(mineOriented) + ", there " + contactList(theirs);
-    else if (neighbours(piece, End::A) != neighbours(reference, End::A) ||
-             neighbours(piece, End::B) != neighbours(reference, End::B))
-        difference = "here it lies between " + neighbours(piece, End::A) + " and " +
-                     neighbours(piece, End::B) + ", there between " + neighbours(reference, End::A) +
-                     " and " + neighbours(reference, End::B);
+    const std::string difference = drawingDifference(piece, reference);
     if (!difference.empty())
         problems_.add(ProblemKind::DrawingsDisagree, here,
                       contact + " is also drawn at " + describePlace(tiles, there) +
                           ", and the drawings differ: " + difference + "; make the pages agree.");
+}
+
+// How two drawings of a block on different pages differ: in their contacts (in the block's direction), else
+// in what their ends lead to; empty when they agree.
+std::string GraphAssembly::drawingDifference(std::uint32_t piece, std::uint32_t reference) const {
+    std::vector<ContactKey> mine = contactsOf(piece);
+    std::vector<ContactKey> theirs = contactsOf(reference);
+    if (flipped_[piece] != flipped_[reference])
+        std::reverse(mine.begin(), mine.end());
+    if (mine != theirs)
+        return "here its block holds contacts " + contactList(mine) + ", there " + contactList(theirs);
+    if (neighbours(piece, End::A) == neighbours(reference, End::A) &&
+        neighbours(piece, End::B) == neighbours(reference, End::B))
+        return {};
+    return "here it lies between " + neighbours(piece, End::A) + " and " + neighbours(piece, End::B) +
+           ", there between " + neighbours(reference, End::A) + " and " + neighbours(reference, End::B);
 }
 
 // What one end of a drawing leads to: the blocks its ways reach, else how the track ends there.

@@ -142,6 +142,8 @@ std::optional<BlockEnd> TrackGraph::blockEndAt(TileId tile, Port port) const {
 }
 
 Lead TrackGraph::follow(const BlockEnd& from, const PositionOf& positionOf) const {
+    if (from.block < 1 || from.block > int(blocks_.size()))
+        return {};
     const TrackJoints joints(tiles_, links_);
     const BlockEndInfo& start = block(from.block).end(from.end);
     Lead lead;

@@ -180,7 +180,8 @@ public:
     // The problems on a tile.
     std::vector<const Problem*> problemsAt(TileId tile) const;
 
-    // Where a train leaving the block through `from` runs with the turnouts where `positionOf` says.
+    // Where a train leaving the block through `from` runs with the turnouts where `positionOf` says (an
+    // open end for a block that does not exist).
     Lead follow(const BlockEnd& from, const PositionOf& positionOf) const;
     // The block end a train leaving a tile through a port enters right there, if any.
     std::optional<BlockEnd> blockEndAt(TileId tile, Port port) const;
