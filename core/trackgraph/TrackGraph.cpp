@@ -27,6 +27,8 @@ LeadKind leadKindOf(Beyond beyond) {
 std::optional<std::uint8_t> legToTake(const Tile& tile, TileId id, Port entry, const PositionOf& positionOf,
                                       Lead& lead) {
     const auto legs = tile.shape.legs();
+    lead.facing =
+        std::count_if(legs.begin(), legs.end(), [entry](const Leg& leg) { return leg.touches(entry); }) > 1;
     std::optional<int> position;
     if (tile.role() == TileRole::Turnout) {
         position = tile.accessory && positionOf ? positionOf(*tile.accessory) : std::nullopt;

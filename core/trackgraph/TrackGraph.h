@@ -134,6 +134,7 @@ struct Lead {
     std::vector<TrackStep> path;   // the tiles passed before that (the turnout itself excluded)
     std::optional<TileId> turnout; // SetAgainst, NotSet: the turnout
     std::optional<std::int64_t> article;
+    bool facing = false; // SetAgainst, NotSet: the train met its points (else it runs through it trailing)
 };
 
 // A turnout's position by keyboard number; nullopt while it is not known or moving.

@@ -144,6 +144,8 @@ TEST(TrackGraph, FollowingTheTrackOverATurnout) {
     const Lead against = graph.follow({3, End::A}, positions({{5, 0}}));
     EXPECT_EQ(against.kind, LeadKind::SetAgainst);
     EXPECT_EQ(against.article, 5);
+    EXPECT_FALSE(against.facing); // trailing through it
+    EXPECT_TRUE(graph.follow({2, End::B}, positions({})).facing);
     EXPECT_EQ(placeOf(graph, *against.turnout), (TilePlace{0, 2, 1}));
     EXPECT_EQ(graph.follow({2, End::A}, positions({})).kind, LeadKind::BufferStop);
 }
