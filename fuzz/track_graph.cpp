@@ -4,7 +4,8 @@
 // Invariants (trackgraph::brokenInvariants): every contact in at most one block; ids count from 1; every
 // connection joins two existing block ends with positions that set its legs, and conflicts both ways;
 // every block runs from end a to end b over joined track. Besides: deriving twice, or from the pages listed
-// in the opposite order, gives the same graph; the JSON is valid.
+// in the opposite order, gives the same graph; the JSON is valid; following the track from any block end
+// ends at a block that exists.
 #include "FuzzSupport.h"
 #include "cs2config/AccessoryFile.h"
 #include "cs2config/Document.h"
@@ -74,6 +75,24 @@ trackgraph::GraphSource sourceOf(const Files& files, bool reversed) {
     return source;
 }
 
+// Following the track from every block end (turnouts all diverging, then all straight) ends somewhere that
+// exists, after a joined path.
+void checkFollowing(const trackgraph::TrackGraph& graph) {
+    for (const int position : {0, 1})
+        for (const trackgraph::Block& block : graph.blocks())
+            for (const trackgraph::End end : {trackgraph::End::A, trackgraph::End::B}) {
+                const trackgraph::Lead lead = graph.follow(
+                    {block.id, end}, [position](std::int64_t) { return std::optional(position); });
+                const bool reached =
+                    lead.kind != trackgraph::LeadKind::Block ||
+                    (lead.reached.block >= 1 && lead.reached.block <= int(graph.blocks().size()));
+                fuzz::check(reached, "following the track reaches a block that does not exist");
+                for (const trackgraph::TrackStep& step : lead.path)
+                    fuzz::check(step.tile < graph.tiles().size(),
+                                "following the track passes a tile that does not exist");
+            }
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -85,6 +104,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const std::string& rule : trackgraph::brokenInvariants(graph))
         broken += rule + "\n";
     fuzz::check(broken.empty(), "a track graph invariant is broken", broken);
+    checkFollowing(graph);
     const std::string json = trackgraph::toJson(graph);
     fuzz::check(fuzz::isJsonDocument(json, true), "the track graph's JSON is not valid", json);
     fuzz::check(trackgraph::toJson(trackgraph::TrackGraph::derive(sourceOf(files, false))) == json,
