@@ -5,6 +5,7 @@
 //      late the event loop serves a 5 ms timer (the UI's responsiveness).
 // A plain harness printing figures. Run: QT_QPA_PLATFORM=offscreen build/bench/stellwerk-trackplan-bench
 
+#include "BenchmarkPage.h"
 #include "connection/StationConnection.h"
 #include "cs2config/TrackElementType.h"
 #include "model/Railway.h"
@@ -37,20 +38,11 @@ using namespace stellwerk;
 
 namespace {
 
-// A 50 x 40 page with 2,000 tiles cycling through every element type and rotation, named "Gleis" (as when
-// the figures of issue 13 were taken) or each with a name of its own (every name laid out anew: the worst).
+// The benchmarks' 2,000-tile page (BenchmarkPage.h) as the plan's model.
 model::TrackLayout bigLayout(bool ownNames) {
     station::DownloadedPage page;
     page.name = "bench";
-    const auto types = cs2config::trackElementTypes();
-    for (int i = 0; i < 2000; ++i) {
-        cs2config::TrackElement element;
-        element.position = {0, std::uint8_t(i % 50), std::uint8_t(i / 50)};
-        element.type = std::string(types[std::size_t(i) % types.size()].name);
-        element.rotation = (i / int(types.size())) % 4;
-        element.text = ownNames ? "W" + std::to_string(i + 1) : "Gleis";
-        page.page.elements.push_back(element);
-    }
+    page.page.elements = bench::benchmarkPage(ownNames);
     return model::TrackLayout({page});
 }
 

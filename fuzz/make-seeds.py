@@ -250,3 +250,54 @@ write("orc_frame", "encoder-status-five-bytes", mcan_frames([("11122E01", "102E0
 # Found by a long run: a single-function frame with DLC 8 decoded, and encoded back with DLC 7.
 write("orc_frame", "loco-function-dlc8", mcan_frames([("11020000", "0400000000000000"), ("11020000", "0400480101000000")]))
 
+
+
+# track_graph: pages as .cs2 text, each [gleisbildseite] a page (numbered 0, 1, ... as the target reads
+# them), with [magnetartikel] and [fahrstrassen] sections. The demo layout is ours; the real pages of
+# ../shared/corpus are added by scripts/fuzz.sh at run time.
+def page(tiles):
+    lines = ["[gleisbildseite]", "version", " .major=1"]
+    for column, row, typ, rotation, article, text in tiles:
+        lines += ["element", " .id=0x%x" % (row << 8 | column), " .typ=" + typ]
+        lines += [" .drehung=%d" % rotation] if rotation else []
+        lines += [" .artikel=%d" % article] + ([" .text=" + text] if text else [])
+    return "\n".join(lines) + "\n"
+
+
+def line(row, contacts, first=0):  # a buffer stop, contacts with a straight between each, a buffer stop
+    tiles, column = [(first, row, "prellbock", 2, -1, "")], first + 1
+    for i, contact in enumerate(contacts):
+        if i:
+            tiles.append((column, row, "gerade", 0, -1, ""))
+            column += 1
+        tiles.append((column, row, "s88kontakt", 0, contact, ""))
+        column += 1
+    return tiles + [(column, row, "prellbock", 0, -1, "")]
+
+
+DEMO = os.path.join(HERE, "..", "resources", "demo-layout", "config")
+demo = "".join(open(os.path.join(DEMO, "gleisbilder", name + ".cs2"), encoding="utf-8").read()
+               for name in ("Bahnhof", "Strecke", "Bw"))
+demo += open(os.path.join(DEMO, "magnetartikel.cs2"), encoding="utf-8").read()
+demo += open(os.path.join(DEMO, "fahrstrassen.cs2"), encoding="utf-8").read()
+write("track_graph", "demo-layout", demo.encode("utf-8"))
+arrows = [(0, 0, "prellbock", 2, -1, ""), (1, 0, "s88kontakt", 0, 5, "Ost"), (2, 0, "pfeil", 0, 1, "Seite1")]
+back = [(0, 0, "pfeil", 2, 0, ""), (1, 0, "s88kontakt", 0, 6, ""), (2, 0, "prellbock", 0, -1, "")]
+write("track_graph", "overview-detail", (page(arrows) + page(back) + page(line(0, [5, 6]))).encode())
+write("track_graph", "overview-disagrees", (page(arrows) + page(back) + page(line(0, [5, 7, 6]))).encode())
+write("track_graph", "crossing-underpass", page(
+    [(0, 2, "prellbock", 2, -1, ""), (1, 2, "s88kontakt", 0, 1, ""), (2, 2, "kreuzung", 0, -1, ""),
+     (3, 2, "s88kontakt", 0, 2, ""), (4, 2, "unterfuehrung", 0, -1, ""), (5, 2, "prellbock", 0, -1, ""),
+     (2, 0, "prellbock", 1, -1, ""), (2, 1, "s88kontakt", 1, 3, ""), (2, 3, "s88kontakt", 1, 4, ""),
+     (2, 4, "prellbock", 3, -1, ""), (4, 1, "s88bogen", 1, 8, ""), (4, 3, "gerade", 1, -1, "")]).encode())
+write("track_graph", "slips-and-three-way", page(
+    [(0, 2, "prellbock", 2, -1, ""), (1, 2, "s88kontakt", 0, 1, ""), (2, 2, "dkweiche_2", 0, 18, ""),
+     (3, 2, "dreiwegweiche", 3, 20, ""), (2, 1, "s88kontakt", 1, 3, ""), (2, 3, "s88kontakt", 1, 4, ""),
+     (3, 1, "bogen", 0, -1, ""), (4, 1, "s88kontakt", 0, 5, ""), (4, 2, "s88kontakt", 0, 6, ""),
+     (3, 3, "bogen", 1, -1, ""), (4, 3, "hosentraeger", 0, 22, ""), (5, 2, "yweiche", 1, 24, "")]).encode())
+write("track_graph", "loop-and-signals", page(
+    [(0, 0, "s88bogen", 0, 1, ""), (1, 0, "signal", 0, 10, "S"), (2, 0, "bogen", 3, -1, ""),
+     (2, 1, "s88bogen", 2, 2, ""), (1, 1, "signal_f_hp012", 2, 12, ""), (0, 1, "bogen", 1, -1, "")]).encode())
+write("track_graph", "routes", (page(line(0, [1]) + [(3, 0, "fahrstrasse", 0, 1, "")]) +
+                                "[fahrstrassen]\nfahrstrasse\n .id=1\n .name=R\n .item\n ..magnetartikel=5\n"
+                                " ..stellung=2\n").encode())

@@ -12,6 +12,7 @@ set(STELLWERK_FUZZ_TARGETS
     mcan_frame      # 13-byte M-CAN frames in bus order -> decode (every role), encode, FrameReport, HandleRoles
     ro_frame        # RO module payloads (requests and answers, 11/29-bit) -> decode, encode, FrameReport, describe
     orc_frame       # 13-byte OpenRailCAN frames -> decode, encode, FrameReport, the bus description
+    track_graph     # track plan pages (and accessories, routes) as .cs2 text -> TrackGraph, its invariants
 )
 
 file(GLOB STELLWERK_FUZZED_SOURCES CONFIGURE_DEPENDS
@@ -21,7 +22,8 @@ file(GLOB STELLWERK_FUZZED_SOURCES CONFIGURE_DEPENDS
     ${STELLWERK_ROOT}/core/mcan/*.cpp
     ${STELLWERK_ROOT}/core/ro/*.cpp
     ${STELLWERK_ROOT}/core/orc/*.cpp
-    ${STELLWERK_ROOT}/core/cs2config/*.cpp)
+    ${STELLWERK_ROOT}/core/cs2config/*.cpp
+    ${STELLWERK_ROOT}/core/trackgraph/*.cpp)
 list(APPEND STELLWERK_FUZZED_SOURCES
     ${STELLWERK_ROOT}/core/transport/FrameAssembler.cpp
     ${STELLWERK_ROOT}/core/transport/NetworkFraming.cpp

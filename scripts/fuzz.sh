@@ -70,6 +70,7 @@ shared_seeds() {
         n=$((n + 1))
         case "$target" in
         cs2_document) { printf '\x00' && cat "$file"; } >"$folder/$n" ;;
+        track_graph) cp "$file" "$folder/$n" ;;
         config_stream)
             { printf '\x80' && cat "$file"; } >"$folder/$n-compressed"
             { printf '\x81' && cat "$file"; } >"$folder/$n-text"

@@ -3,6 +3,7 @@
 #include "Cs2Command.h"
 #include "DecodeCommand.h"
 #include "EncodeCommand.h"
+#include "LayoutCommand.h"
 #include "StationCommand.h"
 #include "StreamCommand.h"
 
@@ -41,6 +42,9 @@ void printUsage(std::ostream& out) {
            "track plan "
            "as JSON\n"
            "  stellwerk-cli cs2 format FILE [-o OUT]      write the file back through its typed model\n"
+           "  stellwerk-cli layout graph DIR [--json]     the blocks, connections and problems the track "
+           "plan of a\n"
+           "                layout folder shows (exit 1 when it has no usable track plan)\n"
         << stellwerk::cli::stationUsage()
         << "\n"
            "FRAME notations:\n"
@@ -71,6 +75,8 @@ int main(int argc, char** argv) {
         return stellwerk::cli::runEncode(rest, std::cout, std::cerr);
     if (arguments[0] == "cs2")
         return stellwerk::cli::runCs2(rest, std::cout, std::cerr);
+    if (arguments[0] == "layout")
+        return stellwerk::cli::runLayout(rest, std::cout, std::cerr);
     if (arguments[0] == "stream")
         return stellwerk::cli::runStream(rest, std::cin, std::cout, std::cerr);
     if (arguments[0] == "--station") {

@@ -3,9 +3,12 @@ target_sources(stellwerk-ui-tests PRIVATE
     trackplan/PageZoomTest.cpp
     trackplan/PaintBandsTest.cpp
     trackplan/TileTagTest.cpp
+    trackplan/TrackGraphDrawingTest.cpp
     trackplan/TrackPlanPanelTest.cpp
     trackplan/TrackTileCacheTest.cpp
     trackplan/TrackTilePainterTest.cpp
 )
 target_compile_definitions(stellwerk-ui-tests PRIVATE STELLWERK_SHARED_DIR="${STELLWERK_SHARED_DIR}"
     STELLWERK_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+# The track graph's tile table is checked against the drawings (TrackGraphDrawingTest).
+target_link_libraries(stellwerk-ui-tests PRIVATE stellwerk-trackgraph)
