@@ -160,13 +160,9 @@ void TrainRun::replanAhead(const TrackGraph& graph, const trackgraph::PositionOf
     if (front.isBlock())
         return;
     const std::size_t entered = stepsEntered(front.steps, frontMm_);
-    Lead lead;
-    if (entered > 0)
-        lead = graph.followFrom(front.steps[entered - 1].tile, front.steps[entered - 1].exit, positionOf);
-    else if (front.from)
-        lead = graph.follow(*front.from, positionOf);
-    else
-        return;
+    if (entered == 0)
+        return; // the front is on the first tile as soon as it leaves its block
+    Lead lead = graph.followFrom(front.steps[entered - 1].tile, front.steps[entered - 1].exit, positionOf);
     front.steps.resize(entered);
     front.steps.insert(front.steps.end(), lead.path.begin(), lead.path.end());
     lead.path.clear();

@@ -212,6 +212,28 @@ TEST_F(TrainMovementTest, AFacingTurnoutSwitchedBeforeTheFrontArrivesTakesTheNew
     EXPECT_EQ(rig_.movement->accidents().total(), 0);
 }
 
+// The same between blocks: the way from Zufahrt passes W6 trailing and two tiles without a contact before W5
+// chooses between Gerade (straight) and Abzweig (round); W5 is switched while the train is on those tiles.
+TEST(TrainMovementBetweenBlocks, AFacingTurnoutAheadSwitchedWhileTheTrainIsOnTheWayTakesTheNewWay) {
+    trackgraph::test::DrawnPage page(0, "Bahnhof");
+    page.bufferStop(0, 1, true).contact(1, 1, 1, "Zufahrt").accessory(2, 1, "linksweiche", 1, 6);
+    page.straight(3, 4, 1).accessory(5, 1, "linksweiche", 3, 5).straight(6, 6, 1).contact(7, 1, 2, "Gerade");
+    page.bufferStop(8, 1, false).tile(5, 0, "bogen").contact(6, 0, 3, "Abzweig").bufferStop(7, 0, false);
+    test::TrainRig rig(test::drawnLayout({page}));
+    rig.place({{Br218, 1, End::B}});
+    rig.drive(Br218, 1000);
+    rig.run(500ms); // the front 250 mm beyond Zufahrt: past W6, on the first tile without a contact
+    ASSERT_EQ(rig.at(Br218).block, 0);
+    rig.drive(Br218, 0);
+    rig.setTurnout(5, Diverging);
+    rig.run(300ms);
+    rig.drive(Br218, 1000);
+    rig.run(1400ms); // 700 mm: over W5 round and 270 mm into Abzweig, short of its buffer stop
+    EXPECT_EQ(rig.reached(), (std::vector<std::uint16_t>{1, 3}));
+    EXPECT_EQ(rig.blockName(rig.at(Br218).block), "Abzweig");
+    EXPECT_EQ(rig.accidents, std::vector<std::string>{});
+}
+
 TEST_F(TrainMovementTest, TrackLoadGrowsWithRunningTrainsAndTheirSpeed) {
     placeBr218(Gleis1, End::B);
     const int idle = rig_.movement->trackLoad();
