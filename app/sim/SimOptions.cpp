@@ -27,7 +27,9 @@ struct Parser {
     QCommandLineOption can{"can",
                            "Also put the frames on a CAN interface (plugin:interface, e.g. socketcan:can0).",
                            "plugin:interface"};
-    QCommandLineOption layout{"layout", "A CS2 config folder to serve instead of the demo layout.", "dir"};
+    QCommandLineOption layout{
+        "layout",
+        "A CS2 config folder to serve instead of the demo layout; the trains run on its track plan.", "dir"};
     QCommandLineOption gleisbox{"gleisbox", "Also answer as a Gleisbox on the bus."};
     QCommandLineOption noTrains{"no-trains", "Locomotives do not move (no S88 events)."};
     QCommandLineOption tick{"tick", "Train movement step in milliseconds (default 100).", "ms", "100"};

@@ -21,6 +21,7 @@ enum class AccidentKind : std::uint8_t {
 };
 std::string_view accidentKindName(AccidentKind kind);
 
+// One accident: what happened, the trains it derailed, and the line stellwerk-sim prints.
 struct Accident {
     AccidentKind kind = AccidentKind::Collision;
     std::vector<std::uint32_t> trains; // the Loc-IDs of the trains derailed
@@ -29,6 +30,7 @@ struct Accident {
     std::string text;
 };
 
+// How many accidents of each kind happened since the movement started: what tests and the automation read.
 struct AccidentCounts {
     int collisions = 0;
     int bufferStops = 0;
