@@ -1,6 +1,8 @@
 // The track plan view, offscreen:
 //   1. drawing a page of 2,000 elements at the default zoom (target: under 16 ms per full repaint),
-//   2. 2,000 S88 events per second (batches of 20 every 10 ms) from the simulated CS2 over loopback TCP
+//   2. the 2,000-tile station of the track graph's benchmark with its blocks shown (outlines, names,
+//      problem markers) and without: a full repaint must not get noticeably slower,
+//   3. 2,000 S88 events per second (batches of 20 every 10 ms) from the simulated CS2 over loopback TCP
 //      through the session and the Railway while the plan is shown: how many events arrived and how
 //      late the event loop serves a 5 ms timer (the UI's responsiveness).
 // A plain harness printing figures. Run: QT_QPA_PLATFORM=offscreen build/bench/stellwerk-trackplan-bench
@@ -15,7 +17,10 @@
 #include "sim/StationServer.h"
 #include "station/StationSession.h"
 #include "station/StationUpdates.h"
+#include "trackgraph/TrackGraph.h"
+#include "trackplan/BlockOutlines.h"
 #include "trackplan/PaintBands.h"
+#include "trackplan/PlanGraph.h"
 #include "trackplan/TrackColors.h"
 #include "trackplan/TrackPageView.h"
 #include "trackplan/TrackPlanPanel.h"
@@ -143,6 +148,43 @@ void benchDrawing(bool ownNames) {
                 zoomed.worst);
 }
 
+// The station page of 2,000 tiles and about 200 blocks: a full repaint without and with the blocks shown,
+// and the first repaint after the blocks were given (laying out their bands and names).
+void benchBlocks() {
+    station::DownloadedPage downloaded;
+    downloaded.name = "station";
+    downloaded.page.elements = bench::stationPage();
+    const model::TrackLayout layout({downloaded});
+    trackgraph::GraphSource source;
+    source.pages.push_back({0, "station", &downloaded.page.elements});
+    const std::shared_ptr<const ui::PlanGraph> graph = ui::PlanGraph::derive(source, layout);
+    const auto shared = std::make_shared<const model::LayoutPage>(layout.pages()[0]);
+    const auto lookOf = [&page = *shared](int tile) {
+        const model::LayoutTile& t = page.tiles[std::size_t(tile)];
+        return ui::TrackTileLook{t.type, t.category, t.rotation, 1, false, false, t.text};
+    };
+    ui::TrackPageView view(shared, lookOf, [](int) { return QString(); });
+    view.resize(view.sizeHint());
+    QImage image(view.size(), QImage::Format_ARGB32_Premultiplied);
+    std::printf("the 2000-tile station with %zu blocks and %zu problems at %d px per tile (%dx%d px):\n",
+                graph->graph().blocks().size(), graph->graph().problems().size(), view.tileSize(),
+                view.width(), view.height());
+    view.render(&image);
+    const Figures plain = timed(30, [&] { view.render(&image); });
+    std::printf("  full repaint, blocks not shown:  median %6.2f ms, worst %6.2f ms\n", plain.median,
+                plain.worst);
+    const Figures laidOut = timed(7, [&] {
+        view.setBlocks(ui::BlockOutlines::ofPage(*graph, 0));
+        view.setProblemTiles(graph->problemTilesOf(0));
+        view.render(&image);
+    });
+    std::printf("  first repaint with the blocks:   median %6.2f ms, worst %6.2f ms\n", laidOut.median,
+                laidOut.worst);
+    const Figures shown = timed(30, [&] { view.render(&image); });
+    std::printf("  full repaint, blocks shown:      median %6.2f ms, worst %6.2f ms\n", shown.median,
+                shown.worst);
+}
+
 // Every 10 ms a batch of 20 events, as a busy S88 bus delivers them: 2,000 events per second on the demo's
 // contacts 1..9, each event a real change; for 5 s.
 constexpr int BatchMs = 10;
@@ -249,6 +291,7 @@ int main(int argc, char** argv) {
     QApplication app(argc, argv);
     benchDrawing(false);
     benchDrawing(true);
+    benchBlocks();
     benchContacts();
     return 0;
 }

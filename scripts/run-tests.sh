@@ -7,6 +7,10 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 bash scripts/setup.sh --werror
 
+# shellcheck source=common.sh
+source scripts/common.sh
+seed_test_costs build
+
 # Widget tests draw into memory; they need no screen.
 export QT_QPA_PLATFORM=offscreen
 

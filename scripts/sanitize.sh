@@ -32,5 +32,9 @@ esac
 
 bash scripts/setup.sh --preset sanitize "${build[@]}"
 
+# shellcheck source=common.sh
+source scripts/common.sh
+seed_test_costs build-sanitize
+
 printf '==> Running the tests under AddressSanitizer and UndefinedBehaviorSanitizer\n'
 exec ctest --preset sanitize -j"$(nproc)" "${selection[@]}"

@@ -50,7 +50,8 @@ LANG=de_DE.UTF-8 app --panel handheldsPanel --size 1366x768 --screenshot "$shots
 app --panel handheldsPanel --size 1920x1080 --screenshot "$shots/handhelds-1920x1080.png"
 LANG=de_DE.UTF-8 app --panel handheldsPanel --size 1920x1080 --screenshot "$shots/handhelds-de-1920x1080.png"
 
-# The single panels, drawn offscreen by their widget tests; and the whole desk with the track power off and
-# with the station silent ("not reported"), at both sizes and in both languages (StationTrustTest).
+# The single panels, drawn offscreen by their widget tests (among them the plan with its blocks and the popup of
+# a block, track-plan-blocks.png and -de.png); and the whole desk with the track power off and with the station
+# silent ("not reported"), at both sizes and in both languages (StationTrustTest).
 export QT_QPA_PLATFORM=offscreen STELLWERK_SCREENSHOT_DIR=$PWD/$shots
-build/tests/ui/stellwerk-ui-tests --gtest_filter='*Screenshot*:ThrottlePanelTest.ThreeThrottles*:TrackPlanPanelTest.TheDemoPlanIsDrawnInLightAndDarkPalettes:StationTrustTest.While*:StationTrustTest.WithThePowerOff*:AfterTroubleOnTheDesk.AStalledStation*'
+build/tests/ui/stellwerk-ui-tests --gtest_filter='*Screenshot*:TrackPlanBlocksTest.Screenshots*:ThrottlePanelTest.ThreeThrottles*:TrackPlanPanelTest.TheDemoPlanIsDrawnInLightAndDarkPalettes:StationTrustTest.While*:StationTrustTest.WithThePowerOff*:AfterTroubleOnTheDesk.AStalledStation*'

@@ -96,6 +96,157 @@
     </message>
 </context>
 <context>
+    <name>BlockDescription</name>
+    <message>
+        <source>Block %1 &apos;%2&apos;</source>
+        <translation>Block %1 „%2“</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n tile(s), %1 mm</source>
+        <translation>
+            <numerusform>%n Feld, %1 mm</numerusform>
+            <numerusform>%n Felder, %1 mm</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Contact %1</source>
+        <translation>Kontakt %1</translation>
+    </message>
+    <message>
+        <source>Contact %1 &apos;%2&apos;</source>
+        <translation>Kontakt %1 „%2“</translation>
+    </message>
+    <message>
+        <source>%1 of feedback device %2</source>
+        <translation>%1 an Rückmeldegerät %2</translation>
+    </message>
+    <message>
+        <source>Signal &apos;%1&apos;</source>
+        <translation>Signal „%1“</translation>
+    </message>
+    <message>
+        <source>Signal %1</source>
+        <translation>Signal %1</translation>
+    </message>
+    <message>
+        <source>A signal</source>
+        <translation>Ein Signal</translation>
+    </message>
+    <message>
+        <source>%1, for trains towards end %2</source>
+        <translation>%1, für Züge in Richtung Ende %2</translation>
+    </message>
+    <message>
+        <source>From end %1 (%2):</source>
+        <translation>Von Ende %1 (%2):</translation>
+    </message>
+    <message>
+        <source>to block %1 &apos;%2&apos;, end %3</source>
+        <translation>nach Block %1 „%2“, Ende %3</translation>
+    </message>
+    <message>
+        <source>directly</source>
+        <translation>direkt</translation>
+    </message>
+    <message numerus="yes">
+        <source>over %n tile(s) of track without a contact</source>
+        <translation>
+            <numerusform>über %n Feld Gleis ohne Kontakt</numerusform>
+            <numerusform>über %n Felder Gleis ohne Kontakt</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the turnout at %1 %2</source>
+        <translation>die Weiche bei %1 %2</translation>
+    </message>
+    <message>
+        <source>turnout %1 %2</source>
+        <translation>Weiche %1 %2</translation>
+    </message>
+    <message>
+        <source>turnout %1 &apos;%2&apos; %3</source>
+        <translation>Weiche %1 „%2“ %3</translation>
+    </message>
+    <message>
+        <source>over %1</source>
+        <translation>über %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>across the crossing(s) at %1</source>
+        <translation>
+            <numerusform>über die Kreuzung bei %1</numerusform>
+            <numerusform>über die Kreuzungen bei %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;</source>
+        <translation>„%1“</translation>
+    </message>
+    <message numerus="yes">
+        <source>set by route(s) %1</source>
+        <translation>
+            <numerusform>gestellt von Fahrstraße %1</numerusform>
+            <numerusform>gestellt von den Fahrstraßen %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The track ends at a buffer stop.</source>
+        <translation>Das Gleis endet an einem Prellbock.</translation>
+    </message>
+    <message>
+        <source>The track ends at a turntable.</source>
+        <translation>Das Gleis endet an einer Drehscheibe.</translation>
+    </message>
+    <message>
+        <source>The track ends without a buffer stop.</source>
+        <translation>Das Gleis endet ohne Prellbock.</translation>
+    </message>
+    <message>
+        <source>No way leads from here to another block.</source>
+        <translation>Von hier führt kein Weg zu einem anderen Block.</translation>
+    </message>
+    <message>
+        <source>page %1, column %2, row %3</source>
+        <translation>Seite %1, Spalte %2, Zeile %3</translation>
+    </message>
+    <message>
+        <source>straight</source>
+        <translation>gerade</translation>
+    </message>
+    <message>
+        <source>diverging</source>
+        <translation>abzweigend</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>links</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>rechts</translation>
+    </message>
+    <message>
+        <source>straight and diverging</source>
+        <translation>gerade und abzweigend</translation>
+    </message>
+    <message>
+        <source>diverging and straight</source>
+        <translation>abzweigend und gerade</translation>
+    </message>
+    <message>
+        <source>across</source>
+        <translation>kreuzend</translation>
+    </message>
+    <message>
+        <source>Contacts:</source>
+        <translation>Kontakte:</translation>
+    </message>
+    <message>
+        <source>Signals:</source>
+        <translation>Signale:</translation>
+    </message>
+</context>
+<context>
     <name>CorrectionText</name>
     <message>
         <source>%1: the station carried out a command late that had failed (%2); it stays, as it brings nothing into motion.</source>
@@ -223,6 +374,96 @@
     <message>
         <source>Announcement</source>
         <translation>Ansage</translation>
+    </message>
+</context>
+<context>
+    <name>GraphProblemText</name>
+    <message>
+        <source>Page %1, column %2, row %3: %4</source>
+        <translation>Seite %1, Spalte %2, Zeile %3: %4</translation>
+    </message>
+    <message>
+        <source>The track ends here without a buffer stop, or does not meet the track of the tile beside it; add the missing track or a buffer stop, or turn a tile.</source>
+        <translation>Das Gleis endet hier ohne Prellbock oder trifft nicht auf das Gleis des Nachbarfelds; ergänzen Sie das fehlende Gleis oder einen Prellbock, oder drehen Sie ein Feld.</translation>
+    </message>
+    <message>
+        <source>This tile (%1) joins no other track; move it onto the track or remove it.</source>
+        <translation>Dieses Feld (%1) ist mit keinem anderen Gleis verbunden; setzen Sie es auf das Gleis oder entfernen Sie es.</translation>
+    </message>
+    <message>
+        <source>%1 has a side without track, so the way through it there leads nowhere; add the track or a buffer stop.</source>
+        <translation>%1 hat eine Seite ohne Gleis, der Weg dorthin führt also ins Leere; ergänzen Sie das Gleis oder einen Prellbock.</translation>
+    </message>
+    <message>
+        <source>The track from here to the next turnout or end has no contact, so a train there cannot be seen; add a contact where trains may stop.</source>
+        <translation>Das Gleis von hier bis zur nächsten Weiche oder zum Ende hat keinen Kontakt, ein Zug darauf ist also nicht zu sehen; setzen Sie einen Kontakt, wo Züge halten können.</translation>
+    </message>
+    <message>
+        <source>The arrow names page %1, which the track plan does not have; the track ends here.</source>
+        <translation>Der Pfeil nennt die Seite %1, die der Gleisplan nicht hat; das Gleis endet hier.</translation>
+    </message>
+    <message>
+        <source>The arrow leads to page %1, whose file is missing; the track ends here.</source>
+        <translation>Der Pfeil führt zur Seite %1, deren Datei fehlt; das Gleis endet hier.</translation>
+    </message>
+    <message>
+        <source>The arrow to page %1 has no arrow back on that page, so the track ends here; add one where the track goes on.</source>
+        <translation>Der Pfeil zur Seite %1 hat dort keinen Pfeil zurück, das Gleis endet also hier; setzen Sie einen, wo das Gleis weitergeht.</translation>
+    </message>
+    <message>
+        <source>%1 is drawn twice on this page, on two stretches of track; one contact can watch only one block, so both are taken as block &apos;%2&apos;.</source>
+        <translation>%1 ist auf dieser Seite zweimal gezeichnet, auf zwei Gleisabschnitten; ein Kontakt kann nur einen Block überwachen, beide gelten daher als Block „%2“.</translation>
+    </message>
+    <message>
+        <source>%1 is drawn on another page as well, and the drawings join different track; make the pages agree.</source>
+        <translation>%1 ist auch auf einer anderen Seite gezeichnet, und die Zeichnungen verbinden verschiedene Gleise; gleichen Sie die Seiten an.</translation>
+    </message>
+    <message>
+        <source>A route sets %1 so that it leads from no block to another as the plan draws it; check the route&apos;s turnouts against the plan.</source>
+        <translation>Eine Fahrstraße stellt %1 so, dass sie nach der Zeichnung von keinem Block zu einem anderen führt; prüfen Sie die Weichen der Fahrstraße am Gleisplan.</translation>
+    </message>
+    <message>
+        <source>Route %1 sets turnouts that together lead from no block to another as the plan draws them; check the route&apos;s turnouts against the plan.</source>
+        <translation>Fahrstraße %1 stellt Weichen, die nach der Zeichnung zusammen von keinem Block zu einem anderen führen; prüfen Sie die Weichen der Fahrstraße am Gleisplan.</translation>
+    </message>
+    <message>
+        <source>A way over this tile needs %1 in two positions at once (it is drawn more than once, or passed twice), so that way is left out; give the drawings their own articles if they are separate turnouts.</source>
+        <translation>Ein Weg über dieses Feld braucht %1 in zwei Stellungen zugleich (sie ist mehrfach gezeichnet oder wird zweimal befahren), dieser Weg entfällt daher; geben Sie den Zeichnungen eigene Artikel, wenn es getrennte Weichen sind.</translation>
+    </message>
+    <message>
+        <source>From this tile the track branches into more ways than are followed; add contacts between the turnouts so that it splits into blocks.</source>
+        <translation>Von diesem Feld aus verzweigt sich das Gleis in mehr Wege als verfolgt werden; setzen Sie Kontakte zwischen die Weichen, damit es sich in Blöcke teilt.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The drawing of the track plan has %n problem(s):</source>
+        <translation>
+            <numerusform>Die Zeichnung des Gleisplans hat %n Problem:</numerusform>
+            <numerusform>Die Zeichnung des Gleisplans hat %n Probleme:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;</source>
+        <translation>„%1“</translation>
+    </message>
+    <message>
+        <source>The turnout</source>
+        <translation>Die Weiche</translation>
+    </message>
+    <message>
+        <source>Turnout %1</source>
+        <translation>Weiche %1</translation>
+    </message>
+    <message>
+        <source>Turnout %1 &apos;%2&apos;</source>
+        <translation>Weiche %1 „%2“</translation>
+    </message>
+    <message>
+        <source>Contact %1</source>
+        <translation>Kontakt %1</translation>
+    </message>
+    <message>
+        <source>Contact %1 &apos;%2&apos;</source>
+        <translation>Kontakt %1 „%2“</translation>
     </message>
 </context>
 <context>
@@ -3265,6 +3506,26 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>This page has nothing to show: its file %1 could not be read.</source>
         <translation>Diese Seite zeigt nichts: ihre Datei %1 ließ sich nicht lesen.</translation>
+    </message>
+    <message>
+        <source>Block %1 &apos;%2&apos;</source>
+        <translation>Block %1 „%2“</translation>
+    </message>
+    <message>
+        <source>Problem: %1</source>
+        <translation>Problem: %1</translation>
+    </message>
+    <message>
+        <source>Block %1 &apos;%2&apos;...</source>
+        <translation>Block %1 „%2“ …</translation>
+    </message>
+    <message>
+        <source>Blocks</source>
+        <translation>Blöcke</translation>
+    </message>
+    <message>
+        <source>Outline each block with its name, and list and mark the problems of the drawing; then a click on a block&apos;s track says where it leads</source>
+        <translation>Jeden Block mit seinem Namen umranden und die Probleme der Zeichnung auflisten und markieren; ein Klick auf das Gleis eines Blocks sagt dann, wohin es führt</translation>
     </message>
 </context>
 <context>

@@ -96,6 +96,157 @@
     </message>
 </context>
 <context>
+    <name>BlockDescription</name>
+    <message>
+        <source>Block %1 &apos;%2&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n tile(s), %1 mm</source>
+        <translation>
+            <numerusform>%n tile, %1 mm</numerusform>
+            <numerusform>%n tiles, %1 mm</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Contact %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contact %1 &apos;%2&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of feedback device %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Signal &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Signal %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A signal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, for trains towards end %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From end %1 (%2):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>to block %1 &apos;%2&apos;, end %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>directly</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>over %n tile(s) of track without a contact</source>
+        <translation>
+            <numerusform>over %n tile of track without a contact</numerusform>
+            <numerusform>over %n tiles of track without a contact</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the turnout at %1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>turnout %1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>turnout %1 &apos;%2&apos; %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>over %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>across the crossing(s) at %1</source>
+        <translation>
+            <numerusform>across the crossing at %1</numerusform>
+            <numerusform>across the crossings at %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>set by route(s) %1</source>
+        <translation>
+            <numerusform>set by route %1</numerusform>
+            <numerusform>set by routes %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The track ends at a buffer stop.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The track ends at a turntable.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The track ends without a buffer stop.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No way leads from here to another block.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>page %1, column %2, row %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>straight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>diverging</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>straight and diverging</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>diverging and straight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>across</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contacts:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Signals:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>CorrectionText</name>
     <message>
         <source>%1: the station carried out a command late that had failed (%2); it stays, as it brings nothing into motion.</source>
@@ -222,6 +373,96 @@
     </message>
     <message>
         <source>Announcement</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>GraphProblemText</name>
+    <message>
+        <source>Page %1, column %2, row %3: %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The track ends here without a buffer stop, or does not meet the track of the tile beside it; add the missing track or a buffer stop, or turn a tile.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This tile (%1) joins no other track; move it onto the track or remove it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has a side without track, so the way through it there leads nowhere; add the track or a buffer stop.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The track from here to the next turnout or end has no contact, so a train there cannot be seen; add a contact where trains may stop.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The arrow names page %1, which the track plan does not have; the track ends here.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The arrow leads to page %1, whose file is missing; the track ends here.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The arrow to page %1 has no arrow back on that page, so the track ends here; add one where the track goes on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is drawn twice on this page, on two stretches of track; one contact can watch only one block, so both are taken as block &apos;%2&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is drawn on another page as well, and the drawings join different track; make the pages agree.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A route sets %1 so that it leads from no block to another as the plan draws it; check the route&apos;s turnouts against the plan.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Route %1 sets turnouts that together lead from no block to another as the plan draws them; check the route&apos;s turnouts against the plan.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A way over this tile needs %1 in two positions at once (it is drawn more than once, or passed twice), so that way is left out; give the drawings their own articles if they are separate turnouts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From this tile the track branches into more ways than are followed; add contacts between the turnouts so that it splits into blocks.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>The drawing of the track plan has %n problem(s):</source>
+        <translation>
+            <numerusform>The drawing of the track plan has %n problem:</numerusform>
+            <numerusform>The drawing of the track plan has %n problems:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The turnout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turnout %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turnout %1 &apos;%2&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contact %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contact %1 &apos;%2&apos;</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3260,6 +3501,26 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>This page has nothing to show: its file %1 could not be read.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Block %1 &apos;%2&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Problem: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Block %1 &apos;%2&apos;...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Blocks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Outline each block with its name, and list and mark the problems of the drawing; then a click on a block&apos;s track says where it leads</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -105,7 +105,7 @@ TEST(LayoutGraphCommand, AFolderWithoutAPlanIsExitOne) {
     const Outcome outcome = layout({"graph", empty.path().toStdString()});
     EXPECT_EQ(outcome.status, 1);
     EXPECT_EQ(outcome.out, "");
-    EXPECT_TRUE(contains(outcome.err, "there is no track plan (config/gleisbild.cs2)")) << outcome.err;
+    EXPECT_TRUE(contains(outcome.err, "there is no track plan (config/gleisbild.cs2, or pages in config/gleisbilder/)")) << outcome.err;
 }
 
 TEST(LayoutGraphCommand, AnIndexWhosePagesAreAllMissingIsExitOne) {

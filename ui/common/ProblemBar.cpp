@@ -23,10 +23,7 @@ QToolButton* barButton(QWidget* parent, const char* name) {
 ProblemBar::ProblemBar(QWidget* parent) : QFrame(parent) {
     setObjectName(QStringLiteral("problemBar"));
     setAttribute(Qt::WA_StyledBackground);
-    setStyleSheet(QStringLiteral("stellwerk--ui--ProblemBar { background: #c82c2c; border-radius: 4px; }"
-                                 " QLabel, QToolButton { color: white; }"
-                                 " QToolButton { font-weight: bold; border: none; padding: 2px 6px; }"
-                                 " QToolButton:hover { background: #a82020; border-radius: 3px; }"));
+    setTone(Tone::Error);
     m_label = new QLabel(this);
     m_label->setObjectName(QStringLiteral("problemText"));
     m_label->setTextFormat(Qt::PlainText);
@@ -45,6 +42,18 @@ ProblemBar::ProblemBar(QWidget* parent) : QFrame(parent) {
     connect(m_dismiss, &QToolButton::clicked, this, &ProblemBar::dismiss);
     hide();
     retranslate();
+}
+
+void ProblemBar::setTone(Tone tone) {
+    m_tone = tone;
+    const bool error = tone == Tone::Error;
+    setStyleSheet(QStringLiteral("stellwerk--ui--ProblemBar { background: %1; border-radius: 4px; }"
+                                 " QLabel, QToolButton { color: %2; }"
+                                 " QToolButton { font-weight: bold; border: none; padding: 2px 6px; }"
+                                 " QToolButton:hover { background: %3; border-radius: 3px; }")
+                      .arg(error ? QStringLiteral("#c82c2c") : QStringLiteral("#f2b233"),
+                           error ? QStringLiteral("white") : QStringLiteral("black"),
+                           error ? QStringLiteral("#a82020") : QStringLiteral("#d99a1e")));
 }
 
 void ProblemBar::setProblem(Describe describe) {

@@ -8,7 +8,8 @@ class QToolButton;
 
 namespace stellwerk::ui {
 
-// A red bar that says what went wrong with a file or a layout: its words are made again when the
+// A red bar that says what went wrong with a file or a layout (or an amber one for what the user may want
+// to put right, such as the problems of a track plan's drawing): its words are made again when the
 // language changes (a problem is kept as a way to describe it, not as finished text), a long one folds
 // to its first line, and the user can dismiss it until the next problem comes.
 class ProblemBar final : public QFrame {
@@ -20,6 +21,11 @@ public:
     using Describe = std::function<QString()>;
 
     explicit ProblemBar(QWidget* parent = nullptr);
+
+    // Error: red with white text (something failed). Notice: amber with black text (worth putting right).
+    enum class Tone { Error, Notice };
+    void setTone(Tone tone);
+    Tone tone() const { return m_tone; }
 
     // A problem of more lines than this starts folded, so that it does not cover the plan.
     static constexpr int UnfoldedLines = 3;
@@ -47,6 +53,7 @@ private:
     void retranslate();
 
     Describe m_describe;
+    Tone m_tone = Tone::Error;
     QString m_text;
     bool m_folded = false;
     QLabel* m_label = nullptr;

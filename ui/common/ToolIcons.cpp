@@ -27,6 +27,8 @@ QString ToolIcons::resourcePath(Tool tool) {
         return QStringLiteral(":/tool-icons/zoom-out.svg");
     case Tool::Fit:
         return QStringLiteral(":/tool-icons/fit.svg");
+    case Tool::Blocks:
+        return QStringLiteral(":/tool-icons/blocks.svg");
     case Tool::Connect:
         return QStringLiteral(":/tool-icons/connect.svg");
     case Tool::AddThrottle:

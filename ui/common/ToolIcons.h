@@ -15,7 +15,17 @@ namespace stellwerk::ui {
 // palette's text colour so that a toolbar reads the same on light and dark palettes.
 class ToolIcons final {
 public:
-    enum class Tool { OpenLayout, ExportLayout, StationPlan, ZoomIn, ZoomOut, Fit, Connect, AddThrottle };
+    enum class Tool {
+        OpenLayout,
+        ExportLayout,
+        StationPlan,
+        ZoomIn,
+        ZoomOut,
+        Fit,
+        Blocks,
+        Connect,
+        AddThrottle
+    };
 
     static QString resourcePath(Tool tool);
     static QIcon icon(Tool tool, const QColor& color);

@@ -22,7 +22,7 @@ target_sources(stellwerk-ui PRIVATE
 )
 
 # The toolbars' drawings (resources/tool-icons), embedded as :/tool-icons/<name>.svg.
-set(stellwerk_tool_icons add-throttle connect export-layout fit open-layout station-plan zoom-in zoom-out)
+set(stellwerk_tool_icons add-throttle blocks connect export-layout fit open-layout station-plan zoom-in zoom-out)
 list(TRANSFORM stellwerk_tool_icons PREPEND ${PROJECT_SOURCE_DIR}/resources/tool-icons/)
 list(TRANSFORM stellwerk_tool_icons APPEND .svg)
 qt_add_resources(stellwerk-ui stellwerk_tool_icons

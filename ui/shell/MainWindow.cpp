@@ -331,6 +331,8 @@ void MainWindow::createViewMenu() {
     });
     m_resetLayoutAction->setObjectName(QStringLiteral("resetLayoutAction"));
     m_viewMenu->addSeparator();
+    m_viewMenu->addAction(m_trackPlan->blocksAction()); // the plan's own "Blocks", checked with it
+    m_viewMenu->addSeparator();
     m_languageMenu = new LanguageMenu(m_translations.current(), m_viewMenu);
     m_viewMenu->addMenu(m_languageMenu);
     connect(m_languageMenu, &LanguageMenu::languageChosen, this, &MainWindow::chooseLanguage);

@@ -30,6 +30,12 @@ TrackColors TrackColors::from(const QPalette& palette) {
     colors.button = palette.color(QPalette::Button);
     colors.highlight = palette.color(QPalette::Highlight);
     colors.text = text;
+    // Violet: no state of the plan is drawn in it (red occupied, green and yellow lamps, blue routes).
+    colors.block = dark ? QColor(206, 147, 216) : QColor(123, 31, 162);
+    colors.blockBand = colors.block;
+    colors.blockBand.setAlpha(dark ? 60 : 38);
+    colors.blockText = dark ? QColor(30, 10, 36) : QColor(255, 255, 255);
+    colors.problem = QColor(242, 178, 51); // amber, as the after-trouble strip: readable on light and dark
     return colors;
 }
 

@@ -21,6 +21,10 @@ struct TrackColors {
     QColor button;    // route buttons and output buttons
     QColor highlight; // a running route
     QColor text;
+    QColor block;     // the outline of a block and the tab with its name
+    QColor blockBand; // the translucent band over a block's tiles
+    QColor blockText; // a block's name on its tab
+    QColor problem;   // the marker of a tile with a problem in the drawing
 
     static TrackColors from(const QPalette& palette);
     bool operator==(const TrackColors&) const = default;

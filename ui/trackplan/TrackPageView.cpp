@@ -11,6 +11,7 @@
 #include <QPaintEvent>
 #include <QPainter>
 #include <QToolTip>
+#include <algorithm>
 #include <cstdio>
 
 namespace stellwerk::ui {
@@ -38,6 +39,16 @@ void TrackPageView::setTileSize(int pixels) {
     m_drawnArea.reset();
     updateGeometry();
     resize(sizeHint());
+    update();
+}
+
+void TrackPageView::setBlocks(BlockOutlines blocks) {
+    m_blocks = std::move(blocks);
+    update();
+}
+
+void TrackPageView::setProblemTiles(std::vector<int> tiles) {
+    m_problemTiles = std::move(tiles);
     update();
 }
 
@@ -129,23 +140,78 @@ void TrackPageView::paintEvent(QPaintEvent* event) {
     painter.setClipRect(area);
     const std::vector<TrackTileCache::Placed> pictures = picturesIn(area);
     const TagsInArea tags = tagsIn(area);
-    // The grid, the tiles and the names on all cores; names that Qt laid out and occupants on this thread.
+    layOutBlocks();
+    // The grid, the blocks' bands, the tiles and the names on all cores; names that Qt laid out, occupants,
+    // the blocks' names and the problem markers on this thread.
     PaintBands::paint(painter, area, [this, &pictures, &tags](QPainter& band, const QRect& part) {
         paintGrid(band, part);
+        m_blocks.paintBands(band, part, m_colors);
         for (const TrackTileCache::Placed& picture : pictures)
             if (picture.area().intersects(part))
                 picture.paint(band);
         tags.names.paintBackings(band, m_colors, part);
         tags.names.paintGlyphs(band, m_colors);
+        m_blocks.paintNames(band, part);
     });
     tags.names.paintShaped(painter, m_colors);
     for (const TileTag& occupant : tags.occupants)
         occupant.paint(painter, m_colors);
+    paintProblemMarkers(painter, area);
     if (m_dimmed) { // a wash of the background over every state: "not reported", at a glance
         QColor wash = m_colors.background;
         wash.setAlpha(150);
         painter.fillRect(area, wash);
     }
+}
+
+// The blocks' bands and names for this zoom, where the names cover nothing the page draws if they can.
+void TrackPageView::layOutBlocks() {
+    QFont nameFont = tagFont();
+    nameFont.setBold(true);
+    if (m_blocks.isEmpty() || !m_blocks.needsLayout(m_tileSize, nameFont, devicePixelRatioF()))
+        return;
+    std::vector<QRect> taken;
+    for (int i = 0; i < int(m_page.tiles.size()); ++i) {
+        const model::LayoutTile& tile = m_page.tiles[std::size_t(i)];
+        if (tile.type == QLatin1String("leer"))
+            continue;
+        const QRect cell = tileRect(i);
+        taken.push_back(tile.category == cs2config::TrackCategory::Text
+                            ? TrackTilePainter::area(cell, m_look(i), font()).toAlignedRect()
+                            : cell);
+    }
+    const QRect room(Margin, Margin, gridSize().width() * m_tileSize, gridSize().height() * m_tileSize);
+    m_blocks.layOut({m_tileSize, QPoint(Margin, Margin), nameFont, room, devicePixelRatioF()}, taken,
+                    m_colors);
+}
+
+QRect TrackPageView::problemMarkerRect(int tile) const {
+    const QRect cell = tileRect(tile);
+    const int size = std::clamp(m_tileSize * 2 / 5, 9, 18);
+    return {cell.right() - size, cell.top() + 1, size, size};
+}
+
+// An amber disc with "!" at the top right of each tile with a problem (the tile's name is at its top left).
+void TrackPageView::paintProblemMarkers(QPainter& painter, const QRect& area) const {
+    if (m_problemTiles.empty())
+        return;
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    QFont font = painter.font();
+    font.setBold(true);
+    for (const int tile : m_problemTiles) {
+        const QRect marker = problemMarkerRect(tile);
+        if (!marker.intersects(area))
+            continue;
+        font.setPixelSize(std::max(7, marker.height() - 4));
+        painter.setFont(font);
+        painter.setPen(QPen(QColor(122, 82, 0), 1));
+        painter.setBrush(m_colors.problem);
+        painter.drawEllipse(QRectF(marker).adjusted(0.5, 0.5, -0.5, -0.5));
+        painter.setPen(Qt::black);
+        painter.drawText(marker, Qt::AlignCenter, QStringLiteral("!"));
+    }
+    painter.restore();
 }
 
 // The pictures of the tiles that reach into the area, in the page's order; those not drawn yet are drawn
@@ -243,6 +309,7 @@ bool TrackPageView::event(QEvent* event) {
     }
     if (event->type() == QEvent::PaletteChange) {
         m_colors = TrackColors::from(palette());
+        m_blocks.forgetLayout();
         update();
     }
     if (event->type() == QEvent::FontChange || event->type() == QEvent::ScreenChangeInternal) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "trackplan/BlockOutlines.h"
 #include "trackplan/TileTag.h"
 #include "trackplan/TrackColors.h"
 #include "trackplan/TrackTileCache.h"
@@ -55,6 +56,15 @@ public:
     // Greyed: the states drawn are the last the station reported, not what it reports now.
     void setDimmed(bool dimmed);
     bool isDimmed() const { return m_dimmed; }
+    // The blocks drawn over the page, each with its name (none: an empty BlockOutlines).
+    void setBlocks(BlockOutlines blocks);
+    // Laid out for the current zoom when the page was last painted.
+    const BlockOutlines& blocks() const { return m_blocks; }
+    // The tiles marked as having a problem in the drawing (none: empty).
+    void setProblemTiles(std::vector<int> tiles);
+    const std::vector<int>& problemTiles() const { return m_problemTiles; }
+    // Where a tile's problem marker is drawn.
+    QRect problemMarkerRect(int tile) const;
 
 signals:
     void tileClicked(int tile);
@@ -80,6 +90,8 @@ private:
     };
     TagsInArea tagsIn(const QRect& area);
     QFont tagFont() const;
+    void layOutBlocks();
+    void paintProblemMarkers(QPainter& painter, const QRect& area) const;
 
     std::shared_ptr<const model::LayoutPage> m_pageOwner;
     const model::LayoutPage& m_page;
@@ -92,6 +104,8 @@ private:
     mutable QFont m_tagFontBase;
     mutable int m_tagFontTile = 0;
     mutable std::optional<QRect> m_drawnArea; // drawnArea(m_tileSize), asked for by every layout pass
+    BlockOutlines m_blocks;
+    std::vector<int> m_problemTiles;
     int m_tileSize = 40;
     bool m_dimmed = false;
 };

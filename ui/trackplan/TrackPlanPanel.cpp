@@ -6,7 +6,14 @@
 #include "common/ToolIcons.h"
 #include "connection/StationConnection.h"
 #include "model/Railway.h"
+#include "trackgraph/TrackGraph.h"
+#include "trackplan/BlockDescription.h"
+#include "trackplan/BlockOutlines.h"
+#include "trackplan/BlockPopup.h"
+#include "trackplan/BlockViewSettings.h"
+#include "trackplan/GraphProblemText.h"
 #include "trackplan/PageZoom.h"
+#include "trackplan/PlanGraph.h"
 #include "trackplan/SetRoutes.h"
 #include "trackplan/TileMenu.h"
 #include "trackplan/TrackPageView.h"
@@ -59,6 +66,14 @@ TrackPlanPanel::TrackPlanPanel(QWidget* parent) : QWidget(parent) {
     for (QAction* action : {m_zoomIn, m_zoomOut, m_fit})
         action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     m_toolBar->addSeparator();
+    m_blocks = m_toolBar->addAction(QString());
+    m_blocks->setObjectName(QStringLiteral("showBlocksAction"));
+    m_blocks->setCheckable(true);
+    m_blocks->setChecked(BlockViewSettings::shown());
+    connect(m_blocks, &QAction::toggled, this, [this](bool shown) {
+        BlockViewSettings::setShown(shown);
+        applyBlocks();
+    });
     // Files and the station's plan say what they do; the zoom keys are known by their drawings.
     m_toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     m_toolBar->setIconSize(QSize(20, 20));
@@ -71,6 +86,11 @@ TrackPlanPanel::TrackPlanPanel(QWidget* parent) : QWidget(parent) {
     m_problem = new ProblemBar(this);
     m_problem->setObjectName(QStringLiteral("trackPlanProblem"));
     layout->addWidget(m_problem);
+    m_drawingProblems = new ProblemBar(this);
+    m_drawingProblems->setObjectName(QStringLiteral("trackPlanDrawingProblems"));
+    m_drawingProblems->setTone(ProblemBar::Tone::Notice);
+    layout->addWidget(m_drawingProblems);
+    m_blockPopup = new BlockPopup(this);
     m_layoutState = new LayoutStateBanner(this);
     m_layoutState->setObjectName(QStringLiteral("trackPlanLayoutState"));
     layout->addWidget(m_layoutState);
@@ -136,6 +156,7 @@ bool TrackPlanPanel::openFolder(const QString& folder) {
         for (const cs2config::Accessory& accessory : content.accessories->accessories)
             m_folderNames[accessory.id] = QString::fromStdString(accessory.name);
     m_folderLayout = model::TrackLayout(downloadedPages(content.layout));
+    m_folderRoutes = PlanGraph::routesIn(content.configDirectory);
     if (m_connection) // the pictures of the folder's locomotives, in its icons folder
         m_connection->pictures().setFolder(QString::fromStdString(
             cs2config::LayoutFolder::iconsDirectoryOf(content.configDirectory).string()));
@@ -182,6 +203,7 @@ void TrackPlanPanel::showStationPlan() {
         m_connection->pictures().setFolder({});
     m_folderLayout = {};
     m_folderNames.clear();
+    m_folderRoutes.reset();
     showProblem({});
     rebuild();
 }
@@ -237,9 +259,12 @@ void TrackPlanPanel::rebuild() {
                         : nullptr;
     indexRoutes();
     m_setRoutes->update(m_live ? m_railway.data() : nullptr);
+    m_graph = m_layout ? PlanGraph::derive(graphSource(), *m_layout) : nullptr;
+    m_blockPopup->hide();
     if (m_layout)
         for (int i = 0; i < int(m_layout->pages().size()); ++i)
             addPage(i);
+    applyBlocks();
     if (current >= 0 && current < m_tabs->count())
         m_tabs->setCurrentIndex(current);
     m_tabs->setVisible(m_tabs->count() > 0);
@@ -365,7 +390,23 @@ QString TrackPlanPanel::toolTipOn(const model::TrackLayout& layout, model::TileR
             if (const QString occupant = occupantName(*contact); !occupant.isEmpty())
                 tip += QStringLiteral("\n") + tr("Locomotive on it: %1").arg(occupant);
     const bool hasState = tile.accessory || tile.contact || tile.route;
-    return hasState && isLive() && !isReported() ? tip + QStringLiteral("\n") + NotReported::reason() : tip;
+    if (hasState && isLive() && !isReported())
+        tip += QStringLiteral("\n") + NotReported::reason();
+    return tip + graphToolTip(ref);
+}
+
+// While the blocks are shown: the block a tile is in, and the drawing's problems there.
+QString TrackPlanPanel::graphToolTip(model::TileRef tile) const {
+    if (!showsBlocks() || !m_graph)
+        return {};
+    QString tip;
+    const trackgraph::TrackGraph& graph = m_graph->graph();
+    for (const int block : m_graph->blocksAt(tile))
+        tip += QStringLiteral("\n") +
+               tr("Block %1 '%2'").arg(block).arg(QString::fromStdString(graph.block(block).name));
+    for (const trackgraph::Problem* problem : m_graph->problemsAt(tile))
+        tip += QStringLiteral("\n") + tr("Problem: %1").arg(GraphProblemText::sentence(graph, *problem));
+    return tip;
 }
 
 // The name of the locomotive on an occupied contact, where the simulator or the user said which it is.
@@ -396,6 +437,18 @@ QString TrackPlanPanel::accessoryName(std::int64_t id) const {
     }
     const model::Accessory* accessory = m_railway ? m_railway->accessory(id) : nullptr;
     return accessory ? accessory->name() : QString();
+}
+
+QString TrackPlanPanel::routeName(std::int64_t id) const {
+    if (m_folder) {
+        if (m_folderRoutes)
+            for (const cs2config::Route& route : m_folderRoutes->routes)
+                if (route.id == id)
+                    return QString::fromStdString(route.name);
+        return {};
+    }
+    const model::Route* route = m_railway ? m_railway->route(id) : nullptr;
+    return route ? route->name() : QString();
 }
 
 void TrackPlanPanel::tilesChanged(const QList<model::TileRef>& tiles) {
@@ -429,6 +482,8 @@ void TrackPlanPanel::tileClicked(int page, int tile) {
         goToPage(*t.page);
         return;
     }
+    if (!t.route && !t.accessory && showBlockAt({page, tile}))
+        return; // a block's track or contact: what it leads to
     if (!isLive() || !isReported())
         return; // switching from a state nobody vouches for would be a guess
     if (t.route) {
@@ -441,11 +496,88 @@ void TrackPlanPanel::tileClicked(int page, int tile) {
 }
 
 void TrackPlanPanel::showTileMenu(int page, int tile, QPoint where) {
-    if (!isLive() || !isReported())
-        return;
     QMenu menu(this);
-    if (TileMenu::fill(menu, m_layout->tile({page, tile}), *m_railway))
+    if (fillTileMenu(menu, {page, tile}))
         menu.exec(where);
+}
+
+bool TrackPlanPanel::fillTileMenu(QMenu& menu, model::TileRef tile) {
+    bool filled = isLive() && isReported() && TileMenu::fill(menu, m_layout->tile(tile), *m_railway);
+    if (!showsBlocks() || !m_graph)
+        return filled;
+    for (const int block : m_graph->blocksAt(tile)) {
+        if (filled)
+            menu.addSeparator();
+        const QString name = QString::fromStdString(m_graph->graph().block(block).name);
+        QAction* entry = menu.addAction(tr("Block %1 '%2'...").arg(block).arg(name));
+        entry->setObjectName(QStringLiteral("blockEntry"));
+        connect(entry, &QAction::triggered, this, [this, tile, block] { showBlock(tile, block); });
+        filled = true;
+    }
+    return filled;
+}
+
+bool TrackPlanPanel::showsBlocks() const {
+    return m_blocks->isChecked();
+}
+
+void TrackPlanPanel::setShowBlocks(bool shown) {
+    m_blocks->setChecked(shown);
+}
+
+bool TrackPlanPanel::showBlockAt(model::TileRef tile) {
+    if (!showsBlocks() || !m_graph)
+        return false;
+    const std::vector<int> blocks = m_graph->blocksAt(tile);
+    if (blocks.empty())
+        return false;
+    showBlock(tile, blocks.front());
+    return true;
+}
+
+// The popup about a block, just below the tile it was asked from.
+void TrackPlanPanel::showBlock(model::TileRef tile, int block) {
+    TrackPageView* view = pageView(tile.page);
+    if (!m_graph || !view)
+        return;
+    const BlockDescription description(m_graph->graph(),
+                                       {[this](std::int64_t id) { return accessoryName(id); },
+                                        [this](std::int64_t id) { return routeName(id); }});
+    const QRect cell = view->tileRect(tile.tile);
+    m_blockPopup->showText(description.html(block), view->mapToGlobal(cell.bottomLeft() + QPoint(0, 4)));
+}
+
+// The blocks drawn over every page, the drawing's problems marked and listed, or none of it.
+void TrackPlanPanel::applyBlocks() {
+    const bool shown = showsBlocks() && m_graph;
+    for (int i = 0; i < int(m_views.size()); ++i)
+        if (TrackPageView* view = m_views[std::size_t(i)]) {
+            view->setBlocks(shown ? BlockOutlines::ofPage(*m_graph, i) : BlockOutlines());
+            view->setProblemTiles(shown ? m_graph->problemTilesOf(i) : std::vector<int>());
+        }
+    if (shown && !m_graph->graph().problems().empty())
+        m_drawingProblems->setProblem([graph = m_graph] { return GraphProblemText::list(graph->graph()); });
+    else
+        m_drawingProblems->clear();
+    if (!shown)
+        m_blockPopup->hide();
+}
+
+// The source of the graph: the opened folder's files, or the station's download the railway was made of.
+trackgraph::GraphSource TrackPlanPanel::graphSource() const {
+    if (m_folder)
+        return trackgraph::GraphSource::of(m_folder->layout,
+                                           m_folder->accessories ? &*m_folder->accessories : nullptr,
+                                           m_folderRoutes ? &*m_folderRoutes : nullptr);
+    trackgraph::GraphSource source;
+    if (!m_live || !m_connection)
+        return source;
+    const station::StartupResult& result = m_connection->startupResult();
+    for (const station::DownloadedPage& page : result.pages)
+        source.pages.push_back({page.id, page.name, &page.page.elements});
+    source.accessories = result.accessories ? &*result.accessories : nullptr;
+    source.routes = result.routes ? &*result.routes : nullptr;
+    return source;
 }
 
 void TrackPlanPanel::goToPage(std::int64_t pageId) {
@@ -492,6 +624,10 @@ void TrackPlanPanel::retranslate() {
     m_zoomIn->setText(tr("Zoom in"));
     m_zoomOut->setText(tr("Zoom out"));
     m_fit->setText(tr("Fit"));
+    m_blocks->setText(tr("Blocks"));
+    m_blocks->setToolTip(
+        tr("Outline each block with its name, and list and mark the problems of the drawing; "
+           "then a click on a block's track says where it leads"));
     for (QAction* action : {m_zoomIn, m_zoomOut, m_fit})
         action->setToolTip(QStringLiteral("%1 (%2)").arg(
             action->text(), action->shortcut().toString(QKeySequence::NativeText)));
@@ -503,6 +639,7 @@ void TrackPlanPanel::retranslate() {
         : m_railway ? tr("Live from the station")
                     : QString());
     m_source->setToolTip(QString::fromStdString(config.string()));
+    m_blockPopup->hide(); // its words are in the language before
     if (m_layout)
         for (int i = 0; i < m_tabs->count(); ++i) {
             if (m_layout->pages()[std::size_t(i)].name.isEmpty())
@@ -519,7 +656,8 @@ void TrackPlanPanel::updateIcons() {
                              {m_export, Tool::ExportLayout},
                              {m_zoomOut, Tool::ZoomOut},
                              {m_zoomIn, Tool::ZoomIn},
-                             {m_fit, Tool::Fit}});
+                             {m_fit, Tool::Fit},
+                             {m_blocks, Tool::Blocks}});
 }
 
 void TrackPlanPanel::changeEvent(QEvent* event) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "cs2config/LayoutFolder.h"
+#include "cs2config/RouteFile.h"
 #include "model/TrackLayout.h"
 #include "trackplan/PageZoom.h"
 
@@ -15,6 +16,7 @@
 
 class QAction;
 class QLabel;
+class QMenu;
 class QTabWidget;
 class QToolBar;
 
@@ -25,10 +27,15 @@ namespace stellwerk::model {
 class FeedbackContact;
 class Railway;
 } // namespace stellwerk::model
+namespace stellwerk::trackgraph {
+struct GraphSource;
+}
 
 namespace stellwerk::ui {
 
+class BlockPopup;
 class LayoutStateBanner;
+class PlanGraph;
 class ProblemBar;
 class SetRoutes;
 class TrackPageView;
@@ -36,7 +43,9 @@ struct TrackTileLook;
 
 // The track plan: every page of the station's gleisbild as a tab, live turnout, signal, contact and
 // route states, switching by click, and opening or exporting a CS2 configuration folder. Without a
-// station it shows a plan opened from files.
+// station it shows a plan opened from files. It derives the track graph of the layout it shows once per
+// layout (PlanGraph) and, when asked, draws the blocks, lists and marks the drawing's problems, and says
+// what a block clicked leads to.
 class TrackPlanPanel final : public QWidget {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(TrackPlanPanel)
@@ -89,6 +98,25 @@ public:
     // The red bar that shows it (folded, dismissed).
     ProblemBar* problemBar() const { return m_problem; }
 
+    // The track graph of the layout shown (null: none, or not derived: a railway not loaded yet).
+    const PlanGraph* graph() const { return m_graph.get(); }
+    // "Blocks" on the plan's toolbar (and in the View menu): outlines the blocks with their names, lists
+    // the drawing's problems in the bar above the plan and marks their tiles; a click on a block's track
+    // or contact then says its contacts and ways. Remembered (BlockViewSettings).
+    QAction* blocksAction() const { return m_blocks; }
+    bool showsBlocks() const;
+    void setShowBlocks(bool shown);
+    // The amber bar that lists the drawing's problems while the blocks are shown.
+    ProblemBar* drawingProblemBar() const { return m_drawingProblems; }
+    // The popup a click on a block opens.
+    BlockPopup* blockPopup() const { return m_blockPopup; }
+    // Opens the popup about the block on a tile (the first, where two tracks cross); false when the tile is
+    // in no block or the blocks are not shown.
+    bool showBlockAt(model::TileRef tile);
+    // What a right click on a tile offers: its positions or occupant on a reported railway (TileMenu), and
+    // while the blocks are shown "Block ..." for each block it is in; false when there is nothing.
+    bool fillTileMenu(QMenu& menu, model::TileRef tile);
+
 signals:
     // The pages shown were rebuilt (another railway, a reload, an opened folder).
     void layoutChanged();
@@ -114,6 +142,11 @@ private:
     void showTileMenu(int page, int tile, QPoint where);
     void goToPage(std::int64_t pageId);
     QString accessoryName(std::int64_t id) const;
+    QString routeName(std::int64_t id) const;
+    trackgraph::GraphSource graphSource() const;
+    void applyBlocks();
+    void showBlock(model::TileRef tile, int block);
+    QString graphToolTip(model::TileRef tile) const;
     void showProblem(std::function<QString()> describe);
     static QString findingsText(const std::vector<cs2config::LayoutFinding>& findings);
     QString emptyPageText(int index) const;
@@ -126,6 +159,7 @@ private:
     std::optional<cs2config::LayoutFolder::Content> m_folder;
     model::TrackLayout m_folderLayout;
     std::map<std::int64_t, QString> m_folderNames;
+    std::optional<cs2config::RouteFile> m_folderRoutes;
     // Shared with the page views, which keep their page alive whatever happens to the railway.
     std::shared_ptr<const model::TrackLayout> m_layout;
     bool m_live = false;
@@ -134,6 +168,7 @@ private:
     PageZoom* m_zoom = nullptr;
     std::unique_ptr<SetRoutes> m_setRoutes;
     std::function<bool()> m_mayOpen;
+    std::shared_ptr<const PlanGraph> m_graph;
 
     QToolBar* m_toolBar = nullptr;
     QAction* m_open = nullptr;
@@ -142,8 +177,11 @@ private:
     QAction* m_zoomIn = nullptr;
     QAction* m_zoomOut = nullptr;
     QAction* m_fit = nullptr;
+    QAction* m_blocks = nullptr;
     QLabel* m_source = nullptr;
     ProblemBar* m_problem = nullptr;
+    ProblemBar* m_drawingProblems = nullptr;
+    BlockPopup* m_blockPopup = nullptr;
     LayoutStateBanner* m_layoutState = nullptr;
     QLabel* m_emptyText = nullptr;
     QTabWidget* m_tabs = nullptr;

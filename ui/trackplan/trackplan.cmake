@@ -1,6 +1,12 @@
-# The track plan tab: pages of the CS2 gleisbild drawn as vector tiles, live states, switching by click.
+# The track plan tab: pages of the CS2 gleisbild drawn as vector tiles, live states, switching by click, and
+# the track graph's blocks and problems drawn over them.
 target_sources(stellwerk-ui PRIVATE
+    trackplan/BlockDescription.cpp trackplan/BlockDescription.h
+    trackplan/BlockOutlines.cpp trackplan/BlockOutlines.h
+    trackplan/BlockPopup.cpp trackplan/BlockPopup.h
+    trackplan/BlockViewSettings.cpp trackplan/BlockViewSettings.h
     trackplan/FeatureShapes.cpp
+    trackplan/GraphProblemText.cpp trackplan/GraphProblemText.h
     trackplan/LayoutFileActions.cpp trackplan/LayoutFileActions.h
     trackplan/LayoutFileDialog.cpp trackplan/LayoutFileDialog.h
     trackplan/LayoutFileSettings.cpp trackplan/LayoutFileSettings.h
@@ -10,6 +16,7 @@ target_sources(stellwerk-ui PRIVATE
     trackplan/PageZoom.cpp trackplan/PageZoom.h
     trackplan/PaintBands.cpp trackplan/PaintBands.h
     trackplan/PaintThreads.cpp trackplan/PaintThreads.h
+    trackplan/PlanGraph.cpp trackplan/PlanGraph.h
     trackplan/SetRoutes.cpp trackplan/SetRoutes.h
     trackplan/TileMenu.cpp trackplan/TileMenu.h
     trackplan/TileTag.cpp trackplan/TileTag.h

@@ -102,6 +102,20 @@ TEST_F(MainWindowTest, QuitClosesTheWindow) {
     EXPECT_FALSE(window->isVisible());
 }
 
+// View -> Blocks is the plan's own toolbar button: one choice, checked in both places.
+TEST_F(MainWindowTest, ViewMenuShowsThePlansBlocks) {
+    auto* plan = window->findChild<TrackPlanPanel*>();
+    ASSERT_NE(plan, nullptr);
+    QAction* blocks = action("showBlocksAction");
+    ASSERT_NE(blocks, nullptr);
+    EXPECT_TRUE(menu("viewMenu")->actions().contains(blocks));
+    EXPECT_EQ(actionText("showBlocksAction"), QStringLiteral("Blocks"));
+    EXPECT_FALSE(plan->showsBlocks());
+    blocks->trigger();
+    EXPECT_TRUE(plan->showsBlocks());
+    EXPECT_TRUE(plan->blocksAction()->isChecked());
+}
+
 TEST_F(MainWindowTest, ViewMenuHasLanguageSubmenuWithEnglishAndDeutsch) {
     QMenu* languages = menu("languageMenu");
     ASSERT_NE(languages, nullptr);

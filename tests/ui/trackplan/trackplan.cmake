@@ -1,8 +1,11 @@
-# The track plan tab against the simulated station, each page's zoom and fit, the names on the tiles, and every tile type drawn in every rotation.
+# The track plan tab against the simulated station, each page's zoom and fit, the names on the tiles, every tile
+# type drawn in every rotation, and the blocks, ways and problems of the track graph shown on the plan.
 target_sources(stellwerk-ui-tests PRIVATE
+    trackplan/BlockOutlinesTest.cpp
     trackplan/PageZoomTest.cpp
     trackplan/PaintBandsTest.cpp
     trackplan/TileTagTest.cpp
+    trackplan/TrackPlanBlocksTest.cpp
     trackplan/TrackGraphDrawingTest.cpp
     trackplan/TrackPlanPanelTest.cpp
     trackplan/TrackTileCacheTest.cpp
