@@ -1,6 +1,7 @@
 #include "LocArgument.h"
 
 #include "CliNumber.h"
+#include "cs2/LocIdText.h"
 
 #include <array>
 #include <charconv>
@@ -43,25 +44,7 @@ std::optional<cs2::Protocol> accessoryProtocol(std::string_view name) {
 } // namespace
 
 Expected<cs2::LocId, std::string> parseLocomotive(std::string_view text) {
-    const auto [protocolName, addressText] = splitProtocol(text);
-    const auto address = parseNumber(addressText);
-    if (protocolName.empty()) {
-        if (!address || *address > 0xFFFF)
-            return "LOC " + quoted(text) + " is not mfx:N, dcc:N, mm2:N or a Loc-ID up to 0xFFFF";
-        return cs2::LocId(*address);
-    }
-    const auto protocol = cs2::protocolFromName(protocolName);
-    const bool loco = protocol && (*protocol == cs2::Protocol::Mm2 || *protocol == cs2::Protocol::Mfx ||
-                                   *protocol == cs2::Protocol::Dcc || *protocol == cs2::Protocol::Sx1 ||
-                                   *protocol == cs2::Protocol::Sx2);
-    if (!loco)
-        return "LOC " + quoted(text) + ": unknown protocol " + quoted(protocolName) +
-               " (mfx, dcc, mm2, sx1, sx2)";
-    const auto id = address ? cs2::LocId::fromAddress(*protocol, *address) : std::nullopt;
-    if (!id)
-        return "LOC " + quoted(text) + ": the address does not fit the " + std::string(protocolName) +
-               " range";
-    return *id;
+    return cs2::parseLocomotive(text);
 }
 
 Expected<cs2::LocId, std::string> parseAccessory(std::string_view text) {
@@ -80,16 +63,7 @@ Expected<cs2::LocId, std::string> parseAccessory(std::string_view text) {
 }
 
 std::string locomotiveText(cs2::LocId loco) {
-    switch (loco.protocol()) {
-    case cs2::Protocol::Mm2:
-    case cs2::Protocol::Mfx:
-    case cs2::Protocol::Dcc:
-    case cs2::Protocol::Sx1:
-    case cs2::Protocol::Sx2:
-        return std::string(cs2::protocolName(loco.protocol())) + ":" + std::to_string(loco.address());
-    default:
-        return hexText(loco.value());
-    }
+    return cs2::locomotiveText(loco);
 }
 
 std::string accessoryText(cs2::LocId article) {

@@ -27,10 +27,21 @@ struct Parser {
     QCommandLineOption can{"can",
                            "Also put the frames on a CAN interface (plugin:interface, e.g. socketcan:can0).",
                            "plugin:interface"};
-    QCommandLineOption layout{"layout", "A CS2 config folder to serve instead of the demo layout.", "dir"};
+    QCommandLineOption layout{
+        "layout",
+        "A CS2 config folder to serve instead of the demo layout; the trains run on its track plan.", "dir"};
     QCommandLineOption gleisbox{"gleisbox", "Also answer as a Gleisbox on the bus."};
     QCommandLineOption noTrains{"no-trains", "Locomotives do not move (no S88 events)."};
     QCommandLineOption tick{"tick", "Train movement step in milliseconds (default 100).", "ms", "100"};
+    QCommandLineOption place{
+        "place",
+        "Put locomotive LOC (mfx:5, dcc:3, mm2:72 or a Loc-ID) in the block holding contact CONTACT, its "
+        "front "
+        "towards the block's end END (a or b, as 'stellwerk-cli layout graph' names them; b when left out), "
+        "running forward that way. Repeatable; without it the demo's trains stand where they always do, and "
+        "on "
+        "another layout the first three locomotives are spread over the blocks.",
+        "LOC=CONTACT[:END]"};
     QCommandLineOption ms1{
         "ms1",
         "Also put N simulated MS1 handhelds (M-CAN) on the station's bus, \"MS1 1\" to \"MS1 N\", "
@@ -103,6 +114,7 @@ struct Parser {
                            gleisbox,
                            noTrains,
                            tick,
+                           place,
                            ms1,
                            noHandheldMaster,
                            ro,
@@ -209,6 +221,18 @@ std::optional<QString> readOrc(const Parser& p, SimOptions& options) {
     return std::nullopt;
 }
 
+std::optional<QString> readPlacements(const Parser& p, SimOptions& options) {
+    for (const QString& text : p.parser.values(p.place)) {
+        const auto placement = sim::parsePlacement(text.toStdString());
+        if (!placement)
+            return "--place: " + QString::fromStdString(placement.error());
+        options.placements.push_back(*placement);
+    }
+    if (!options.placements.empty() && p.parser.isSet(p.noTrains))
+        return QString("--place puts trains on the track, --no-trains keeps them off: choose one");
+    return std::nullopt;
+}
+
 ParsedOptions failure(const QString& message) {
     return {std::nullopt, message, true};
 }
@@ -286,6 +310,8 @@ ParsedOptions parseSimOptions(const QStringList& arguments) {
     if (const auto problem = readOrc(p, options))
         return failure(*problem);
     options.trains = !p.parser.isSet(p.noTrains);
+    if (const auto problem = readPlacements(p, options))
+        return failure(*problem);
     return {std::move(options), {}, false};
 }
 

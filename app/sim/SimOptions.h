@@ -2,12 +2,14 @@
 
 #include "sim/SimulatedStation.h"
 #include "sim/StationServer.h"
+#include "sim/TrainPlacement.h"
 
 #include <QString>
 #include <QStringList>
 #include <chrono>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 namespace stellwerk::simapp {
 
@@ -23,6 +25,8 @@ struct SimOptions {
     bool gleisbox = false;
     bool trains = true;
     std::chrono::milliseconds tick{100};
+    // Where the trains start (--place, repeatable); empty: the demo's placements, or spread over the blocks.
+    std::vector<sim::TrainPlacement> placements;
     int handhelds = 0;          // simulated MS1s on the station's bus (--ms1)
     bool handheldMaster = true; // the station is the MS1s' M-CAN master (off: --no-handheld-master)
     int roModules = 0;          // simulated RO relay/IO modules on the station's bus (--ro)

@@ -14,7 +14,7 @@
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
 #include "sim/TrainMovement.h"
-#include "sim/TrainTrack.h"
+#include "sim/TrainPlacement.h"
 
 #include <QCoreApplication>
 #include <QTextStream>
@@ -52,14 +52,15 @@ std::optional<sim::StationLayout> loadLayout(const simapp::SimOptions& options) 
     return layout;
 }
 
-sim::TrainTrack trackFor(const simapp::SimOptions& options, const sim::StationLayout& layout) {
+// The trains of --place, else the demo's, else the first locomotives spread over the blocks.
+std::vector<sim::TrainPlacement> placementsFor(const simapp::SimOptions& options,
+                                               const sim::StationLayout& layout,
+                                               const trackgraph::TrackGraph& graph) {
+    if (!options.placements.empty())
+        return options.placements;
     if (options.layoutDirectory.isEmpty())
-        return sim::TrainTrack::demo();
-    std::vector<std::uint32_t> locIds;
-    for (const cs2config::Locomotive& loco : layout.locomotives().locomotives)
-        if (loco.uid != 0) // the placeholder record some stations write first
-            locIds.push_back(loco.uid);
-    return sim::TrainTrack::loopOfContacts(layout.trackPlan(), locIds);
+        return sim::demoPlacements();
+    return sim::spreadPlacements(layout.locomotives(), graph);
 }
 
 // Everything the running simulator owns, torn down in reverse order when the event loop ends. The bus
@@ -168,6 +169,55 @@ void tellStationAddress(const Simulator& simulator, const simapp::SimOptions& op
           << simulator.server->tcpPort() << "?http=" << simulator.http->port() << Qt::endl;
 }
 
+// The station's web server: the files, the pictures and the accidents.
+bool startWebServer(Simulator& simulator, const simapp::SimOptions& options) {
+    const sim::SimulatedStation* station = simulator.station.get();
+    simulator.http = std::make_unique<sim::HttpConfigServer>(
+        [station](std::string_view path) { return station->layout().fileForPath(path); },
+        [station](std::string_view name) { return station->layout().pictureFor(name); });
+    if (!simulator.http->listen(options.server.listenAddress, options.httpPort)) {
+        err() << "stellwerk-sim: HTTP port " << options.httpPort << ": " << simulator.http->errorString()
+              << Qt::endl;
+        return false;
+    }
+    out() << "listening: http://" << options.server.listenAddress.toString() << ':' << simulator.http->port()
+          << "/config/" << Qt::endl;
+    tellStationAddress(simulator, options);
+    return true;
+}
+
+// Every accident as a line on standard output, and the counts on the web server (GET /accidents).
+void reportAccidents(const Simulator& simulator) {
+    QObject::connect(simulator.trains.get(), &sim::TrainMovement::accident,
+                     [](const sim::Accident& accident) {
+                         out() << "accident: " << QString::fromStdString(accident.text) << Qt::endl;
+                     });
+    if (!simulator.http)
+        return;
+    const sim::TrainMovement* trains = simulator.trains.get();
+    simulator.http->serveJson(
+        "/accidents", [trains] { return sim::accidentsJson(trains->accidents(), trains->accidentLog()); });
+}
+
+// The trains on the track graph of the station's plan, where --place (or the default) puts them.
+bool startTrains(Simulator& simulator, const simapp::SimOptions& options) {
+    sim::TrainMovement::Options movement;
+    movement.tick = options.tick;
+    simulator.trains = std::make_unique<sim::TrainMovement>(*simulator.station,
+                                                            std::vector<sim::TrainPlacement>{}, movement);
+    reportAccidents(simulator);
+    const trackgraph::TrackGraph& graph = simulator.trains->graph();
+    for (const sim::TrainPlacement& placement : placementsFor(options, simulator.station->layout(), graph))
+        if (const std::optional<std::string> problem = simulator.trains->place(placement)) {
+            err() << "stellwerk-sim: --place: " << QString::fromStdString(*problem) << Qt::endl;
+            return false;
+        }
+    simulator.trains->start();
+    out() << "trains: " << simulator.trains->trainCount() << " on " << graph.blocks().size() << " blocks"
+          << Qt::endl;
+    return true;
+}
+
 bool start(Simulator& simulator, const simapp::SimOptions& options, sim::StationLayout layout) {
     sim::SimulatedStation::Options stationOptions;
     stationOptions.gleisbox = options.gleisbox;
@@ -186,30 +236,9 @@ bool start(Simulator& simulator, const simapp::SimOptions& options, sim::Station
     for (const QString& listener : simulator.server->listeners())
         out() << "listening: " << listener << Qt::endl;
     plugInHandhelds(simulator);
-    if (options.httpPort != 0) {
-        const sim::SimulatedStation* station = simulator.station.get();
-        simulator.http = std::make_unique<sim::HttpConfigServer>(
-            [station](std::string_view path) { return station->layout().fileForPath(path); },
-            [station](std::string_view name) { return station->layout().pictureFor(name); });
-        if (!simulator.http->listen(options.server.listenAddress, options.httpPort)) {
-            err() << "stellwerk-sim: HTTP port " << options.httpPort << ": " << simulator.http->errorString()
-                  << Qt::endl;
-            return false;
-        }
-        out() << "listening: http://" << options.server.listenAddress.toString() << ':'
-              << simulator.http->port() << "/config/" << Qt::endl;
-        tellStationAddress(simulator, options);
-    }
-    if (options.trains) {
-        sim::TrainMovement::Options movement;
-        movement.tick = options.tick;
-        simulator.trains = std::make_unique<sim::TrainMovement>(
-            *simulator.station, trackFor(options, simulator.station->layout()), movement);
-        simulator.trains->start();
-        out() << "trains: " << simulator.trains->track().placements.size() << " on "
-              << simulator.trains->track().sections.size() << " feedback sections" << Qt::endl;
-    }
-    return true;
+    if (options.httpPort != 0 && !startWebServer(simulator, options))
+        return false;
+    return !options.trains || startTrains(simulator, options);
 }
 
 } // namespace

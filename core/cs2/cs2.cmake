@@ -12,6 +12,7 @@ target_sources(stellwerk-cs2 PRIVATE
     cs2/JsonText.cpp
     cs2/LocoCodec.cpp
     cs2/LocId.cpp
+    cs2/LocIdText.cpp
     cs2/SpeedSteps.cpp
     cs2/StreamCodec.cpp
     cs2/SystemCodec.cpp

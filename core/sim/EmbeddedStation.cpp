@@ -13,7 +13,7 @@
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
 #include "sim/TrainMovement.h"
-#include "sim/TrainTrack.h"
+#include "sim/TrainPlacement.h"
 
 namespace stellwerk::sim {
 
@@ -21,8 +21,8 @@ namespace {
 
 // The demo's trains that run when the app starts: BR 218 Ost and ICE 3 Velaro, both placed on the loop
 // (Gleis 1 - Ausfahrt Ost - Block 1..4 - Einfahrt West with the turnouts straight, as in
-// magnetartikel.cs2), at the same moderate speed so that they keep their distance. A contact changes
-// every second or two.
+// magnetartikel.cs2), at the same moderate speed (300 mm/s) so that they keep their distance. A contact
+// changes every second or two.
 struct DemoRun {
     std::uint32_t locId;
     std::uint16_t speed; // 0..1000
@@ -96,7 +96,7 @@ bool EmbeddedStation::start() {
     handheld_->plugIn();
     if (!startWebServer() || !startDeviceBus())
         return false;
-    trains_ = std::make_unique<TrainMovement>(*station_, TrainTrack::demo());
+    trains_ = std::make_unique<TrainMovement>(*station_, demoPlacements());
     wireSidingToEncoder();
     if (report_)
         QObject::connect(trains_.get(), &TrainMovement::occupantChanged, trains_.get(), report_);

@@ -74,7 +74,7 @@ HttpAnswer answerPicture(std::string_view name, const ConfigFileLookup& pictures
 } // namespace
 
 HttpAnswer answerConfigRequest(const QByteArray& request, const ConfigFileLookup& files,
-                               const ConfigFileLookup& pictures) {
+                               const ConfigFileLookup& pictures, const JsonDocuments& documents) {
     QByteArray method;
     QByteArray target;
     if (!splitRequestLine(request, method, target))
@@ -85,6 +85,8 @@ HttpAnswer answerConfigRequest(const QByteArray& request, const ConfigFileLookup
     const std::string path =
         QByteArray::fromPercentEncoding(target.left(query < 0 ? target.size() : query)).toStdString();
     const bool head = method == "HEAD";
+    if (const auto document = documents.find(path); document != documents.end())
+        return {200, QByteArray::fromStdString(document->second()), head, "application/json"};
     if (path.starts_with(PicturePrefix))
         return answerPicture(std::string_view(path).substr(PicturePrefix.size()), pictures, head);
     if (!path.starts_with(ConfigPrefix) ||
@@ -116,6 +118,10 @@ HttpConfigServer::HttpConfigServer(ConfigFileLookup files, ConfigFileLookup pict
 HttpConfigServer::~HttpConfigServer() {
     for (auto& [socket, request] : pending_)
         socket->disconnect(this);
+}
+
+void HttpConfigServer::serveJson(std::string path, std::function<std::string()> document) {
+    documents_.insert_or_assign(std::move(path), std::move(document));
 }
 
 bool HttpConfigServer::listen(const QHostAddress& address, std::uint16_t port) {
@@ -151,7 +157,7 @@ void HttpConfigServer::read(QTcpSocket* socket) {
     request += socket->readAll();
     const bool complete = request.contains("\r\n\r\n") || request.contains("\n\n");
     if (complete)
-        answer(socket, answerConfigRequest(request, files_, pictures_));
+        answer(socket, answerConfigRequest(request, files_, pictures_, documents_));
     else if (request.size() > MaxRequestBytes)
         answer(socket, problem(400));
 }

@@ -1,17 +1,25 @@
-# The simulated CS2's world and network side (core/sim): moving trains, the UDP/TCP/HTTP servers and
-# the demo layout embedded as the Qt resources :/demo-layout/config/ and :/demo-layout/icons/.
+# The simulated CS2's world and network side (core/sim): trains moving on the track graph, the UDP/TCP/HTTP
+# servers and the demo layout embedded as the Qt resources :/demo-layout/config/ and :/demo-layout/icons/.
 target_sources(stellwerk-simulator PRIVATE
+    sim/AccidentWatch.cpp
+    sim/AccidentWatch.h
     sim/BusGateway.cpp
     sim/BusGateway.h
-    sim/DemoLayoutTrack.cpp
     sim/HttpConfigServer.cpp
     sim/HttpConfigServer.h
     sim/StationServer.cpp
     sim/StationServer.h
     sim/TrainMovement.cpp
     sim/TrainMovement.h
-    sim/TrainTrack.cpp
+    sim/TrainPlacement.cpp
+    sim/TrainPlacement.h
+    sim/TrainRun.cpp
+    sim/TrainRun.h
+    sim/TurnoutWatch.cpp
+    sim/TurnoutWatch.h
 )
+# The trains run on the track graph of the station's own plan.
+target_link_libraries(stellwerk-simulator PUBLIC stellwerk-trackgraph)
 
 # A static library's resources become an object library that CMake links into every executable using
 # stellwerk-simulator, so no Q_INIT_RESOURCE is needed (tests/core/simnet checks that the files are there).

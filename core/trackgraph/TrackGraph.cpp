@@ -146,11 +146,13 @@ std::optional<BlockEnd> TrackGraph::blockEndAt(TileId tile, Port port) const {
 Lead TrackGraph::follow(const BlockEnd& from, const PositionOf& positionOf) const {
     if (from.block < 1 || from.block > int(blocks_.size()))
         return {};
-    const TrackJoints joints(tiles_, links_);
     const BlockEndInfo& start = block(from.block).end(from.end);
+    return followFrom(start.tile, start.port, positionOf);
+}
+
+Lead TrackGraph::followFrom(TileId tile, Port exit, const PositionOf& positionOf) const {
+    const TrackJoints joints(tiles_, links_);
     Lead lead;
-    TileId tile = start.tile;
-    Port exit = start.port;
     for (std::size_t steps = 0; steps <= 4 * tiles_.size(); ++steps) {
         const Joint joint = joints.beyond(tile, exit);
         if (joint.kind != Beyond::Track) {

@@ -184,6 +184,9 @@ public:
     // Where a train leaving the block through `from` runs with the turnouts where `positionOf` says (an
     // open end for a block that does not exist).
     Lead follow(const BlockEnd& from, const PositionOf& positionOf) const;
+    // The same from any tile: where a train leaving `tile` through `exit` runs (the simulator follows the
+    // track from the tile a train's front is on).
+    Lead followFrom(TileId tile, Port exit, const PositionOf& positionOf) const;
     // The block end a train leaving a tile through a port enters right there, if any.
     std::optional<BlockEnd> blockEndAt(TileId tile, Port port) const;
 

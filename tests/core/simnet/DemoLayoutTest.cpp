@@ -4,7 +4,8 @@
 #include "cs2config/ConfigFile.h"
 #include "cs2config/RouteAccessoryCheck.h"
 #include "sim/StationLayout.h"
-#include "sim/TrainTrack.h"
+#include "sim/TrainPlacement.h"
+#include "trackgraph/TrackGraph.h"
 
 #include <QFile>
 #include <algorithm>
@@ -144,32 +145,41 @@ TEST(DemoLayout, RoutesSwitchOnlyAccessoriesTheKeyboardHas) {
     EXPECT_TRUE(diagnostics.empty()) << diagnostics.formatAll();
 }
 
-TEST(DemoLayout, TrainTrackUsesTheContactsOfThePlanAndItsLocomotives) {
-    const TrainTrack track = TrainTrack::demo();
-    ASSERT_TRUE(track.consistent());
-    std::set<std::pair<std::int64_t, std::int64_t>> drawn;
-    for (const cs2config::TrackLayoutPage& page : demo().trackPlan().pages)
-        for (const cs2config::TrackElement& element : page.page.elements)
-            if (element.articleLink() == cs2config::ArticleLink::FeedbackContact)
-                drawn.emplace(element.deviceId, element.article);
-    std::set<std::pair<std::int64_t, std::int64_t>> moved;
-    for (const FeedbackSection& section : track.sections)
-        moved.emplace(section.device, section.contact);
-    EXPECT_EQ(moved, drawn);
-    for (const TrainPlacement& placement : track.placements)
+const trackgraph::TrackGraph& demoGraph() {
+    static const trackgraph::TrackGraph graph =
+        trackgraph::TrackGraph::derive(demo().trackPlan(), &demo().accessories(), &demo().routes());
+    return graph;
+}
+
+TEST(DemoLayout, TheTrainsStandOnContactsOfThePlanAndAreItsLocomotives) {
+    const std::vector<TrainPlacement> placements = demoPlacements();
+    ASSERT_EQ(placements.size(), 4U);
+    std::set<std::string> blocks;
+    for (const TrainPlacement& placement : placements) {
+        const std::optional<int> block = demoGraph().blockWithContact({0, placement.contact});
+        ASSERT_TRUE(block) << placement.contact;
+        blocks.insert(demoGraph().block(*block).name);
         EXPECT_TRUE(std::ranges::any_of(demo().locomotives().locomotives,
                                         [&](const auto& loco) { return loco.uid == placement.locId; }))
             << std::hex << placement.locId;
+    }
+    EXPECT_EQ(blocks, (std::set<std::string>{"Gleis 1", "Gleis 2", "Block 2", "Abstellgleis"}));
 }
 
-TEST(DemoLayout, AnyOtherLayoutRunsTrainsOnALoopOfItsContacts) {
-    const TrainTrack track = TrainTrack::loopOfContacts(demo().trackPlan(), {0x4001, 0x18});
-    ASSERT_EQ(track.sections.size(), 9U);
-    EXPECT_TRUE(track.consistent());
-    EXPECT_EQ(track.sections.back().ahead.next, 0);
-    EXPECT_EQ(track.sections.front().behind.next, 8);
-    ASSERT_EQ(track.placements.size(), 2U);
-    EXPECT_NE(track.placements[0].section, track.placements[1].section);
+// Any other layout: the first three locomotives, train i of n in block 1 + i * blocks / n, facing b.
+TEST(DemoLayout, AnyOtherLayoutSpreadsItsFirstLocomotivesOverTheBlocks) {
+    const std::vector<TrainPlacement> placements = spreadPlacements(demo().locomotives(), demoGraph());
+    ASSERT_EQ(placements.size(), 3U);
+    // lokomotive.cs2 begins with BR 218 Ost, V 100 2023, ICE 3 Velaro; blocks 1, 4 and 7 of 9 are Gleis 2
+    // (contact 2), Gleis 1 (1) and Block 2 (4).
+    EXPECT_EQ(placements, (std::vector<TrainPlacement>{{0x4001, 2, trackgraph::End::B},
+                                                       {0x0018, 1, trackgraph::End::B},
+                                                       {0x4002, 4, trackgraph::End::B}}));
+    cs2config::LocomotiveFile one;
+    one.locomotives.resize(1);
+    one.locomotives[0].uid = 0x4005;
+    EXPECT_EQ(spreadPlacements(one, demoGraph()).size(), 1U);
+    EXPECT_TRUE(spreadPlacements({}, demoGraph()).empty());
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 // The CS2's web server: GET /config/<file> answers the bytes the station serves, GET /icons/<name>.png
-// a locomotive picture; anything else is refused without touching the file system.
+// a locomotive picture, and the simulator's own JSON documents (GET /accidents); anything else is refused
+// without touching the file system.
 
 #include "sim/HttpConfigServer.h"
 
@@ -179,6 +180,28 @@ TEST_F(HttpConfigServerTest, UnknownPicturesAndPathsBelowIconsAreRefused) {
 
 TEST(HttpConfigRequest, WithoutPicturesIconsAreNotFound) {
     EXPECT_EQ(ask("GET /icons/BR%20218.png HTTP/1.0\r\n\r\n").status, 404);
+}
+
+// The simulator's own documents (stellwerk-sim's GET /accidents): JSON made at the time of each request.
+TEST(HttpConfigRequest, AJsonDocumentIsMadeForEachRequest) {
+    int asked = 0;
+    const JsonDocuments documents{
+        {"/accidents", [&asked] { return "{\"total\":" + std::to_string(++asked) + "}"; }}};
+    HttpAnswer answer = answerConfigRequest("GET /accidents HTTP/1.0\r\n\r\n", demoFile, {}, documents);
+    EXPECT_EQ(answer.status, 200);
+    EXPECT_EQ(answer.contentType, "application/json");
+    EXPECT_EQ(answer.body, "{\"total\":1}");
+    answer = answerConfigRequest("HEAD /accidents HTTP/1.0\r\n\r\n", demoFile, {}, documents);
+    EXPECT_TRUE(answer.headOnly);
+    EXPECT_EQ(answerConfigRequest("GET /accidents/x HTTP/1.0\r\n\r\n", demoFile, {}, documents).status, 404);
+    EXPECT_EQ(ask("GET /accidents HTTP/1.0\r\n\r\n").status, 404) << "only where the simulator serves it";
+}
+
+TEST_F(HttpConfigServerTest, ServesJsonDocumentsGivenToIt) {
+    server_.serveJson("/accidents", [] { return std::string("{\"total\":0}"); });
+    const QByteArray response = exchange(server_.port(), "GET /accidents HTTP/1.0\r\n\r\n");
+    EXPECT_TRUE(headerOf(response).contains("Content-Type: application/json")) << response.toStdString();
+    EXPECT_EQ(bodyOf(response), "{\"total\":0}");
 }
 
 TEST(EmbeddedStationWeb, ServesTheDemoPicturesOnItsOwnLoopbackPort) {

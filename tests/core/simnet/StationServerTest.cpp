@@ -7,7 +7,6 @@
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
 #include "sim/TrainMovement.h"
-#include "sim/TrainTrack.h"
 #include "transport/FrameAssembler.h"
 #include "transport/NetworkFraming.h"
 
@@ -185,9 +184,8 @@ TEST_F(StationServerTest, FramesTheStationEmitsOnItsOwnReachEveryListener) {
 
 TEST_F(StationServerTest, TrainStartedByATcpClientReportsItsContactsToEveryListener) {
     using namespace std::chrono_literals;
-    TrainTrack track = TrainTrack::demo();
-    track.placements = {{Br218, *track.find("Gleis 1"), 1900}};
-    TrainMovement trains(station_, std::move(track), {.tick = 20ms});
+    // On Gleis 1 (contact 1), facing Ausfahrt Ost (contact 8) 900 mm ahead: 1.8 s at full speed.
+    TrainMovement trains(station_, {{Br218, 1, trackgraph::End::B}}, {.tick = 20ms});
     trains.start();
     auto driver = connectClient();
     auto watcher = connectClient();
@@ -198,10 +196,12 @@ TEST_F(StationServerTest, TrainStartedByATcpClientReportsItsContactsToEveryListe
         return cs2::command(f) == 0x11 && cs2::isResponse(f) && f.dlc == 8 && f.data[3] == 8 &&
                f.data[4] == 0 && f.data[5] == 1;
     };
-    EXPECT_TRUE(test::waitFor([&] {
-        return driver->received(occupiedAusfahrtOst) && watcher->received(occupiedAusfahrtOst) &&
-               std::ranges::any_of(udpFrames_, occupiedAusfahrtOst);
-    }));
+    EXPECT_TRUE(test::waitFor(
+        [&] {
+            return driver->received(occupiedAusfahrtOst) && watcher->received(occupiedAusfahrtOst) &&
+                   std::ranges::any_of(udpFrames_, occupiedAusfahrtOst);
+        },
+        4 * test::WaitMs));
 }
 
 TEST_F(StationServerTest, ClosedClientIsForgotten) {

@@ -1,8 +1,8 @@
-// The graph of the demo layout (resources/demo-layout) against the hand-written table the simulator moves
-// its trains on today (core/sim/DemoLayoutTrack.cpp): the same sections, contacts and ways, section by
-// section, and the turnouts and positions that choose between them.
+// The graph of the demo layout (resources/demo-layout) against the hand-written table the simulator moved
+// its trains on before it ran them on this graph (core/sim/DemoLayoutTrack.cpp, retired; written out below):
+// the same sections, contacts and ways, section by section, and the turnouts and positions that choose
+// between them.
 #include "TrackGraphTestSupport.h"
-#include "sim/TrainTrack.h"
 #include "trackgraph/GraphReport.h"
 
 #include <QByteArray>
@@ -46,16 +46,31 @@ std::set<std::string> waysByName(const BlockEnd& end) {
     return ways;
 }
 
-// The same ways in the simulator's table (a facing turnout gives both branches). The table does not name
-// the turnouts a train passes trailing, so `facingOnly` leaves them out of the graph's ways.
-std::set<std::string> tableWays(const sim::SectionExit& exit, const sim::TrainTrack& table) {
-    const auto name = [&table](int section) { return table.sections[std::size_t(section)].name; };
-    if (exit.next == sim::SectionExit::BufferStop)
-        return {};
-    if (exit.turnout == 0)
-        return {name(exit.next)};
-    const std::string turnout = " W" + std::to_string(exit.turnout - 0x3000 + 1);
-    return {name(exit.next) + turnout + ":straight", name(exit.diverging) + turnout + ":diverging"};
+// The retired table: each section with its contact and the ways "ahead" and "behind" it, a facing turnout
+// giving both branches with the position that leads there (the table named no turnout passed trailing).
+struct RetiredSection {
+    std::string name;
+    std::int64_t contact;
+    std::set<std::string> ahead;
+    std::set<std::string> behind;
+};
+
+const std::vector<RetiredSection>& retiredTable() {
+    static const std::vector<RetiredSection> table = {
+        {"Einfahrt West", 7, {"Gleis 1 W1:straight", "Gleis 2 W1:diverging"}, {"Block 4"}},
+        {"Gleis 1", 1, {"Ausfahrt Ost"}, {"Einfahrt West"}},
+        {"Gleis 2", 2, {"Ausfahrt Ost"}, {"Einfahrt West"}},
+        {"Ausfahrt Ost",
+         8,
+         {"Block 1 W3:straight", "Abstellgleis W3:diverging"},
+         {"Gleis 1 W2:straight", "Gleis 2 W2:diverging"}},
+        {"Block 1", 3, {"Block 2"}, {"Ausfahrt Ost"}},
+        {"Block 2", 4, {"Block 3"}, {"Block 1"}},
+        {"Block 3", 5, {"Block 4"}, {"Block 2"}},
+        {"Block 4", 6, {"Einfahrt West"}, {"Block 3"}},
+        {"Abstellgleis", 9, {}, {"Ausfahrt Ost"}},
+    };
+    return table;
 }
 
 std::set<std::string> facingOnly(const BlockEnd& end) {
@@ -74,10 +89,9 @@ std::set<std::string> facingOnly(const BlockEnd& end) {
 
 } // namespace
 
-TEST(TrackGraphDemo, TheBlocksAreTheSimulatorsSectionsWithTheirContacts) {
-    const sim::TrainTrack table = sim::TrainTrack::demo();
-    ASSERT_EQ(demo().blocks().size(), table.sections.size());
-    for (const sim::FeedbackSection& section : table.sections) {
+TEST(TrackGraphDemo, TheBlocksAreTheRetiredTablesSectionsWithTheirContacts) {
+    ASSERT_EQ(demo().blocks().size(), retiredTable().size());
+    for (const RetiredSection& section : retiredTable()) {
         const Block* block = blockWith(demo(), section.contact);
         ASSERT_NE(block, nullptr) << section.name;
         EXPECT_EQ(block->name, section.name);
@@ -85,15 +99,13 @@ TEST(TrackGraphDemo, TheBlocksAreTheSimulatorsSectionsWithTheirContacts) {
     }
 }
 
-TEST(TrackGraphDemo, EachBlockEndLeadsWhereTheTableSays) {
-    const sim::TrainTrack table = sim::TrainTrack::demo();
-    for (const sim::FeedbackSection& section : table.sections) {
+TEST(TrackGraphDemo, EachBlockEndLeadsWhereTheRetiredTableSaid) {
+    for (const RetiredSection& section : retiredTable()) {
         const int block = idOf(section.name);
-        // Which end is "ahead" is the table's own choice: the two ends must be its two exits.
+        // Which end was "ahead" was the table's own choice: the two ends must be its two exits.
         const std::set<std::set<std::string>> graphEnds{facingOnly({block, End::A}),
                                                         facingOnly({block, End::B})};
-        const std::set<std::set<std::string>> tableEnds{tableWays(section.ahead, table),
-                                                        tableWays(section.behind, table)};
+        const std::set<std::set<std::string>> tableEnds{section.ahead, section.behind};
         EXPECT_EQ(graphEnds, tableEnds) << section.name;
     }
 }
@@ -242,6 +254,26 @@ TEST(TrackGraphDemo, FollowingTheTrackWithTheTurnoutsAsTheyStand) {
     lead = demo().follow({idOf("Block 2"), End::B}, positionOf);
     EXPECT_EQ(lead.reached, (BlockEnd{idOf("Block 3"), End::A}));
     EXPECT_TRUE(lead.path.empty());
+}
+
+TEST(TrackGraphDemo, FollowingOnFromATileBetweenBlocks) {
+    // From W4's tile in the Bw (page 2, column 3, row 2), as a train there would go on: into a buffer stop
+    // after seven tiles, whichever way W4 lies.
+    const std::map<std::int64_t, int> positions{{4, 1}};
+    const PositionOf positionOf = [&positions](std::int64_t article) -> std::optional<int> {
+        const auto found = positions.find(article);
+        return found == positions.end() ? std::nullopt : std::optional(found->second);
+    };
+    const Lead fromBlock = demo().follow({idOf("Abstellgleis"), End::B}, positionOf);
+    ASSERT_EQ(fromBlock.kind, LeadKind::BufferStop);
+    const TrackStep& w4 = fromBlock.path.front();
+    const Lead fromW4 = demo().followFrom(w4.tile, w4.exit, positionOf);
+    EXPECT_EQ(fromW4.kind, LeadKind::BufferStop);
+    EXPECT_EQ(fromW4.path, std::vector<TrackStep>(fromBlock.path.begin() + 1, fromBlock.path.end()));
+    // Leaving W4 the way the train came: straight back into the Abstellgleis through its end b.
+    const Lead back = demo().followFrom(w4.tile, w4.entry, positionOf);
+    EXPECT_EQ(back.kind, LeadKind::Block);
+    EXPECT_EQ(back.reached, (BlockEnd{idOf("Abstellgleis"), End::B}));
 }
 
 TEST(TrackGraphDemo, TilesKnowTheirBlocksAndProblems) {

@@ -1,5 +1,6 @@
 # track graph tests (tests/core/trackgraph): every tile type's track, blocks, connections and problems of
-# pages drawn in the tests, the demo layout against the simulator's table, and the real pages of the corpus.
+# pages drawn in the tests, the demo layout against the table the simulator used before, and the real pages
+# of the corpus.
 target_sources(stellwerk-core-tests PRIVATE
     trackgraph/TileShapeTest.cpp
     trackgraph/TrackGraphCorpusTest.cpp

@@ -98,19 +98,21 @@ TEST_F(LayoutOverviewTest, ListsTheDemosFeedbackContactsInNumberOrder) {
     EXPECT_EQ(column(contacts, ContactTableModel::Number),
               (QStringList{"1", "2", "3", "4", "5", "6", "7", "8", "9"}));
     EXPECT_EQ(cell(contacts, 0, ContactTableModel::Name), QStringLiteral("Gleis 1"));
-    // The trains stand on Gleis 1 and 2, Block 2 and the siding when the station starts.
-    EXPECT_EQ(cell(contacts, 0, ContactTableModel::State), QStringLiteral("occupied"));
-    EXPECT_FALSE(contacts.index(0, ContactTableModel::State).data(Qt::DecorationRole).isNull());
+    // The trains stand on Gleis 1 and 2, Block 2 and the siding when the station starts; BR 218 leaves Gleis
+    // 1's contact within a second, the V 100 stays on Gleis 2's.
+    EXPECT_EQ(cell(contacts, 1, ContactTableModel::State), QStringLiteral("occupied"));
+    EXPECT_FALSE(contacts.index(1, ContactTableModel::State).data(Qt::DecorationRole).isNull());
 }
 
 // Which train is on an occupied contact, as the simulator or the user says (the plan shows it too).
 TEST_F(LayoutOverviewTest, AnOccupiedContactNamesTheLocomotiveOnIt) {
     const ContactTableModel& contacts = *overview.contacts();
-    ASSERT_EQ(cell(contacts, 0, ContactTableModel::State), QStringLiteral("occupied"));
-    EXPECT_EQ(cell(contacts, 0, ContactTableModel::Locomotive), QString()) << "nobody said";
+    ASSERT_EQ(cell(contacts, 1, ContactTableModel::State),
+              QStringLiteral("occupied")); // the V 100 on Gleis 2
+    EXPECT_EQ(cell(contacts, 1, ContactTableModel::Locomotive), QString()) << "nobody said";
     QSignalSpy changed(&contacts, &QAbstractItemModel::dataChanged);
-    railways.railway()->reportOccupant(model::contactKey(0, 1), 0x4001);
-    EXPECT_EQ(cell(contacts, 0, ContactTableModel::Locomotive), QStringLiteral("BR 218 Ost"));
+    railways.railway()->reportOccupant(model::contactKey(0, 2), V100);
+    EXPECT_EQ(cell(contacts, 1, ContactTableModel::Locomotive), QStringLiteral("V 100 2023"));
     EXPECT_EQ(changed.count(), 1) << "the row is told, without a reset";
     EXPECT_EQ(header(contacts, ContactTableModel::Locomotive), QStringLiteral("Locomotive"));
     // Einfahrt West (7): the running trains need many seconds to reach it.
