@@ -8,8 +8,8 @@
 
 #include "can/FrameText.h"
 #include "cs2/Codec.h"
-#include "handhelds/HandheldMaster.h"
 #include "mcan/Codec.h"
+#include "mcanhandhelds/HandheldMaster.h"
 #include "transport/UdpTransport.h"
 
 #include <QCoreApplication>
@@ -135,12 +135,12 @@ void benchLoginLatency() {
     settings.localPort = 0;
     settings.localAddress = QHostAddress::LocalHost;
     transport::UdpTransport udp(settings);
-    handhelds::MasterSettings quick;
+    mcanhandhelds::MasterSettings quick;
     quick.loginStageTimeout = std::chrono::milliseconds(100);
-    handhelds::HandheldMaster master(
+    mcanhandhelds::HandheldMaster master(
         [&udp](const std::vector<can::CanFrame>& frames) { udp.sendBatch(frames); }, quick);
     QObject::connect(&udp, &transport::Transport::framesReceived, &master,
-                     &handhelds::HandheldMaster::receive);
+                     &mcanhandhelds::HandheldMaster::receive);
     udp.open();
     QElapsedTimer wait;
     wait.start();

@@ -9,7 +9,7 @@
 // A plain harness printing figures. Run: build/bench/stellwerk-ro-bench [seconds]
 
 #include "CanBitTiming.h"
-#include "buses/Bus.h"
+#include "bus/Bus.h"
 #include "romodule/RoModuleSession.h"
 #include "sim/SimulatedBus.h"
 #include "sim/SimulatedRoModule.h"
@@ -65,7 +65,7 @@ struct SimulatedRoBus {
     sim::SimulatedBus bus;
     transport::LoopbackTransport appEnd{QStringLiteral("stellwerk")}, busEnd{QStringLiteral("ro-bus")};
     std::vector<std::unique_ptr<sim::SimulatedRoModule>> modules;
-    std::unique_ptr<buses::Bus> appBus;
+    std::unique_ptr<bus::Bus> appBus;
     std::vector<std::unique_ptr<romodule::RoModuleSession>> sessions;
 
     SimulatedRoBus(int count, std::chrono::milliseconds pollPeriod) {
@@ -74,10 +74,10 @@ struct SimulatedRoBus {
                          [this](const std::vector<can::CanFrame>& frames) { bus.putFromOutside(frames); });
         QObject::connect(&bus, &sim::SimulatedBus::framesCarried, &busEnd,
                          [this](const std::vector<can::CanFrame>& frames) { busEnd.sendBatch(frames); });
-        bus::BusProfile profile = bus::BusProfile::centralStation();
+        busreading::BusProfile profile = busreading::BusProfile::centralStation();
         for (int n = 1; n <= count; ++n)
             profile.addRoModule(ro::RoProfile::simulator(std::uint16_t(n)).ids);
-        appBus = std::make_unique<buses::Bus>(appEnd, profile, QStringLiteral("CS2"));
+        appBus = std::make_unique<bus::Bus>(appEnd, profile, QStringLiteral("CS2"));
         romodule::SessionTiming timing;
         timing.pollPeriod = pollPeriod;
         for (int n = 1; n <= count; ++n) {
@@ -100,7 +100,7 @@ void checkAgainstTheSimulatedBus(int modules, int seconds) {
     SimulatedRoBus rig(modules, std::chrono::milliseconds(int(1000 / PollHz)));
     std::uint64_t frames = 0, bits = 0;
     unsigned maxBits = 0;
-    QObject::connect(rig.appBus.get(), &buses::Bus::framesSeen, rig.appBus.get(),
+    QObject::connect(rig.appBus.get(), &bus::Bus::framesSeen, rig.appBus.get(),
                      [&](const std::vector<can::CanFrame>& seen, bool) {
                          for (const can::CanFrame& frame : seen) {
                              const unsigned b = bench::exactBits(frame);

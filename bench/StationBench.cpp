@@ -96,7 +96,7 @@ struct Loopback {
             transport = std::make_unique<transport::UdpTransport>(
                 transport::UdpSettings{"127.0.0.1", server->udpPort(), appUdpPort,
                                        QHostAddress(QHostAddress::LocalHost), transport::ReconnectTiming{}});
-        bus = std::make_unique<buses::Bus>(*transport, bus::BusProfile::centralStation());
+        bus = std::make_unique<bus::Bus>(*transport, busreading::BusProfile::centralStation());
         session = std::make_unique<station::StationSession>(*bus, sessionSettings());
         transport->open();
     }
@@ -114,7 +114,7 @@ struct Loopback {
     sim::SimulatedStation station;
     std::unique_ptr<sim::StationServer> server;
     std::unique_ptr<transport::Transport> transport;
-    std::unique_ptr<buses::Bus> bus;
+    std::unique_ptr<bus::Bus> bus;
     std::unique_ptr<station::StationSession> session;
     bool listening = false;
 };
@@ -226,7 +226,7 @@ void benchThroughput(std::size_t count) {
     Blaster blaster(busTraffic(count));
     transport::TcpTransport transport(
         transport::TcpSettings{"127.0.0.1", blaster.port(), transport::ReconnectTiming{}});
-    buses::Bus bus(transport, bus::BusProfile::centralStation());
+    bus::Bus bus(transport, busreading::BusProfile::centralStation());
     station::StationSession session(bus, sessionSettings());
     std::size_t changes = 0;
     std::size_t batches = 0;

@@ -6,7 +6,7 @@
 // is that report with its protocol, and names a handheld only on a node pair; the roles and names learnt
 // from any frame sequence stay bounded (4096 handles, 16 characters a name).
 #include "FuzzSupport.h"
-#include "bus/BusContext.h"
+#include "busreading/BusContext.h"
 #include "can/FrameText.h"
 #include "mcan/Codec.h"
 #include "mcan/FrameReport.h"
@@ -54,10 +54,11 @@ void checkBounded(const mcan::HandleRoles& roles, const can::CanFrame& frame) {
 }
 
 // The context has learnt from the same frames as `roles`, so it reads an M-CAN frame as `report` does.
-void checkDescription(bus::BusContext& context, const can::CanFrame& frame,
+void checkDescription(busreading::BusContext& context, const can::CanFrame& frame,
                       const fuzz::ReportStrings& report) {
-    const bus::FrameDescription description = context.read(frame, bus::BusProfile::centralStation());
-    if (description.protocol() != bus::Protocol::Mcan)
+    const busreading::FrameDescription description =
+        context.read(frame, busreading::BusProfile::centralStation());
+    if (description.protocol() != busreading::Protocol::Mcan)
         return;
     if (description.text() != report.text ||
         description.json() != "{\"protocol\":\"mcan\"," + report.json.substr(1))
@@ -75,7 +76,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::FuzzInput input(data, size);
     mcan::HandleRoles roles;    // learns from the M-CAN frames, as a bus context does
     mcan::HandleRoles anyFrame; // learns from every frame, as nobody should feed it, and stays bounded too
-    bus::BusContext context;
+    busreading::BusContext context;
     while (!input.empty()) {
         std::array<std::uint8_t, can::CanFrame::NetworkSize> bytes{}; // a short last frame: the rest is zero
         const auto part = input.take(bytes.size());

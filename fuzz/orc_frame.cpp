@@ -6,7 +6,7 @@
 // report's text and JSON are printable ASCII and the JSON is valid; the bus description of an ORC frame on
 // an ORC bus is that report with its protocol, and a frame the ORC codec decodes is never foreign there.
 #include "FuzzSupport.h"
-#include "bus/FrameDescription.h"
+#include "busreading/FrameDescription.h"
 #include "can/FrameText.h"
 #include "orc/Codec.h"
 #include "orc/FrameReport.h"
@@ -49,10 +49,10 @@ void checkReport(const fuzz::ReportStrings& report) {
 }
 
 void checkDescription(const can::CanFrame& frame, bool decoded, const fuzz::ReportStrings& report) {
-    const bus::FrameDescription description(frame, bus::BusProfile::openRailCan());
-    if (decoded && description.protocol() != bus::Protocol::Orc)
+    const busreading::FrameDescription description(frame, busreading::BusProfile::openRailCan());
+    if (decoded && description.protocol() != busreading::Protocol::Orc)
         fuzz::fail("a frame the ORC codec decodes is not ORC on an ORC bus", can::formatDocument(frame));
-    if (description.protocol() != bus::Protocol::Orc)
+    if (description.protocol() != busreading::Protocol::Orc)
         return;
     if (description.text() != report.text ||
         description.json() != "{\"protocol\":\"orc\"," + report.json.substr(1))

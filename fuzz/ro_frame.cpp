@@ -7,7 +7,7 @@
 // frame's report and its bus description are printable text, the JSON valid, and the description is
 // that report with its protocol and module.
 #include "FuzzSupport.h"
-#include "bus/FrameDescription.h"
+#include "busreading/FrameDescription.h"
 #include "can/FrameText.h"
 #include "ro/Codec.h"
 #include "ro/FrameReport.h"
@@ -67,12 +67,12 @@ void checkAnswer(std::span<const std::uint8_t> payload) {
         fuzz::fail("encode(decode(OK)) of 7 bytes differs from the OK", hexOf(payload));
 }
 
-void checkReport(const can::CanFrame& frame, ro::Direction direction, const bus::BusProfile& profile) {
+void checkReport(const can::CanFrame& frame, ro::Direction direction, const busreading::BusProfile& profile) {
     const auto report = fuzz::ReportStrings::of(ro::FrameReport(frame, direction));
-    const bus::FrameDescription description(frame, profile);
+    const busreading::FrameDescription description(frame, profile);
     if (!fuzz::isPrintableText(report.text) || !fuzz::isJsonDocument(report.json, false))
         fuzz::fail("the report is not printable text and valid JSON", report.json);
-    if (description.protocol() != bus::Protocol::Ro || description.text() != report.text ||
+    if (description.protocol() != busreading::Protocol::Ro || description.text() != report.text ||
         description.json() != "{\"protocol\":\"ro\",\"module\":" + std::string(frame.extended ? "0" : "1") +
                                   "," + report.json.substr(1))
         fuzz::fail("the description of an RO frame is not its report", description.json());
@@ -83,7 +83,7 @@ void checkReport(const can::CanFrame& frame, ro::Direction direction, const bus:
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size > MaximumRecords * RecordSize)
         return -1;
-    bus::BusProfile profile = bus::BusProfile::centralStation();
+    busreading::BusProfile profile = busreading::BusProfile::centralStation();
     profile.addRoModule(Extended).addRoModule(Standard);
     fuzz::FuzzInput input(data, size);
     while (!input.empty()) {

@@ -17,7 +17,7 @@ set(STELLWERK_FUZZ_TARGETS
 
 file(GLOB STELLWERK_FUZZED_SOURCES CONFIGURE_DEPENDS
     ${STELLWERK_ROOT}/core/can/*.cpp
-    ${STELLWERK_ROOT}/core/bus/*.cpp
+    ${STELLWERK_ROOT}/core/busreading/*.cpp
     ${STELLWERK_ROOT}/core/cs2/*.cpp
     ${STELLWERK_ROOT}/core/mcan/*.cpp
     ${STELLWERK_ROOT}/core/ro/*.cpp

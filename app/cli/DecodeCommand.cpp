@@ -1,7 +1,7 @@
 #include "DecodeCommand.h"
 
 #include "RoCli.h"
-#include "bus/BusContext.h"
+#include "busreading/BusContext.h"
 #include "can/FrameText.h"
 #include "cs2/JsonText.h"
 
@@ -24,11 +24,11 @@ public:
     bool chooseProtocol(const std::string& name, const std::vector<ro::FrameIds>& roModules) {
         orcFallback_ = name == "auto";
         if (name == "auto" || name == "mcan")
-            profile_ = bus::BusProfile::centralStation();
+            profile_ = busreading::BusProfile::centralStation();
         else if (name == "cs2")
-            profile_ = bus::BusProfile{bus::Protocol::Cs2};
+            profile_ = busreading::BusProfile{busreading::Protocol::Cs2};
         else if (name == "orc")
-            profile_ = bus::BusProfile::openRailCan();
+            profile_ = busreading::BusProfile::openRailCan();
         else
             return false;
         for (const ro::FrameIds& ids : roModules)
@@ -43,18 +43,18 @@ public:
             return false;
         }
         // A frame no protocol of the bus claims is shown, not decoded, and is no error.
-        const bus::FrameDescription description = describe(parsed->frame);
+        const busreading::FrameDescription description = describe(parsed->frame);
         out_ << (json_ ? description.json() : description.text()) << '\n';
-        return description.decoded() || description.protocol() == bus::Protocol::Foreign;
+        return description.decoded() || description.protocol() == busreading::Protocol::Foreign;
     }
 
 private:
-    bus::FrameDescription describe(const can::CanFrame& frame) {
-        bus::FrameDescription description = context_.read(frame, profile_);
-        if (!orcFallback_ || description.protocol() != bus::Protocol::Mcan || description.decoded())
+    busreading::FrameDescription describe(const can::CanFrame& frame) {
+        busreading::FrameDescription description = context_.read(frame, profile_);
+        if (!orcFallback_ || description.protocol() != busreading::Protocol::Mcan || description.decoded())
             return description;
-        bus::FrameDescription orc(frame, bus::BusProfile::openRailCan());
-        return orc.protocol() == bus::Protocol::Orc && orc.decoded() ? orc : description;
+        busreading::FrameDescription orc(frame, busreading::BusProfile::openRailCan());
+        return orc.protocol() == busreading::Protocol::Orc && orc.decoded() ? orc : description;
     }
 
     void reportUnreadable(const std::string& input, std::size_t lineNumber, const std::string& error) {
@@ -66,9 +66,9 @@ private:
     }
 
     bool json_;
-    bus::BusProfile profile_ = bus::BusProfile::centralStation();
+    busreading::BusProfile profile_ = busreading::BusProfile::centralStation();
     bool orcFallback_ = true;
-    bus::BusContext context_;
+    busreading::BusContext context_;
     std::ostream& out_;
     std::ostream& err_;
 };

@@ -1,6 +1,6 @@
 #include "HandheldCommand.h"
 
-#include "buses/Bus.h"
+#include "bus/Bus.h"
 #include "connection/HandheldConnection.h"
 #include "model/Railway.h"
 #include "model/RailwayHandhelds.h"
@@ -14,7 +14,7 @@
 namespace stellwerk::cli {
 namespace {
 
-using handhelds::HandheldEvent;
+using mcanhandhelds::HandheldEvent;
 
 struct HandheldOptions {
     bool json = false;
@@ -74,17 +74,17 @@ std::string printable(const QString& text) {
     return shown;
 }
 
-std::string_view watchingName(handhelds::Watching why) {
+std::string_view watchingName(mcanhandhelds::Watching why) {
     switch (why) {
-    case handhelds::Watching::No:
+    case mcanhandhelds::Watching::No:
         return "no";
-    case handhelds::Watching::UntilDevicesKnown:
+    case mcanhandhelds::Watching::UntilDevicesKnown:
         return "devices-not-known-yet";
-    case handhelds::Watching::CentralStation:
+    case mcanhandhelds::Watching::CentralStation:
         return "central-station";
-    case handhelds::Watching::AnotherMaster:
+    case mcanhandhelds::Watching::AnotherMaster:
         return "another-master";
-    case handhelds::Watching::Asked:
+    case mcanhandhelds::Watching::Asked:
         return "asked";
     }
     return "unknown";
@@ -94,7 +94,7 @@ std::string_view watchingName(handhelds::Watching why) {
 std::vector<std::pair<std::string, std::string>> details(const HandheldEvent& event) {
     std::vector<std::pair<std::string, std::string>> fields;
     if (event.kind == HandheldEvent::Kind::Watching) {
-        fields.emplace_back("reason", std::string(watchingName(handhelds::Watching(event.value))));
+        fields.emplace_back("reason", std::string(watchingName(mcanhandhelds::Watching(event.value))));
         if (event.function)
             fields.emplace_back("node", std::to_string(event.function));
         return fields;
@@ -146,7 +146,7 @@ public:
         connection::HandheldSettings settings;
         settings.role = options.role;
         handhelds_ = std::make_unique<connection::HandheldConnection>(client.bus(), settings, this);
-        connect(&handhelds_->master(), &handhelds::HandheldMaster::event, this,
+        connect(&handhelds_->master(), &mcanhandhelds::HandheldMaster::event, this,
                 [this, json = options.json](const HandheldEvent& event) {
                     out_ << eventLine(event, json) << std::endl;
                 });
@@ -159,7 +159,7 @@ public:
                 [this](const station::StartupResult& result) {
                     railway_->load(result);
                     handhelds_->devicesListed(result.devices);
-                    const handhelds::HandheldMaster& master = handhelds_->master();
+                    const mcanhandhelds::HandheldMaster& master = handhelds_->master();
                     err_ << (master.isMaster()
                                  ? std::string("Stellwerk is the handhelds' master; Ctrl+C ends\n")
                                  : "watching the handhelds only (" +

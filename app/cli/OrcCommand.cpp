@@ -1,7 +1,7 @@
 #include "OrcCommand.h"
 
 #include "CliNumber.h"
-#include "buses/Bus.h"
+#include "bus/Bus.h"
 #include "orccentral/OrcSession.h"
 
 #include <QTimer>
@@ -82,8 +82,8 @@ class OrcRun final : public QObject {
 public:
     OrcRun(StationClient& client, const OrcJob& job, std::ostream& out)
         : QObject(&client), client_(client), job_(job), out_(out) {
-        bus_ = std::make_unique<buses::Bus>(client.transport(), bus::BusProfile::openRailCan(),
-                                            QStringLiteral("ORC"), this);
+        bus_ = std::make_unique<bus::Bus>(client.transport(), busreading::BusProfile::openRailCan(),
+                                          QStringLiteral("ORC"), this);
         session_ = std::make_unique<OrcSession>(*bus_, OrcSession::Settings{}, this);
         if (job_.action == "find")
             find();
@@ -175,7 +175,7 @@ private:
     StationClient& client_;
     OrcJob job_;
     std::ostream& out_;
-    std::unique_ptr<buses::Bus> bus_;
+    std::unique_ptr<bus::Bus> bus_;
     std::unique_ptr<OrcSession> session_;
     bool answered_ = false;
 };

@@ -2,7 +2,7 @@
 
 #include "CliNumber.h"
 #include "RoCli.h"
-#include "buses/Bus.h"
+#include "bus/Bus.h"
 #include "romodule/RoModuleSession.h"
 
 #include <QTimer>
@@ -105,9 +105,9 @@ public:
         ro::RoProfile profile = ro::RoProfile::simulator(0);
         profile.name = "RO module";
         profile.ids = job.ids;
-        bus::BusProfile busProfile = bus::BusProfile::centralStation();
+        busreading::BusProfile busProfile = busreading::BusProfile::centralStation();
         busProfile.addRoModule(job.ids);
-        bus_ = std::make_unique<buses::Bus>(client.transport(), busProfile, QStringLiteral("RO"), this);
+        bus_ = std::make_unique<bus::Bus>(client.transport(), busProfile, QStringLiteral("RO"), this);
         romodule::SessionTiming timing;
         timing.answerTimeout = std::chrono::milliseconds(job.timeoutMs);
         session_ = std::make_unique<RoModuleSession>(*bus_, profile, timing, this);
@@ -215,7 +215,7 @@ private:
     StationClient& client_;
     RoJob job_;
     std::ostream& out_;
-    std::unique_ptr<buses::Bus> bus_;
+    std::unique_ptr<bus::Bus> bus_;
     std::unique_ptr<RoModuleSession> session_;
     bool asked_ = false;
     bool answered_ = false;

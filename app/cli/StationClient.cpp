@@ -43,7 +43,7 @@ int StationClient::connectTo(const QString& url) {
     transport_ = std::move(created.value());
     station::StationSettings settings;
     settings.commands = settings_.commands;
-    bus_ = std::make_unique<buses::Bus>(*transport_, bus::BusProfile::centralStation());
+    bus_ = std::make_unique<bus::Bus>(*transport_, busreading::BusProfile::centralStation());
     session_ = std::make_unique<station::StationSession>(*bus_, settings);
     // A lost connection is reported twice: the reason, then the same with the transport's retry plan,
     // which the command line does not follow. Only the reason is shown.

@@ -54,7 +54,7 @@ public:
     void finishOnInterrupt(int status);
 
     station::StationSession& session() { return *session_; }
-    buses::Bus& bus() { return *bus_; }
+    bus::Bus& bus() { return *bus_; }
     transport::Transport& transport() { return *transport_; }
     const ClientSettings& settings() const { return settings_; }
 
@@ -66,7 +66,7 @@ private:
     std::ostream& err_;
     ClientSettings settings_;
     std::unique_ptr<transport::Transport> transport_;
-    std::unique_ptr<buses::Bus> bus_;
+    std::unique_ptr<bus::Bus> bus_;
     std::unique_ptr<station::StationSession> session_;
     QEventLoop loop_;
     std::optional<int> status_;

@@ -3,7 +3,7 @@
 
 #include "connect/StationUrlSettings.h"
 #include "connection/StationConnection.h"
-#include "handhelds/HandheldBook.h"
+#include "mcanhandhelds/HandheldBook.h"
 #include "model/OccupantBook.h"
 #include "model/Railway.h"
 #include "model/RailwayDevices.h"
@@ -272,8 +272,8 @@ int main(int argc, char* argv[]) {
     stellwerk::model::OccupantBook demoOccupants;
     connectionSettings.localStation = [&demoOccupants] { return embeddedStation(demoOccupants); };
     // The MS1 handhelds' stacks and names, kept across runs in the program's settings.
-    stellwerk::handhelds::SettingsHandheldBook handheldBook(QCoreApplication::organizationName(),
-                                                            QCoreApplication::applicationName());
+    stellwerk::mcanhandhelds::SettingsHandheldBook handheldBook(QCoreApplication::organizationName(),
+                                                                QCoreApplication::applicationName());
     connectionSettings.handhelds.book = &handheldBook;
     // The OpenRailCAN central and the RO modules, and what of the layout they switch and light (the
     // embedded station brings its own demo devices).

@@ -1,20 +1,8 @@
-# Which protocol a frame on a bus belongs to and what it says, protocol-neutral (core/bus): pure, above
-# the codecs it dispatches to.
-stellwerk_core_library(bus PURE)
+# The sources of stellwerk-bus (core/bus): an open CAN bus that sorts its frames by protocol and
+# hands them to the sessions that subscribed.
+stellwerk_core_library(bus)
 target_sources(stellwerk-bus PRIVATE
-    bus/BusContext.cpp
-    bus/BusContext.h
-    bus/FrameClassifier.cpp
-    bus/FrameClassifier.h
-    bus/FrameDescription.cpp
-    bus/FrameDescription.h
-    bus/Handheld.cpp
-    bus/Handheld.h
-    bus/McanReading.cpp
-    bus/McanReading.h
-    bus/RoReading.cpp
-    bus/RoReading.h
-    bus/OrcReading.cpp
-    bus/OrcReading.h
+    bus/Bus.cpp
+    bus/Bus.h
 )
-target_link_libraries(stellwerk-bus PUBLIC stellwerk-can stellwerk-ro PRIVATE stellwerk-cs2 stellwerk-mcan stellwerk-orc)
+target_link_libraries(stellwerk-bus PUBLIC stellwerk-busreading stellwerk-can stellwerk-transport Qt6::Core)

@@ -1,22 +1,23 @@
 #include "connection/DeviceSessions.h"
 
-#include "buses/Bus.h"
+#include "bus/Bus.h"
 #include "transport/Transport.h"
 
 namespace stellwerk::connection {
 
-bus::BusProfile deviceBusProfile(const DeviceSettings& settings, int index, const bus::BusProfile& base) {
-    bus::BusProfile profile = base;
-    if (settings.orc.on && settings.orc.bus == index && !base.expects(bus::Protocol::Orc))
-        profile = base.expects(bus::Protocol::Cs2) ? bus::BusProfile::openRailCan()
-                                                   : bus::BusProfile{bus::Protocol::Orc};
+busreading::BusProfile deviceBusProfile(const DeviceSettings& settings, int index,
+                                        const busreading::BusProfile& base) {
+    busreading::BusProfile profile = base;
+    if (settings.orc.on && settings.orc.bus == index && !base.expects(busreading::Protocol::Orc))
+        profile = base.expects(busreading::Protocol::Cs2) ? busreading::BusProfile::openRailCan()
+                                                          : busreading::BusProfile{busreading::Protocol::Orc};
     for (const RoModuleSettings& module : settings.roModules)
         if (module.bus == index)
             profile.addRoModule(module.profile.ids);
     return profile;
 }
 
-DeviceSessions::DeviceSessions(DeviceSettings settings, std::vector<buses::Bus*> buses, QObject* parent)
+DeviceSessions::DeviceSessions(DeviceSettings settings, std::vector<bus::Bus*> buses, QObject* parent)
     : QObject(parent), settings_(std::move(settings)), buses_(std::move(buses)),
       ro_(settings_.roModules.size()), refused_(settings_.roModules.size(), false) {
     for (std::size_t index = 0; index < buses_.size(); ++index)
@@ -81,7 +82,7 @@ void DeviceSessions::transportChanged(int index) {
 }
 
 void DeviceSessions::build(int index) {
-    buses::Bus& bus = *buses_[std::size_t(index)];
+    bus::Bus& bus = *buses_[std::size_t(index)];
     bool made = false;
     if (settings_.orc.on && !orcRefused_ && settings_.orc.bus == index && !orc_) {
         orc_ = std::make_unique<orccentral::OrcSession>(bus, settings_.orc.session);

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "bus/FrameClassifier.h"
+#include "busreading/FrameClassifier.h"
 #include "connection/DeviceSettings.h"
 
 #include <QObject>
@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-namespace stellwerk::buses {
+namespace stellwerk::bus {
 class Bus;
 }
 
@@ -18,7 +18,8 @@ namespace stellwerk::connection {
 // What bus `index` is to expect once the device settings are applied to `base` (its profile without
 // devices): ORC with the central on it (without M-CAN on the station's bus: their priorities overlap, notes
 // O26), and the ids of every RO module wired to it.
-bus::BusProfile deviceBusProfile(const DeviceSettings& settings, int index, const bus::BusProfile& base);
+busreading::BusProfile deviceBusProfile(const DeviceSettings& settings, int index,
+                                        const busreading::BusProfile& base);
 
 // The device sessions of one connection: the OpenRailCAN central and one session per RO module, each on
 // the bus the settings name. A session lives while its bus is connected: it is made and started when the
@@ -31,7 +32,7 @@ class DeviceSessions final : public QObject {
     Q_DISABLE_COPY_MOVE(DeviceSessions)
 
 public:
-    DeviceSessions(DeviceSettings settings, std::vector<buses::Bus*> buses, QObject* parent = nullptr);
+    DeviceSessions(DeviceSettings settings, std::vector<bus::Bus*> buses, QObject* parent = nullptr);
     ~DeviceSessions() override;
 
     // The central while its bus is connected and the settings want it, else null.
@@ -55,7 +56,7 @@ private:
     void refuse(const QString& why);
 
     DeviceSettings settings_;
-    std::vector<buses::Bus*> buses_;
+    std::vector<bus::Bus*> buses_;
     std::unique_ptr<orccentral::OrcSession> orc_;
     std::vector<std::unique_ptr<romodule::RoModuleSession>> ro_; // one slot per module of the settings
     std::vector<bool> refused_;                                  // the same

@@ -1,6 +1,6 @@
 #include "connection/HandheldConnection.h"
 
-#include "buses/Bus.h"
+#include "bus/Bus.h"
 #include "station/DeviceDescription.h"
 #include "transport/Transport.h"
 
@@ -14,13 +14,13 @@ constexpr std::uint16_t CentralStationGui = 0xFFFF;
 
 } // namespace
 
-HandheldConnection::HandheldConnection(buses::Bus& bus, const HandheldSettings& settings, QObject* parent)
+HandheldConnection::HandheldConnection(bus::Bus& bus, const HandheldSettings& settings, QObject* parent)
     : QObject(parent), role_(settings.role) {
     transport::Transport& wire = bus.transport();
-    master_ = std::make_unique<handhelds::HandheldMaster>(
+    master_ = std::make_unique<mcanhandhelds::HandheldMaster>(
         [&wire](const std::vector<can::CanFrame>& frames) { wire.sendBatch(frames); }, settings.master, this);
     master_->setBook(settings.book);
-    bus.subscribe(bus::Protocol::Mcan, master_.get(),
+    bus.subscribe(busreading::Protocol::Mcan, master_.get(),
                   [this](const std::vector<can::CanFrame>& frames) { master_->receive(frames); });
     applyRole();
 }
@@ -48,7 +48,7 @@ void HandheldConnection::setRole(HandheldRole role, const std::vector<station::D
 void HandheldConnection::applyRole() {
     switch (role_) {
     case HandheldRole::Watch:
-        master_->standDown(handhelds::Watching::Asked);
+        master_->standDown(mcanhandhelds::Watching::Asked);
         return;
     case HandheldRole::Master:
         master_->setActive(true);
@@ -57,11 +57,11 @@ void HandheldConnection::applyRole() {
         break;
     }
     if (centralStation_)
-        master_->standDown(handhelds::Watching::CentralStation);
+        master_->standDown(mcanhandhelds::Watching::CentralStation);
     else if (devicesKnown_)
         master_->setActive(true);
     else
-        master_->standDown(handhelds::Watching::UntilDevicesKnown);
+        master_->standDown(mcanhandhelds::Watching::UntilDevicesKnown);
 }
 
 } // namespace stellwerk::connection

@@ -1,13 +1,13 @@
 #pragma once
 
-#include "handhelds/HandheldMaster.h"
+#include "mcanhandhelds/HandheldMaster.h"
 
 #include <QObject>
 #include <QString>
 #include <memory>
 #include <vector>
 
-namespace stellwerk::buses {
+namespace stellwerk::bus {
 class Bus;
 }
 namespace stellwerk::station {
@@ -22,8 +22,9 @@ enum class HandheldRole : std::uint8_t { Automatic, Master, Watch };
 
 struct HandheldSettings {
     HandheldRole role = HandheldRole::Automatic;
-    handhelds::MasterSettings master{};
-    handhelds::HandheldBook* book = nullptr; // where stacks and names are kept (not owned); null: not kept
+    mcanhandhelds::MasterSettings master{};
+    mcanhandhelds::HandheldBook* book =
+        nullptr; // where stacks and names are kept (not owned); null: not kept
 };
 
 // Stellwerk's part in the handhelds' conversation on the station's bus: the M-CAN master fed the bus's
@@ -35,10 +36,10 @@ class HandheldConnection final : public QObject {
     Q_DISABLE_COPY_MOVE(HandheldConnection)
 
 public:
-    HandheldConnection(buses::Bus& bus, const HandheldSettings& settings, QObject* parent = nullptr);
+    HandheldConnection(bus::Bus& bus, const HandheldSettings& settings, QObject* parent = nullptr);
     ~HandheldConnection() override;
 
-    handhelds::HandheldMaster& master() { return *master_; }
+    mcanhandhelds::HandheldMaster& master() { return *master_; }
     HandheldRole role() const { return role_; }
     // The devices the start-up found: decides the Automatic role.
     void devicesListed(const std::vector<station::DeviceDescription>& devices);
@@ -51,7 +52,7 @@ private:
     HandheldRole role_;
     bool centralStation_ = false; // a Central Station answered the last start-up's ping
     bool devicesKnown_ = false;
-    std::unique_ptr<handhelds::HandheldMaster> master_;
+    std::unique_ptr<mcanhandhelds::HandheldMaster> master_;
 };
 
 } // namespace stellwerk::connection

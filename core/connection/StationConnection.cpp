@@ -177,7 +177,7 @@ bool StationConnection::isBusConnected(int index) const {
            link_->transports[std::size_t(index)]->state() == transport::Transport::State::Connected;
 }
 
-std::uint64_t StationConnection::busFrames(int index, bus::Protocol protocol) const {
+std::uint64_t StationConnection::busFrames(int index, busreading::Protocol protocol) const {
     if (!link_ || index < 0 || std::size_t(index) >= link_->buses.size())
         return 0;
     return link_->buses[std::size_t(index)]->received(protocol);
@@ -187,7 +187,7 @@ station::StationSession* StationConnection::session() const {
     return link_ ? link_->session.get() : nullptr;
 }
 
-handhelds::HandheldMaster* StationConnection::handhelds() const {
+mcanhandhelds::HandheldMaster* StationConnection::handhelds() const {
     return link_ && link_->handhelds ? &link_->handhelds->master() : nullptr;
 }
 
@@ -201,7 +201,7 @@ void StationConnection::setHandheldRole(HandheldRole role) {
 void StationConnection::open(std::unique_ptr<transport::Transport> station,
                              const std::vector<transport::TransportSettings>& further) {
     const DeviceSettings& devices = activeDevices_;
-    link_->addBus(std::move(station), deviceBusProfile(devices, 0, bus::BusProfile::centralStation()),
+    link_->addBus(std::move(station), deviceBusProfile(devices, 0, busreading::BusProfile::centralStation()),
                   endpoint_.place);
     for (const transport::TransportSettings& settings : further)
         link_->addBus(transport::createTransport(settings),
@@ -221,7 +221,7 @@ void StationConnection::open(std::unique_ptr<transport::Transport> station,
 
 // The device sessions of the settings, made as their buses connect; refusals are told at once.
 void StationConnection::openDevices() {
-    std::vector<buses::Bus*> buses;
+    std::vector<bus::Bus*> buses;
     for (const auto& bus : link_->buses)
         buses.push_back(bus.get());
     link_->devices = std::make_unique<DeviceSessions>(activeDevices_, std::move(buses));
@@ -256,7 +256,7 @@ void StationConnection::fail(const QString& reason) {
 void StationConnection::watchTransport() {
     transport::Transport* station = &link_->stationTransport();
     connect(station, &transport::Transport::stateChanged, this, &StationConnection::transportStateChanged);
-    connect(&link_->stationBus(), &buses::Bus::framesSeen, this, &StationConnection::framesSeen);
+    connect(&link_->stationBus(), &bus::Bus::framesSeen, this, &StationConnection::framesSeen);
     station::Liveness& liveness = link_->session->liveness();
     connect(&liveness, &station::Liveness::stationSilent, this, &StationConnection::stationSilent);
     connect(&liveness, &station::Liveness::stationRecovered, this, &StationConnection::stationRecovered);
@@ -268,7 +268,7 @@ void StationConnection::watchBuses() {
     for (std::size_t index = 0; index < link_->buses.size(); ++index) {
         connect(link_->transports[index].get(), &transport::Transport::problem, this,
                 &StationConnection::report);
-        connect(link_->buses[index].get(), &buses::Bus::framesSeen, this,
+        connect(link_->buses[index].get(), &bus::Bus::framesSeen, this,
                 [this, index](const std::vector<can::CanFrame>& frames, bool outgoing) {
                     emit busFramesSeen(int(index), frames, outgoing);
                 });

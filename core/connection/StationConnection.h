@@ -1,7 +1,7 @@
 #pragma once
 
 #include "base/Expected.h"
-#include "bus/FrameClassifier.h"
+#include "busreading/FrameClassifier.h"
 #include "connection/DeviceSettings.h"
 #include "connection/HandheldConnection.h"
 #include "connection/LocomotivePictures.h"
@@ -61,7 +61,7 @@ struct ConnectionSettings {
     station::StationSettings session{};
     station::StartupOptions startup{};
     transport::LocalPeerFactory localStation{};
-    bus::BusProfile furtherBusProfile{};
+    busreading::BusProfile furtherBusProfile{};
     LocomotivePictures::Settings pictures{};
     HandheldSettings handhelds{};
     DeviceSettings devices{};
@@ -72,9 +72,9 @@ struct ConnectionSettings {
 
 // One bus of the connection, as the monitor shows it.
 struct BusInfo {
-    QString place;           // "socketcan/can1", "127.0.0.1:15731"; the station's place on the station's bus
-    bus::BusProfile profile; // what is expected on it
-    bool station = false;    // the bus the command station is reached by (always bus 0)
+    QString place; // "socketcan/can1", "127.0.0.1:15731"; the station's place on the station's bus
+    busreading::BusProfile profile; // what is expected on it
+    bool station = false;           // the bus the command station is reached by (always bus 0)
 };
 
 // The one object the app holds to be connected to a station. Given an address (udp://, tcp://, can://,
@@ -115,7 +115,7 @@ public:
     // Whether bus `index` is connected now.
     bool isBusConnected(int index) const;
     // Frames received on bus `index` that belong to `protocol` (Foreign: to none expected there).
-    std::uint64_t busFrames(int index, bus::Protocol protocol) const;
+    std::uint64_t busFrames(int index, busreading::Protocol protocol) const;
     const StationEndpoint& endpoint() const { return endpoint_; }
     QString description() const { return endpoint_.description(); }
     const LoadingProgress& progress() const { return progress_; }
@@ -126,7 +126,7 @@ public:
     station::StationSession* session() const;
     // The MS1 handhelds' master on the station's bus while connected (watching only when it may not be the
     // master), else null. Made with the session, gone with it.
-    handhelds::HandheldMaster* handhelds() const;
+    mcanhandhelds::HandheldMaster* handhelds() const;
     // The OpenRailCAN central while its bus is connected and the settings want it, else null.
     orccentral::OrcSession* orcSession() const;
     // The RO module sessions whose bus is connected, in the settings' order; one by name (or null).

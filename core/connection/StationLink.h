@@ -1,6 +1,6 @@
 #pragma once
 
-#include "buses/Bus.h"
+#include "bus/Bus.h"
 #include "connection/DeviceSessions.h"
 #include "connection/HandheldConnection.h"
 #include "station/StartupSequence.h"
@@ -30,14 +30,13 @@ public:
         local.reset();
     }
 
-    buses::Bus& addBus(std::unique_ptr<transport::Transport> transport, bus::BusProfile profile,
-                       QString place) {
+    bus::Bus& addBus(std::unique_ptr<transport::Transport> transport, busreading::BusProfile profile,
+                     QString place) {
         transports.push_back(std::move(transport));
-        buses.push_back(
-            std::make_unique<buses::Bus>(*transports.back(), std::move(profile), std::move(place)));
+        buses.push_back(std::make_unique<bus::Bus>(*transports.back(), std::move(profile), std::move(place)));
         return *buses.back();
     }
-    buses::Bus& stationBus() const { return *buses.front(); }
+    bus::Bus& stationBus() const { return *buses.front(); }
     transport::Transport& stationTransport() const { return *transports.front(); }
 
     // Stops every signal from the link's parts to `receiver`.
@@ -58,7 +57,7 @@ public:
 
     std::unique_ptr<transport::LocalPeer> local;
     std::vector<std::unique_ptr<transport::Transport>> transports;
-    std::vector<std::unique_ptr<buses::Bus>> buses;
+    std::vector<std::unique_ptr<bus::Bus>> buses;
     std::unique_ptr<station::StationSession> session;
     std::unique_ptr<HandheldConnection> handhelds; // Stellwerk's part in the MS1 handhelds' conversation
     std::unique_ptr<DeviceSessions> devices;       // the ORC central and the RO modules, on their buses

@@ -18,5 +18,5 @@ target_sources(stellwerk-connection PRIVATE
     connection/StationEndpoint.h
     connection/StationLink.h
 )
-target_link_libraries(stellwerk-connection PUBLIC stellwerk-buses stellwerk-handhelds stellwerk-orccentral stellwerk-romodule stellwerk-station stellwerk-transport Qt6::Core
+target_link_libraries(stellwerk-connection PUBLIC stellwerk-bus stellwerk-mcanhandhelds stellwerk-orccentral stellwerk-romodule stellwerk-station stellwerk-transport Qt6::Core
     Qt6::Network)

@@ -1,28 +1,28 @@
 #include "model/RailwayHandhelds.h"
 
-#include "handhelds/HandheldMaster.h"
+#include "mcanhandhelds/HandheldMaster.h"
 #include "model/Railway.h"
 
 namespace stellwerk::model {
 namespace {
 
-handhelds::RailFormat formatOf(cs2::Protocol protocol) {
+mcanhandhelds::RailFormat formatOf(cs2::Protocol protocol) {
     switch (protocol) {
     case cs2::Protocol::Mfx:
-        return handhelds::RailFormat::Mfx;
+        return mcanhandhelds::RailFormat::Mfx;
     case cs2::Protocol::Dcc:
-        return handhelds::RailFormat::Dcc;
+        return mcanhandhelds::RailFormat::Dcc;
     case cs2::Protocol::Mm2:
-        return handhelds::RailFormat::Motorola;
+        return mcanhandhelds::RailFormat::Motorola;
     default:
         break;
     }
-    return handhelds::RailFormat::Unknown;
+    return mcanhandhelds::RailFormat::Unknown;
 }
 
 } // namespace
 
-RailwayHandhelds::RailwayHandhelds(Railway& railway, handhelds::HandheldMaster& master, QObject* parent)
+RailwayHandhelds::RailwayHandhelds(Railway& railway, mcanhandhelds::HandheldMaster& master, QObject* parent)
     : QObject(parent), railway_(railway), master_(master) {
     connect(&railway_, &Railway::loaded, this, [this] { master_.locomotivesChanged(); });
     connect(&railway_, &Railway::locomotivesChanged, this, [this](const QList<quint32>& ids) {
@@ -43,26 +43,26 @@ RailwayHandhelds::~RailwayHandhelds() {
 }
 
 // lokomotive.cs2 keeps the MS1's symbol (`.symbol`: 0 electric, 1 diesel, 2 steam, 3 none).
-handhelds::LocoKind RailwayHandhelds::kindOf(std::uint32_t locId) const {
+mcanhandhelds::LocoKind RailwayHandhelds::kindOf(std::uint32_t locId) const {
     const cs2config::LocomotiveFile* file = railway_.locomotiveFile();
     if (!file)
-        return handhelds::LocoKind::None;
+        return mcanhandhelds::LocoKind::None;
     for (const cs2config::Locomotive& record : file->locomotives)
         if (record.uid == locId)
-            return handhelds::kindOfSymbol(record.symbol);
-    return handhelds::LocoKind::None;
+            return mcanhandhelds::kindOfSymbol(record.symbol);
+    return mcanhandhelds::LocoKind::None;
 }
 
-std::vector<handhelds::HandheldLoco> RailwayHandhelds::locomotives() const {
-    std::vector<handhelds::HandheldLoco> locos;
+std::vector<mcanhandhelds::HandheldLoco> RailwayHandhelds::locomotives() const {
+    std::vector<mcanhandhelds::HandheldLoco> locos;
     for (const Locomotive& loco : railway_.state().locomotives().items()) {
         if (!loco.inLayout())
             continue; // seen on the bus, not in lokomotive.cs2: another controller's
-        handhelds::HandheldLoco shown{loco.id().value(),
-                                      loco.displayName().toStdString(),
-                                      kindOf(loco.id().value()),
-                                      formatOf(loco.protocol()),
-                                      {}};
+        mcanhandhelds::HandheldLoco shown{loco.id().value(),
+                                          loco.displayName().toStdString(),
+                                          kindOf(loco.id().value()),
+                                          formatOf(loco.protocol()),
+                                          {}};
         for (const LocomotiveFunction& function : loco.functions())
             shown.functions.push_back(
                 {function.number, function.trigger == cs2config::FunctionTrigger::Momentary});
@@ -71,11 +71,11 @@ std::vector<handhelds::HandheldLoco> RailwayHandhelds::locomotives() const {
     return locos;
 }
 
-std::optional<handhelds::LocoDrive> RailwayHandhelds::drive(std::uint32_t locId) const {
+std::optional<mcanhandhelds::LocoDrive> RailwayHandhelds::drive(std::uint32_t locId) const {
     const Locomotive* loco = railway_.locomotive(locId);
     if (!loco)
         return std::nullopt;
-    handhelds::LocoDrive drive{loco->speed(), loco->direction() != cs2::Direction::Backward, 0};
+    mcanhandhelds::LocoDrive drive{loco->speed(), loco->direction() != cs2::Direction::Backward, 0};
     for (int number = 0; number < Locomotive::MaxFunctions; ++number)
         if (loco->functionOn(number))
             drive.functions |= 1u << number;

@@ -1,10 +1,10 @@
 #pragma once
 
-#include "handhelds/HandheldRailway.h"
+#include "mcanhandhelds/HandheldRailway.h"
 
 #include <QObject>
 
-namespace stellwerk::handhelds {
+namespace stellwerk::mcanhandhelds {
 class HandheldMaster;
 }
 
@@ -16,16 +16,16 @@ class Railway;
 // lokomotive.cs2, how they run as the station confirmed, the track power), their intents carried out as the
 // app's throttles do (commands to the station), and the railway's changes told to the master. It lives as
 // long as the railway, and leaves the master without a railway when it goes.
-class RailwayHandhelds final : public QObject, public handhelds::HandheldRailway {
+class RailwayHandhelds final : public QObject, public mcanhandhelds::HandheldRailway {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(RailwayHandhelds)
 
 public:
-    RailwayHandhelds(Railway& railway, handhelds::HandheldMaster& master, QObject* parent = nullptr);
+    RailwayHandhelds(Railway& railway, mcanhandhelds::HandheldMaster& master, QObject* parent = nullptr);
     ~RailwayHandhelds() override;
 
-    std::vector<handhelds::HandheldLoco> locomotives() const override;
-    std::optional<handhelds::LocoDrive> drive(std::uint32_t locId) const override;
+    std::vector<mcanhandhelds::HandheldLoco> locomotives() const override;
+    std::optional<mcanhandhelds::LocoDrive> drive(std::uint32_t locId) const override;
     std::optional<bool> powerOn() const override;
     void setSpeed(std::uint32_t locId, int speed) override;
     void setDirection(std::uint32_t locId, bool forward) override;
@@ -33,10 +33,10 @@ public:
     void setPower(bool on) override;
 
 private:
-    handhelds::LocoKind kindOf(std::uint32_t locId) const;
+    mcanhandhelds::LocoKind kindOf(std::uint32_t locId) const;
 
     Railway& railway_;
-    handhelds::HandheldMaster& master_;
+    mcanhandhelds::HandheldMaster& master_;
 };
 
 } // namespace stellwerk::model

@@ -33,4 +33,4 @@ target_sources(stellwerk-model PRIVATE
     model/UnconfirmedCommands.cpp
     model/UnconfirmedCommands.h
 )
-target_link_libraries(stellwerk-model PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-station stellwerk-handhelds stellwerk-orccentral stellwerk-romodule Qt6::Core)
+target_link_libraries(stellwerk-model PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-station stellwerk-mcanhandhelds stellwerk-orccentral stellwerk-romodule Qt6::Core)

@@ -1,6 +1,6 @@
 #include "orccentral/OrcSession.h"
 
-#include "buses/Bus.h"
+#include "bus/Bus.h"
 #include "orc/Codec.h"
 #include "transport/Transport.h"
 
@@ -19,13 +19,13 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 constexpr std::uint8_t WholeDevice = 0xFF;
 } // namespace
 
-OrcSession::OrcSession(buses::Bus& bus, Settings settings, QObject* parent)
+OrcSession::OrcSession(bus::Bus& bus, Settings settings, QObject* parent)
     : QObject(parent), bus_(bus), settings_(std::move(settings)), registry_(settings_.busId) {
     for (const std::uint16_t id : settings_.reservedBusIds)
         registry_.reserve(id);
     pingClock_.setInterval(settings_.timing.pingPeriod);
     connect(&pingClock_, &QTimer::timeout, this, &OrcSession::tick);
-    bus_.subscribe(bus::Protocol::Orc, this,
+    bus_.subscribe(busreading::Protocol::Orc, this,
                    [this](const std::vector<can::CanFrame>& frames) { receive(frames); });
 }
 

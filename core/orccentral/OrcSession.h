@@ -13,7 +13,7 @@
 #include <memory>
 #include <vector>
 
-namespace stellwerk::buses {
+namespace stellwerk::bus {
 class Bus;
 }
 
@@ -45,7 +45,7 @@ public:
     };
     enum class SwitchResult : std::uint8_t { Confirmed, SentUnconfirmed };
 
-    OrcSession(buses::Bus& bus, Settings settings, QObject* parent = nullptr);
+    OrcSession(bus::Bus& bus, Settings settings, QObject* parent = nullptr);
     ~OrcSession() override;
 
     // Looks for devices (Find to every unregistered device, Ping to every known one) and starts the pings.
@@ -65,7 +65,7 @@ public:
     const OrcDevice* deviceAt(std::uint16_t busId) const;
     bool powerOn() const { return powerOn_; }
     // The bus it is the central of, and its own bus id there (for the ThrottleBridge beside it).
-    buses::Bus& bus() const { return bus_; }
+    bus::Bus& bus() const { return bus_; }
     std::uint16_t busId() const { return settings_.busId; }
     // ORC frames no documented form fits (orc.unknown), read and ignored.
     std::uint64_t unreadableFrames() const { return unreadable_; }
@@ -98,7 +98,7 @@ private:
     orc::Origin me() const;
     QTimer* startTimer(std::function<void()> expired);
 
-    buses::Bus& bus_;
+    bus::Bus& bus_;
     Settings settings_;
     DeviceRegistry registry_;
     QTimer pingClock_;

@@ -1,6 +1,6 @@
 #include "orccentral/ThrottleBridge.h"
 
-#include "buses/Bus.h"
+#include "bus/Bus.h"
 #include "orc/Codec.h"
 #include "transport/Transport.h"
 
@@ -32,10 +32,10 @@ std::optional<std::uint32_t> locIdOf(std::uint16_t zielId) {
     return std::nullopt;
 }
 
-ThrottleBridge::ThrottleBridge(buses::Bus& bus, ThrottleRailway& railway, std::uint16_t centralBusId,
+ThrottleBridge::ThrottleBridge(bus::Bus& bus, ThrottleRailway& railway, std::uint16_t centralBusId,
                                QObject* parent)
     : QObject(parent), bus_(bus), railway_(railway), busId_(centralBusId) {
-    bus_.subscribe(bus::Protocol::Orc, this,
+    bus_.subscribe(busreading::Protocol::Orc, this,
                    [this](const std::vector<can::CanFrame>& frames) { receive(frames); });
 }
 

@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-namespace stellwerk::buses {
+namespace stellwerk::bus {
 class Bus;
 }
 
@@ -53,7 +53,7 @@ class ThrottleBridge final : public QObject {
     Q_DISABLE_COPY_MOVE(ThrottleBridge)
 
 public:
-    ThrottleBridge(buses::Bus& bus, ThrottleRailway& railway, std::uint16_t centralBusId,
+    ThrottleBridge(bus::Bus& bus, ThrottleRailway& railway, std::uint16_t centralBusId,
                    QObject* parent = nullptr);
 
     // Commands for a Ziel-Id that is no CS2 locomotive (or by UID), refused.
@@ -80,7 +80,7 @@ private:
     void send(const orc::Message& message);
     orc::Origin me() const;
 
-    buses::Bus& bus_;
+    bus::Bus& bus_;
     ThrottleRailway& railway_;
     std::uint16_t busId_;
     std::uint64_t refused_ = 0;

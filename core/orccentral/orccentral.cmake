@@ -11,4 +11,4 @@ target_sources(stellwerk-orccentral PRIVATE
     orccentral/ThrottleBridge.cpp
     orccentral/ThrottleBridge.h
 )
-target_link_libraries(stellwerk-orccentral PUBLIC stellwerk-orc stellwerk-buses stellwerk-can Qt6::Core)
+target_link_libraries(stellwerk-orccentral PUBLIC stellwerk-orc stellwerk-bus stellwerk-can Qt6::Core)

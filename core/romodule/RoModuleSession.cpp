@@ -1,6 +1,6 @@
 #include "romodule/RoModuleSession.h"
 
-#include "buses/Bus.h"
+#include "bus/Bus.h"
 #include "transport/Transport.h"
 
 #include <QRandomGenerator>
@@ -31,14 +31,13 @@ std::uint32_t maskOf(int count) {
 
 } // namespace
 
-RoModuleSession::RoModuleSession(buses::Bus& bus, ro::RoProfile profile, SessionTiming timing,
-                                 QObject* parent)
+RoModuleSession::RoModuleSession(bus::Bus& bus, ro::RoProfile profile, SessionTiming timing, QObject* parent)
     : QObject(parent), bus_(bus), profile_(std::move(profile)), timing_(timing),
       nextJob_(timing.firstJob.value_or(std::uint8_t(QRandomGenerator::global()->bounded(256)))) {
     answerTimer_.setSingleShot(true);
     connect(&answerTimer_, &QTimer::timeout, this, &RoModuleSession::timedOut);
     connect(&pollTimer_, &QTimer::timeout, this, &RoModuleSession::poll);
-    bus_.subscribe(bus::Protocol::Ro, this,
+    bus_.subscribe(busreading::Protocol::Ro, this,
                    [this](const std::vector<can::CanFrame>& frames) { receive(frames); });
 }
 

@@ -11,7 +11,7 @@
 #include <deque>
 #include <optional>
 
-namespace stellwerk::buses {
+namespace stellwerk::bus {
 class Bus;
 }
 
@@ -52,8 +52,8 @@ public:
     Q_ENUM(State)
     using RequestId = std::uint64_t;
 
-    // The bus's profile must list the module's ids (bus::BusProfile::addRoModule); see problem().
-    RoModuleSession(buses::Bus& bus, ro::RoProfile profile, SessionTiming timing = {},
+    // The bus's profile must list the module's ids (busreading::BusProfile::addRoModule); see problem().
+    RoModuleSession(bus::Bus& bus, ro::RoProfile profile, SessionTiming timing = {},
                     QObject* parent = nullptr);
     ~RoModuleSession() override;
 
@@ -121,7 +121,7 @@ private:
     std::uint32_t outputMask() const;
     std::uint8_t takeJob() { return nextJob_++; }
 
-    buses::Bus& bus_;
+    bus::Bus& bus_;
     ro::RoProfile profile_;
     SessionTiming timing_;
     State state_ = State::Starting;

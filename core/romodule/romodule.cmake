@@ -5,4 +5,4 @@ target_sources(stellwerk-romodule PRIVATE
     romodule/RoModuleSession.cpp
     romodule/RoModuleSession.h
 )
-target_link_libraries(stellwerk-romodule PUBLIC stellwerk-ro stellwerk-buses stellwerk-transport Qt6::Core)
+target_link_libraries(stellwerk-romodule PUBLIC stellwerk-ro stellwerk-bus stellwerk-transport Qt6::Core)

@@ -12,28 +12,28 @@ namespace {
 // The UID the station's handheld side commands the station with (its own hash, never the station's).
 constexpr std::uint32_t HandheldSideUid = 0x4D534D31; // "MSM1"
 
-handhelds::RailFormat formatOf(cs2config::LocomotiveDecoder decoder) {
+mcanhandhelds::RailFormat formatOf(cs2config::LocomotiveDecoder decoder) {
     using Decoder = cs2config::LocomotiveDecoder;
     switch (decoder) {
     case Decoder::Mfx:
-        return handhelds::RailFormat::Mfx;
+        return mcanhandhelds::RailFormat::Mfx;
     case Decoder::Dcc:
-        return handhelds::RailFormat::Dcc;
+        return mcanhandhelds::RailFormat::Dcc;
     case Decoder::None:
     case Decoder::Unknown:
-        return handhelds::RailFormat::Unknown;
+        return mcanhandhelds::RailFormat::Unknown;
     default:
-        return handhelds::RailFormat::Motorola;
+        return mcanhandhelds::RailFormat::Motorola;
     }
 }
 
 } // namespace
 
-StationHandhelds::StationHandhelds(SimulatedStation& station, handhelds::MasterSettings settings,
+StationHandhelds::StationHandhelds(SimulatedStation& station, mcanhandhelds::MasterSettings settings,
                                    QObject* parent)
     : QObject(parent), station_(station), hash_(cs2::hashFromUid(HandheldSideUid)) {
     settings.uid = station_.uid(); // the handhelds see the CS2's UID in the stage-0 reply
-    master_ = std::make_unique<handhelds::HandheldMaster>(
+    master_ = std::make_unique<mcanhandhelds::HandheldMaster>(
         [this](const std::vector<can::CanFrame>& frames) { emit framesEmitted(frames); }, settings, this);
     master_->setBook(&book_);
     master_->setRailway(this);
@@ -72,13 +72,16 @@ void StationHandhelds::observe(const can::CanFrame& frame) {
         result.value().body);
 }
 
-std::vector<handhelds::HandheldLoco> StationHandhelds::locomotives() const {
-    std::vector<handhelds::HandheldLoco> locos;
+std::vector<mcanhandhelds::HandheldLoco> StationHandhelds::locomotives() const {
+    std::vector<mcanhandhelds::HandheldLoco> locos;
     for (const cs2config::Locomotive& record : station_.layout().locomotives().locomotives) {
         if (record.uid == 0)
             continue;
-        handhelds::HandheldLoco loco{
-            record.uid, record.name, handhelds::kindOfSymbol(record.symbol), formatOf(record.decoder), {}};
+        mcanhandhelds::HandheldLoco loco{record.uid,
+                                         record.name,
+                                         mcanhandhelds::kindOfSymbol(record.symbol),
+                                         formatOf(record.decoder),
+                                         {}};
         for (const cs2config::Function& function : record.functions)
             if (function.number >= 0 && function.icon != 0)
                 loco.functions.push_back(
@@ -88,11 +91,11 @@ std::vector<handhelds::HandheldLoco> StationHandhelds::locomotives() const {
     return locos;
 }
 
-std::optional<handhelds::LocoDrive> StationHandhelds::drive(std::uint32_t locId) const {
+std::optional<mcanhandhelds::LocoDrive> StationHandhelds::drive(std::uint32_t locId) const {
     const SimulatedLoco* loco = station_.loco(locId);
     if (!loco)
-        return handhelds::LocoDrive{};
-    handhelds::LocoDrive drive{loco->speed, loco->direction != 2, 0};
+        return mcanhandhelds::LocoDrive{};
+    mcanhandhelds::LocoDrive drive{loco->speed, loco->direction != 2, 0};
     for (std::size_t f = 0; f < loco->functions.size(); ++f)
         if (loco->functions[f])
             drive.functions |= 1u << f;

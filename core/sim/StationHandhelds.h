@@ -1,9 +1,9 @@
 #pragma once
 
 #include "can/CanFrame.h"
-#include "handhelds/HandheldBook.h"
-#include "handhelds/HandheldMaster.h"
-#include "handhelds/HandheldRailway.h"
+#include "mcanhandhelds/HandheldBook.h"
+#include "mcanhandhelds/HandheldMaster.h"
+#include "mcanhandhelds/HandheldRailway.h"
 
 #include <QObject>
 #include <memory>
@@ -17,26 +17,26 @@ class SimulatedStation;
 // simulated bus that answers the handhelds with Stellwerk's master, and carries out what they do inside the
 // station, as its own commands; what the station then reports on the bus (theirs, and other controllers'
 // changes) reaches the handhelds that show it. A SimulatedBus peer: receive() and framesEmitted.
-class StationHandhelds final : public QObject, private handhelds::HandheldRailway {
+class StationHandhelds final : public QObject, private mcanhandhelds::HandheldRailway {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(StationHandhelds)
 
 public:
-    explicit StationHandhelds(SimulatedStation& station, handhelds::MasterSettings settings = {},
+    explicit StationHandhelds(SimulatedStation& station, mcanhandhelds::MasterSettings settings = {},
                               QObject* parent = nullptr);
     ~StationHandhelds() override;
 
     // A frame on the bus: M-CAN goes to the master; the station's CS2 reports tell it what changed.
     void receive(const can::CanFrame& frame);
-    const handhelds::HandheldMaster& master() const { return *master_; }
-    handhelds::HandheldMaster& master() { return *master_; }
+    const mcanhandhelds::HandheldMaster& master() const { return *master_; }
+    mcanhandhelds::HandheldMaster& master() { return *master_; }
 
 signals:
     void framesEmitted(const std::vector<stellwerk::can::CanFrame>& frames);
 
 private:
-    std::vector<handhelds::HandheldLoco> locomotives() const override;
-    std::optional<handhelds::LocoDrive> drive(std::uint32_t locId) const override;
+    std::vector<mcanhandhelds::HandheldLoco> locomotives() const override;
+    std::optional<mcanhandhelds::LocoDrive> drive(std::uint32_t locId) const override;
     std::optional<bool> powerOn() const override;
     void setSpeed(std::uint32_t locId, int speed) override;
     void setDirection(std::uint32_t locId, bool forward) override;
@@ -46,8 +46,8 @@ private:
     void observe(const can::CanFrame& frame);
 
     SimulatedStation& station_;
-    handhelds::MemoryHandheldBook book_;
-    std::unique_ptr<handhelds::HandheldMaster> master_;
+    mcanhandhelds::MemoryHandheldBook book_;
+    std::unique_ptr<mcanhandhelds::HandheldMaster> master_;
     std::uint16_t hash_;
 };
 

@@ -43,4 +43,4 @@ target_sources(stellwerk-simulator PRIVATE
     sim/StatusChannels.cpp
     sim/SystemCommands.cpp
 )
-target_link_libraries(stellwerk-simulator PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-handhelds stellwerk-mcan stellwerk-orc stellwerk-ro stellwerk-transport Qt6::Core Qt6::Network)
+target_link_libraries(stellwerk-simulator PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-mcanhandhelds stellwerk-mcan stellwerk-orc stellwerk-ro stellwerk-transport Qt6::Core Qt6::Network)

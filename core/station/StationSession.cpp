@@ -5,7 +5,7 @@
 
 namespace stellwerk::station {
 
-StationSession::StationSession(buses::Bus& bus, StationSettings settings, QObject* parent)
+StationSession::StationSession(bus::Bus& bus, StationSettings settings, QObject* parent)
     : QObject(parent), bus_(bus), transport_(bus.transport()), settings_(settings), identity_(settings.uid),
       tracker_(new CommandTracker(
           [this](std::span<const can::CanFrame> f, CommandId id) { return sendFrames(f, id); },
@@ -16,7 +16,8 @@ StationSession::StationSession(buses::Bus& bus, StationSettings settings, QObjec
     download_->setRequestPolicy(settings_.commands);
     download_->setIdleTimeout(settings_.streamIdle);
     liveness_->setSettings(settings_.liveness);
-    bus_.subscribe(bus::Protocol::Cs2, this, [this](const std::vector<can::CanFrame>& f) { receive(f); });
+    bus_.subscribe(busreading::Protocol::Cs2, this,
+                   [this](const std::vector<can::CanFrame>& f) { receive(f); });
     connect(&transport_, &transport::Transport::stateChanged, this, &StationSession::transportStateChanged);
     connect(liveness_, &Liveness::stationSilent, this, &StationSession::stationSilent);
     connected_ = transport_.state() == transport::Transport::State::Connected;

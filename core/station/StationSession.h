@@ -1,6 +1,6 @@
 #pragma once
 
-#include "buses/Bus.h"
+#include "bus/Bus.h"
 #include "station/CommandTracker.h"
 #include "station/ConfigDownload.h"
 #include "station/DeviceDirectory.h"
@@ -45,7 +45,7 @@ class StationSession final : public QObject {
     Q_OBJECT
 
 public:
-    explicit StationSession(buses::Bus& bus, StationSettings settings = {}, QObject* parent = nullptr);
+    explicit StationSession(bus::Bus& bus, StationSettings settings = {}, QObject* parent = nullptr);
     ~StationSession() override;
 
     const StationIdentity& identity() const { return identity_; }
@@ -57,7 +57,7 @@ public:
     const DeviceDirectory& devices() const { return directory_; }
     const SessionCounters& counters() const { return counters_; }
     transport::Transport& transport() { return transport_; }
-    buses::Bus& bus() { return bus_; }
+    bus::Bus& bus() { return bus_; }
 
     // Sends without waiting for an answer (ping, bootloader "go", commands nobody acknowledges).
     bool send(const cs2::Message& message);
@@ -88,7 +88,7 @@ private:
     void receiveFrame(const can::CanFrame& frame);
     void route(const cs2::Message& message, const can::CanFrame& frame);
 
-    buses::Bus& bus_;
+    bus::Bus& bus_;
     transport::Transport& transport_;
     StationSettings settings_;
     StationIdentity identity_;

@@ -22,4 +22,4 @@ target_sources(stellwerk-station PRIVATE
     station/StatusDataReader.cpp
     station/StatusDataReader.h
 )
-target_link_libraries(stellwerk-station PUBLIC stellwerk-buses stellwerk-bus stellwerk-cs2 stellwerk-cs2config stellwerk-transport Qt6::Core)
+target_link_libraries(stellwerk-station PUBLIC stellwerk-bus stellwerk-busreading stellwerk-cs2 stellwerk-cs2config stellwerk-transport Qt6::Core)

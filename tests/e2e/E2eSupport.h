@@ -133,7 +133,7 @@ public:
     bool connectApp() {
         transport = transport::createTransport(transportSettings());
         session.reset();
-        bus = std::make_unique<buses::Bus>(*transport, bus::BusProfile::centralStation());
+        bus = std::make_unique<bus::Bus>(*transport, busreading::BusProfile::centralStation());
         session = std::make_unique<station::StationSession>(*bus, settings_);
         transport->open();
         return waitFor([&] { return transport->state() == transport::Transport::State::Connected; }) &&
@@ -190,7 +190,7 @@ public:
     sim::SimulatedStation station{sim::StationLayout::demo()};
     std::unique_ptr<sim::StationServer> server;
     std::unique_ptr<transport::Transport> transport;
-    std::unique_ptr<buses::Bus> bus;
+    std::unique_ptr<bus::Bus> bus;
     std::unique_ptr<station::StationSession> session;
 
 private:

@@ -67,7 +67,7 @@ TEST(TcpPeerThatNeverReads, CommandsFailAndNothingPilesUp) {
     deaf.pauseAccepting(); // the kernel completes connections; nobody takes or reads them
     auto transport = transport::createTransport(
         transport::TcpSettings{QStringLiteral("127.0.0.1"), deaf.serverPort(), fastReconnect()});
-    buses::Bus bus(*transport, bus::BusProfile::centralStation());
+    bus::Bus bus(*transport, busreading::BusProfile::centralStation());
     station::StationSession session(bus, impatient());
     transport->open();
     ASSERT_TRUE(waitFor([&] { return transport->state() == State::Connected; }));

@@ -11,7 +11,7 @@ namespace stellwerk::e2e {
 namespace {
 
 using connection::HandheldRole;
-using handhelds::HandheldState;
+using mcanhandhelds::HandheldState;
 using sim::SimulatedMs1;
 
 // Whether the frames carry the CS2 command that sets the locomotive's speed.

@@ -8,8 +8,8 @@
 #include "E2eSupport.h"
 #include "StationLog.h"
 #include "connection/StationConnection.h"
-#include "handhelds/HandheldMaster.h"
 #include "mcan/Codec.h"
+#include "mcanhandhelds/HandheldMaster.h"
 #include "model/Railway.h"
 #include "model/RailwayHandhelds.h"
 #include "sim/SimulatedBus.h"
@@ -37,8 +37,8 @@ inline sim::SimulatedMs1::Options quickMs1(std::uint32_t uid, std::string name) 
 }
 
 // A master that calls a handheld silent after 300 ms and drops it after 5 polls 20 ms apart.
-inline handhelds::MasterSettings quickMaster() {
-    handhelds::MasterSettings settings;
+inline mcanhandhelds::MasterSettings quickMaster() {
+    mcanhandhelds::MasterSettings settings;
     settings.silentAfter = 300ms;
     settings.masterPollEvery = 20ms;
     settings.masterPolls = 5;
@@ -127,7 +127,7 @@ public:
         QObject::connect(&connection, &connection::StationConnection::sessionStarted, &connection,
                          [this](station::StationSession* session) {
                              railway = std::make_unique<model::Railway>(*session);
-                             if (handhelds::HandheldMaster* master = connection.handhelds())
+                             if (mcanhandhelds::HandheldMaster* master = connection.handhelds())
                                  new model::RailwayHandhelds(*railway, *master, railway.get());
                          });
         QObject::connect(&connection, &connection::StationConnection::configurationLoaded, &connection,
@@ -150,16 +150,16 @@ public:
             timeoutMs);
     }
 
-    handhelds::HandheldMaster& master() const { return *connection.handhelds(); }
+    mcanhandhelds::HandheldMaster& master() const { return *connection.handhelds(); }
 
     // The handheld as the app shows it, when it knows it.
-    std::optional<handhelds::Handheld> handheld(std::uint32_t uid) const {
-        for (const handhelds::Handheld& h : master().handhelds())
+    std::optional<mcanhandhelds::Handheld> handheld(std::uint32_t uid) const {
+        for (const mcanhandhelds::Handheld& h : master().handhelds())
             if (h.uid == uid)
                 return h;
         return std::nullopt;
     }
-    bool shows(std::uint32_t uid, handhelds::HandheldState state) const {
+    bool shows(std::uint32_t uid, mcanhandhelds::HandheldState state) const {
         const auto h = handheld(uid);
         return h && h->state == state;
     }

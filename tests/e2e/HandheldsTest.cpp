@@ -15,8 +15,8 @@ namespace stellwerk::e2e {
 namespace {
 
 using connection::HandheldRole;
-using handhelds::HandheldState;
-using handhelds::Watching;
+using mcanhandhelds::HandheldState;
+using mcanhandhelds::Watching;
 using sim::SimulatedMs1;
 
 class HandheldOverWire : public ::testing::TestWithParam<Wire> {};
@@ -86,7 +86,7 @@ TEST_P(HandheldOverWire, AnMs1PulledOutGoesSilentThenOfflineAndFreesItsLocomotiv
     station.first.plugIn();
     ASSERT_TRUE(drivesFirstLoco(station.first));
     std::vector<HandheldState> states;
-    QObject::connect(&app.master(), &handhelds::HandheldMaster::handheldsChanged, &app.connection, [&] {
+    QObject::connect(&app.master(), &mcanhandhelds::HandheldMaster::handheldsChanged, &app.connection, [&] {
         if (const auto h = app.handheld(FirstMs1); h && (states.empty() || states.back() != h->state))
             states.push_back(h->state);
     });
@@ -96,7 +96,7 @@ TEST_P(HandheldOverWire, AnMs1PulledOutGoesSilentThenOfflineAndFreesItsLocomotiv
     sinceUnplugged.start();
     ASSERT_TRUE(
         waitFor([&] { return !app.handheld(FirstMs1) || app.shows(FirstMs1, HandheldState::Offline); }));
-    const handhelds::MasterSettings documented = quickMaster(); // 7.5 s, then 30 polls 1 s apart, scaled
+    const mcanhandhelds::MasterSettings documented = quickMaster(); // 7.5 s, then 30 polls 1 s apart, scaled
     EXPECT_GE(sinceUnplugged.elapsed(), documented.silentAfter.count())
         << "not given up before it went silent";
     EXPECT_LT(sinceUnplugged.elapsed(),
@@ -169,7 +169,7 @@ TEST_P(HandheldOverWire, FallsSilentWhenAnotherMasterSpeaks) {
     ASSERT_TRUE(app.ready());
     station.first.plugIn();
     ASSERT_TRUE(waitFor([&] { return app.shows(FirstMs1, HandheldState::Online); }));
-    QSignalSpy masterChanged(&app.master(), &handhelds::HandheldMaster::masterChanged);
+    QSignalSpy masterChanged(&app.master(), &mcanhandhelds::HandheldMaster::masterChanged);
 
     station.addStationMaster();
     station.stationMaster->receive(mcan::encode(mcan::LoginRequest{0, 0x00, 0})); // it answers a login

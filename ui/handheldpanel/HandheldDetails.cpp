@@ -72,12 +72,12 @@ void HandheldDetails::retranslate() {
         tr("The locomotives the handheld offers, in its order; remembered for this handheld"));
 }
 
-void HandheldDetails::show(const handhelds::Handheld* handheld, bool changeable) {
+void HandheldDetails::show(const mcanhandhelds::Handheld* handheld, bool changeable) {
     const bool other = !handheld || handheld->uid != m_uid;
     m_uid = handheld ? handheld->uid : 0;
     m_stackSize = handheld ? handheld->stackSize : 10;
-    m_changeable =
-        handheld && changeable && handheld->ours && handheld->state != handhelds::HandheldState::FlashMode;
+    m_changeable = handheld && changeable && handheld->ours &&
+                   handheld->state != mcanhandhelds::HandheldState::FlashMode;
     if (other || !m_name->hasFocus())
         m_name->setText(handheld ? handheld->name : QString());
     fillStack(handheld ? handheld->stack : std::vector<std::uint32_t>{});

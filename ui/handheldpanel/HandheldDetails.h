@@ -1,6 +1,6 @@
 #pragma once
 
-#include "handhelds/Handheld.h"
+#include "mcanhandhelds/Handheld.h"
 
 #include <QGroupBox>
 #include <QString>
@@ -30,7 +30,7 @@ public:
     explicit HandheldDetails(QWidget* parent = nullptr);
 
     // The handheld to show (null: none), and whether Stellwerk may change it now (it is the master).
-    void show(const handhelds::Handheld* handheld, bool changeable);
+    void show(const mcanhandhelds::Handheld* handheld, bool changeable);
     void setChoices(std::vector<Choice> choices);
     void retranslate();
 

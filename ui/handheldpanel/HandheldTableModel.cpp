@@ -5,8 +5,8 @@
 
 namespace stellwerk::ui {
 
-using handhelds::Handheld;
-using handhelds::HandheldState;
+using mcanhandhelds::Handheld;
+using mcanhandhelds::HandheldState;
 
 HandheldTableModel::HandheldTableModel(QObject* parent) : QAbstractTableModel(parent) {
     m_flush.setSingleShot(true);

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "handhelds/Handheld.h"
+#include "mcanhandhelds/Handheld.h"
 
 #include <QAbstractTableModel>
 #include <QTimer>
@@ -23,10 +23,10 @@ public:
     explicit HandheldTableModel(QObject* parent = nullptr);
 
     // Shows `handhelds` (soon, not at once: several calls in a row make one update).
-    void show(std::vector<handhelds::Handheld> handhelds);
+    void show(std::vector<mcanhandhelds::Handheld> handhelds);
     void setLocoName(LocoName name) { m_locoName = std::move(name); }
-    const std::vector<handhelds::Handheld>& handhelds() const { return m_rows; }
-    const handhelds::Handheld* handheld(int row) const;
+    const std::vector<mcanhandhelds::Handheld>& handhelds() const { return m_rows; }
+    const mcanhandhelds::Handheld* handheld(int row) const;
     int rowOf(std::uint32_t uid) const;
     // Applies what show() left waiting (tests, and before reading the rows).
     void flush();
@@ -36,14 +36,14 @@ public:
     QVariant data(const QModelIndex& index, int role) const override;
     QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
 
-    static QString stateText(const handhelds::Handheld& handheld);
+    static QString stateText(const mcanhandhelds::Handheld& handheld);
 
 private:
-    QString text(const handhelds::Handheld& handheld, int column) const;
-    QString locoText(const handhelds::Handheld& handheld) const;
+    QString text(const mcanhandhelds::Handheld& handheld, int column) const;
+    QString locoText(const mcanhandhelds::Handheld& handheld) const;
 
-    std::vector<handhelds::Handheld> m_rows;
-    std::vector<handhelds::Handheld> m_waiting;
+    std::vector<mcanhandhelds::Handheld> m_rows;
+    std::vector<mcanhandhelds::Handheld> m_waiting;
     bool m_hasWaiting = false;
     QTimer m_flush;
     LocoName m_locoName;

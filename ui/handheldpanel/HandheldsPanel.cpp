@@ -5,7 +5,7 @@
 #include "connection/StationConnection.h"
 #include "handheldpanel/HandheldDetails.h"
 #include "handheldpanel/HandheldTableModel.h"
-#include "handhelds/HandheldMaster.h"
+#include "mcanhandhelds/HandheldMaster.h"
 #include "model/Railway.h"
 
 #include <QCheckBox>
@@ -22,11 +22,11 @@
 namespace stellwerk::ui {
 namespace {
 
-const QString ActAsMasterKey = QStringLiteral("handhelds/actAsMaster");
+const QString ActAsMasterKey = QStringLiteral("mcanhandhelds/actAsMaster");
 
-const handhelds::Handheld* inBootLoader(const HandheldTableModel& model) {
-    for (const handhelds::Handheld& handheld : model.handhelds())
-        if (handheld.state == handhelds::HandheldState::FlashMode)
+const mcanhandhelds::Handheld* inBootLoader(const HandheldTableModel& model) {
+    for (const mcanhandhelds::Handheld& handheld : model.handhelds())
+        if (handheld.state == mcanhandhelds::HandheldState::FlashMode)
             return &handheld;
     return nullptr;
 }
@@ -85,7 +85,7 @@ HandheldsPanel::HandheldsPanel(QWidget* parent)
                     m_master->setStack(uid, stack);
             });
     connect(m_silence, &QPushButton::clicked, this, [this] {
-        if (const handhelds::Handheld* handheld = inBootLoader(*m_model); handheld && m_master)
+        if (const mcanhandhelds::Handheld* handheld = inBootLoader(*m_model); handheld && m_master)
             m_master->silenceBootLoader(handheld->uid);
     });
     m_model->setLocoName([this](std::uint32_t locId) {
@@ -114,14 +114,16 @@ void HandheldsPanel::setConnection(connection::StationConnection* connection) {
 
 // The master lives as long as one connection's session: a new one comes with each connection.
 void HandheldsPanel::attachMaster() {
-    handhelds::HandheldMaster* master = m_connection ? m_connection->handhelds() : nullptr;
+    mcanhandhelds::HandheldMaster* master = m_connection ? m_connection->handhelds() : nullptr;
     if (master != m_master) {
         if (m_master)
             disconnect(m_master, nullptr, this, nullptr);
         m_master = master;
         if (m_master) {
-            connect(m_master, &handhelds::HandheldMaster::handheldsChanged, this, &HandheldsPanel::refresh);
-            connect(m_master, &handhelds::HandheldMaster::masterChanged, this, &HandheldsPanel::updateRole);
+            connect(m_master, &mcanhandhelds::HandheldMaster::handheldsChanged, this,
+                    &HandheldsPanel::refresh);
+            connect(m_master, &mcanhandhelds::HandheldMaster::masterChanged, this,
+                    &HandheldsPanel::updateRole);
         }
     }
     refresh();
@@ -139,7 +141,7 @@ void HandheldsPanel::setRailway(model::Railway* railway) {
 }
 
 void HandheldsPanel::refresh() {
-    m_model->show(m_master ? m_master->handhelds() : std::vector<handhelds::Handheld>{});
+    m_model->show(m_master ? m_master->handhelds() : std::vector<mcanhandhelds::Handheld>{});
     updateRole();
 }
 
@@ -149,17 +151,17 @@ QString HandheldsPanel::roleText() const {
     if (m_master->isMaster())
         return tr("Stellwerk is the master of the MS1 handhelds on this bus: plug one in to drive with it.");
     switch (m_master->watching()) {
-    case handhelds::Watching::UntilDevicesKnown:
+    case mcanhandhelds::Watching::UntilDevicesKnown:
         return tr("Stellwerk waits until it knows the devices on the bus before it answers any handheld.");
-    case handhelds::Watching::CentralStation:
+    case mcanhandhelds::Watching::CentralStation:
         return tr("Stellwerk only watches the handhelds: the Central Station is their master.");
-    case handhelds::Watching::AnotherMaster:
+    case mcanhandhelds::Watching::AnotherMaster:
         if (m_master->otherMasterNode() == 0)
             return tr("Stellwerk only watches the handhelds: another master answers them.");
         return tr("Stellwerk only watches the handhelds: another master (node %1) answers them.")
             .arg(m_master->otherMasterNode());
-    case handhelds::Watching::Asked:
-    case handhelds::Watching::No:
+    case mcanhandhelds::Watching::Asked:
+    case mcanhandhelds::Watching::No:
         break;
     }
     return tr("Stellwerk only watches the handhelds, as chosen.");
@@ -168,7 +170,7 @@ QString HandheldsPanel::roleText() const {
 void HandheldsPanel::updateRole() {
     m_role->setText(roleText());
     updateMasterChoice();
-    const handhelds::Handheld* flashing = inBootLoader(*m_model);
+    const mcanhandhelds::Handheld* flashing = inBootLoader(*m_model);
     m_bootLoader->setVisible(flashing != nullptr);
     m_silence->setVisible(flashing != nullptr && m_master && m_master->isMaster());
     if (flashing)
@@ -181,9 +183,9 @@ void HandheldsPanel::updateRole() {
 // While a Central Station or another master answers the handhelds, Stellwerk cannot be theirs: the choice
 // shows off and cannot be made; the person's own choice is kept for a bus without another master.
 void HandheldsPanel::updateMasterChoice() {
-    const handhelds::Watching why = m_master ? m_master->watching() : handhelds::Watching::No;
+    const mcanhandhelds::Watching why = m_master ? m_master->watching() : mcanhandhelds::Watching::No;
     const bool otherMaster =
-        why == handhelds::Watching::CentralStation || why == handhelds::Watching::AnotherMaster;
+        why == mcanhandhelds::Watching::CentralStation || why == mcanhandhelds::Watching::AnotherMaster;
     const QSignalBlocker quiet(m_actAsMaster);
     m_actAsMaster->setEnabled(!otherMaster);
     m_actAsMaster->setChecked(!otherMaster && stellwerkSettings().value(ActAsMasterKey, true).toBool());
@@ -195,7 +197,8 @@ void HandheldsPanel::updateMasterChoice() {
 
 void HandheldsPanel::updateDetails() {
     const QModelIndexList rows = m_view->selectionModel()->selectedRows();
-    const handhelds::Handheld* selected = rows.isEmpty() ? nullptr : m_model->handheld(rows.first().row());
+    const mcanhandhelds::Handheld* selected =
+        rows.isEmpty() ? nullptr : m_model->handheld(rows.first().row());
     m_details->show(selected, m_master && m_master->isMaster());
     updateRole();
 }

@@ -11,7 +11,7 @@ class QTableView;
 namespace stellwerk::connection {
 class StationConnection;
 }
-namespace stellwerk::handhelds {
+namespace stellwerk::mcanhandhelds {
 class HandheldMaster;
 }
 namespace stellwerk::model {
@@ -52,7 +52,7 @@ private:
     void retranslate();
 
     QPointer<connection::StationConnection> m_connection;
-    QPointer<handhelds::HandheldMaster> m_master;
+    QPointer<mcanhandhelds::HandheldMaster> m_master;
     QPointer<model::Railway> m_railway;
     QLabel* m_role;
     QCheckBox* m_actAsMaster;

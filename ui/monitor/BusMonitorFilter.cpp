@@ -1,6 +1,6 @@
 #include "monitor/BusMonitorFilter.h"
 
-#include "bus/FrameDescription.h"
+#include "busreading/FrameDescription.h"
 #include "monitor/BusMonitorModel.h"
 
 #include <QElapsedTimer>
@@ -46,14 +46,14 @@ void BusMonitorFilter::setCommand(const QString& name) {
     setFilters(name, m_locId, m_text);
 }
 
-void BusMonitorFilter::setProtocol(std::optional<bus::Protocol> protocol) {
+void BusMonitorFilter::setProtocol(std::optional<busreading::Protocol> protocol) {
     if (protocol == m_protocol)
         return;
     m_protocol = protocol;
     restart();
 }
 
-void BusMonitorFilter::setHandheld(std::optional<bus::HandheldReference> handheld) {
+void BusMonitorFilter::setHandheld(std::optional<busreading::HandheldReference> handheld) {
     if (handheld == m_handheld)
         return;
     m_handheld = std::move(handheld);
@@ -97,7 +97,7 @@ int BusMonitorFilter::scanPercent() const {
 }
 
 std::optional<std::uint32_t> BusMonitorFilter::parseLocId(const QString& text) {
-    return bus::parseLocoReference(text.toStdString());
+    return busreading::parseLocoReference(text.toStdString());
 }
 
 // Cheap tests first: each reads the row's description (decoded once and cached), the text all its text.

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "bus/FrameClassifier.h"
-#include "bus/Handheld.h"
+#include "busreading/FrameClassifier.h"
+#include "busreading/Handheld.h"
 
 #include <QAbstractProxyModel>
 #include <QString>
@@ -45,12 +45,12 @@ public:
     // All three at once, with one new scan when any changed.
     void setFilters(const QString& command, std::optional<std::uint32_t> locId, const QString& text);
     // nullopt = every protocol; else only the frames that belong to it on their bus (Foreign: to none).
-    void setProtocol(std::optional<bus::Protocol> protocol);
-    std::optional<bus::Protocol> protocol() const { return m_protocol; }
+    void setProtocol(std::optional<busreading::Protocol> protocol);
+    std::optional<busreading::Protocol> protocol() const { return m_protocol; }
     // nullopt = every frame; else only the M-CAN frames of that handheld (either node of its pair, or the
     // name it sent).
-    void setHandheld(std::optional<bus::HandheldReference> handheld);
-    const std::optional<bus::HandheldReference>& handheld() const { return m_handheld; }
+    void setHandheld(std::optional<busreading::HandheldReference> handheld);
+    const std::optional<busreading::HandheldReference>& handheld() const { return m_handheld; }
     bool isFiltering() const {
         return m_protocol || m_handheld || !m_command.isEmpty() || m_locId || !m_text.isEmpty();
     }
@@ -90,8 +90,8 @@ private:
 
     BusMonitorModel* m_source = nullptr;
     QTimer* m_scanTimer = nullptr;
-    std::optional<bus::Protocol> m_protocol;
-    std::optional<bus::HandheldReference> m_handheld;
+    std::optional<busreading::Protocol> m_protocol;
+    std::optional<busreading::HandheldReference> m_handheld;
     QString m_command;
     std::string m_commandName;
     std::optional<std::uint32_t> m_locId;

@@ -1,6 +1,6 @@
 #include "monitor/BusMonitorFilterBar.h"
 
-#include "bus/FrameDescription.h"
+#include "busreading/FrameDescription.h"
 #include "monitor/BusMonitorFilter.h"
 
 #include <QComboBox>
@@ -56,8 +56,8 @@ QComboBox* BusMonitorFilterBar::protocolBox() {
     auto* box = new QComboBox(this);
     box->setObjectName(QStringLiteral("busMonitorProtocol"));
     box->addItem(QString(), QString());
-    for (std::size_t protocol = 0; protocol < bus::ProtocolCount; ++protocol)
-        box->addItem(QString(), latin1(bus::protocolName(bus::Protocol(protocol))));
+    for (std::size_t protocol = 0; protocol < busreading::ProtocolCount; ++protocol)
+        box->addItem(QString(), latin1(busreading::protocolName(busreading::Protocol(protocol))));
     box->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     connect(box, &QComboBox::currentIndexChanged, this, &BusMonitorFilterBar::apply);
     return box;
@@ -68,7 +68,7 @@ QComboBox* BusMonitorFilterBar::commandBox() {
     auto* box = new QComboBox(this);
     box->setObjectName(QStringLiteral("busMonitorCommand"));
     box->addItem(QString());
-    for (const std::string_view name : bus::messageNames(bus::BusProfile::centralStation()))
+    for (const std::string_view name : busreading::messageNames(busreading::BusProfile::centralStation()))
         box->addItem(latin1(name));
     box->setMaxVisibleItems(20);
     box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
@@ -128,11 +128,11 @@ void BusMonitorFilterBar::apply() {
     m_locIdValid = locIdText.isEmpty() || locId.has_value();
     showValidity(m_locIdEdit, m_locIdValid);
     const QString handheldText = m_handheldEdit->text().trimmed();
-    const auto handheld = bus::HandheldReference::parse(handheldText.toStdString());
+    const auto handheld = busreading::HandheldReference::parse(handheldText.toStdString());
     m_handheldValid = handheldText.isEmpty() || handheld.has_value();
     showValidity(m_handheldEdit, m_handheldValid);
     const int protocol = m_protocolBox->currentIndex() - 1;
-    m_filter->setProtocol(protocol < 0 ? std::nullopt : std::optional(bus::Protocol(protocol)));
+    m_filter->setProtocol(protocol < 0 ? std::nullopt : std::optional(busreading::Protocol(protocol)));
     m_filter->setHandheld(handheld);
     m_filter->setFilters(m_commandBox->currentIndex() > 0 ? m_commandBox->currentText() : QString(), locId,
                          m_textEdit->text().trimmed());
@@ -158,11 +158,11 @@ void BusMonitorFilterBar::changeEvent(QEvent* event) {
 void BusMonitorFilterBar::retranslate() {
     m_textEdit->setPlaceholderText(tr("Find text, e.g. speed=0"));
     m_protocolBox->setItemText(0, tr("All protocols"));
-    m_protocolBox->setItemText(1 + int(bus::Protocol::Cs2), tr("CS2"));
-    m_protocolBox->setItemText(1 + int(bus::Protocol::Mcan), tr("M-CAN"));
-    m_protocolBox->setItemText(1 + int(bus::Protocol::Ro), tr("RO"));
-    m_protocolBox->setItemText(1 + int(bus::Protocol::Orc), tr("OpenRailCAN"));
-    m_protocolBox->setItemText(1 + int(bus::Protocol::Foreign), tr("Foreign"));
+    m_protocolBox->setItemText(1 + int(busreading::Protocol::Cs2), tr("CS2"));
+    m_protocolBox->setItemText(1 + int(busreading::Protocol::Mcan), tr("M-CAN"));
+    m_protocolBox->setItemText(1 + int(busreading::Protocol::Ro), tr("RO"));
+    m_protocolBox->setItemText(1 + int(busreading::Protocol::Orc), tr("OpenRailCAN"));
+    m_protocolBox->setItemText(1 + int(busreading::Protocol::Foreign), tr("Foreign"));
     m_protocolBox->setToolTip(tr("Show only frames of one protocol; foreign frames belong to none that is "
                                  "expected on their bus"));
     m_handheldEdit->setPlaceholderText(tr("Handheld"));

@@ -99,15 +99,15 @@ QString BusMonitorModel::busName(int bus) const {
     return QStringLiteral("can%1").arg(bus);
 }
 
-const bus::BusProfile& BusMonitorModel::profileOf(int bus) const {
-    static const bus::BusProfile station = bus::BusProfile::centralStation();
-    static const bus::BusProfile none{};
+const busreading::BusProfile& BusMonitorModel::profileOf(int bus) const {
+    static const busreading::BusProfile station = busreading::BusProfile::centralStation();
+    static const busreading::BusProfile none{};
     if (std::size_t(bus) < m_buses.size())
         return m_buses[std::size_t(bus)].profile;
     return bus == 0 ? station : none;
 }
 
-bus::BusContext& BusMonitorModel::contextOf(int bus) {
+busreading::BusContext& BusMonitorModel::contextOf(int bus) {
     if (std::size_t(bus) >= m_contexts.size())
         m_contexts.resize(std::size_t(bus) + 1);
     return m_contexts[std::size_t(bus)];
@@ -133,7 +133,7 @@ void BusMonitorModel::addFrames(std::span<const can::CanFrame> frames, Direction
     bus = std::clamp(bus, 0, 255);
     noteBus(bus);
     const qint64 timeMs = time.toMSecsSinceEpoch();
-    bus::BusContext& context = contextOf(bus);
+    busreading::BusContext& context = contextOf(bus);
     for (const can::CanFrame& frame : frames) {
         m_queued.push_back(record(frame, direction, timeMs, bus));
         context.observe(frame); // in arrival order, also while paused and for frames the queue drops
@@ -224,9 +224,10 @@ can::CanFrame BusMonitorModel::frameAt(int row) const {
     return frameOf(m_rows.at(std::size_t(row)));
 }
 
-const bus::FrameDescription& BusMonitorModel::describe(int row) const {
+const busreading::FrameDescription& BusMonitorModel::describe(int row) const {
     const Record& r = m_rows.at(std::size_t(row));
-    const bus::BusContext* context = std::size_t(r.bus) < m_contexts.size() ? &m_contexts[r.bus] : nullptr;
+    const busreading::BusContext* context =
+        std::size_t(r.bus) < m_contexts.size() ? &m_contexts[r.bus] : nullptr;
     return m_descriptions.of(m_dropped + std::uint64_t(row), frameOf(r), profileOf(r.bus), context);
 }
 
@@ -238,7 +239,7 @@ int BusMonitorModel::busAt(int row) const {
     return m_rows.at(std::size_t(row)).bus;
 }
 
-bus::Protocol BusMonitorModel::protocolAt(int row) const {
+busreading::Protocol BusMonitorModel::protocolAt(int row) const {
     return describe(row).protocol();
 }
 
@@ -255,7 +256,7 @@ std::string BusMonitorModel::commandAt(int row) const {
 }
 
 bool BusMonitorModel::containsText(int row, std::string_view lowerNeedle) const {
-    const bus::FrameDescription& description = describe(row);
+    const busreading::FrameDescription& description = describe(row);
     const auto contains = [lowerNeedle](std::string_view text) {
         const auto equal = [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; };
         return std::search(text.begin(), text.end(), lowerNeedle.begin(), lowerNeedle.end(), equal) !=
@@ -271,7 +272,7 @@ std::optional<std::uint32_t> BusMonitorModel::locIdAt(int row) const {
 }
 
 // The handheld's name as its bus knows it now, so that a row described before the name came matches too.
-std::optional<bus::Handheld> BusMonitorModel::handheldAt(int row) const {
+std::optional<busreading::Handheld> BusMonitorModel::handheldAt(int row) const {
     auto handheld = describe(row).handheld();
     const std::size_t bus = m_rows.at(std::size_t(row)).bus;
     if (handheld && bus < m_contexts.size())
@@ -306,13 +307,13 @@ QVariant BusMonitorModel::data(const QModelIndex& index, int role) const {
     case CommandRole:
         return latin1(describe(index.row()).name());
     case ProtocolRole:
-        return latin1(bus::protocolName(describe(index.row()).protocol()));
+        return latin1(busreading::protocolName(describe(index.row()).protocol()));
     case LocIdRole: {
         const auto locId = locIdAt(index.row());
         return locId ? QVariant::fromValue(uint(*locId)) : QVariant();
     }
     case SearchTextRole: {
-        const bus::FrameDescription& description = describe(index.row());
+        const busreading::FrameDescription& description = describe(index.row());
         return QString::fromStdString(std::string(description.name()) + ' ' + description.detailText() + ' ' +
                                       description.frameText());
     }
@@ -321,7 +322,7 @@ QVariant BusMonitorModel::data(const QModelIndex& index, int role) const {
     }
 }
 
-QVariant BusMonitorModel::display(const bus::FrameDescription& description, const Record& r,
+QVariant BusMonitorModel::display(const busreading::FrameDescription& description, const Record& r,
                                   int column) const {
     switch (column) {
     case TimeColumn:

@@ -21,7 +21,7 @@ namespace stellwerk::ui {
 // A bus the monitor's rows may come from: its name for the bus column and the protocols expected on it.
 struct MonitoredBus {
     QString name;
-    bus::BusProfile profile;
+    busreading::BusProfile profile;
 };
 
 // The bus monitor's rows: a bounded history of compact frame records (no text per frame; the core's
@@ -100,11 +100,11 @@ public:
     static QString directionText(Direction direction);
     int busAt(int row) const;
     // The protocol the frame of `row` belongs to on its bus.
-    bus::Protocol protocolAt(int row) const;
+    busreading::Protocol protocolAt(int row) const;
     // The Loc-ID field of the frame in `row`, read by the core's decoder; nullopt when it has none.
     std::optional<std::uint32_t> locIdAt(int row) const;
     // The MS1 handheld whose frame `row` is (M-CAN), with the name its bus knows for it now.
-    std::optional<bus::Handheld> handheldAt(int row) const;
+    std::optional<busreading::Handheld> handheldAt(int row) const;
     // The command's vocabulary name ("loco.speed"), also for a frame that did not decode.
     std::string commandAt(int row) const;
     // How many frames were decoded so far: each shown or filtered row once while it is in the cache.
@@ -140,12 +140,12 @@ private:
     };
 
     static Record record(const can::CanFrame& frame, Direction direction, qint64 timeMs, int bus);
-    const bus::BusProfile& profileOf(int bus) const;
-    bus::BusContext& contextOf(int bus);
+    const busreading::BusProfile& profileOf(int bus) const;
+    busreading::BusContext& contextOf(int bus);
     void noteBus(int bus);
     void dropOldest(std::size_t count);
-    QVariant display(const bus::FrameDescription& description, const Record& record, int column) const;
-    const bus::FrameDescription& describe(int row) const;
+    QVariant display(const busreading::FrameDescription& description, const Record& record, int column) const;
+    const busreading::FrameDescription& describe(int row) const;
 
     std::deque<Record> m_rows;
     std::deque<Record> m_queued;
@@ -157,7 +157,7 @@ private:
     std::uint64_t m_dropped = 0;
     FrameDescriptions m_descriptions;
     std::vector<MonitoredBus> m_buses;
-    std::vector<bus::BusContext> m_contexts; // by bus number, as far as frames came
+    std::vector<busreading::BusContext> m_contexts; // by bus number, as far as frames came
     int m_busCount = 1;
 };
 

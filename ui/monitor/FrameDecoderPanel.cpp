@@ -1,6 +1,6 @@
 #include "monitor/FrameDecoderPanel.h"
 
-#include "bus/BusContext.h"
+#include "busreading/BusContext.h"
 #include "can/FrameText.h"
 
 #include <QEvent>
@@ -106,8 +106,8 @@ void FrameDecoderPanel::setInput(const QString& text) {
 
 // The lines are one bus, read in order: what earlier frames revealed (an MS1's handles) names later ones.
 void FrameDecoderPanel::refresh() {
-    const bus::BusProfile station = bus::BusProfile::centralStation();
-    bus::BusContext context;
+    const busreading::BusProfile station = busreading::BusProfile::centralStation();
+    busreading::BusContext context;
     QList<QTreeWidgetItem*> items;
     int frames = 0, errors = 0;
     const QStringList lines = m_input->toPlainText().split(QLatin1Char('\n'));
@@ -122,7 +122,7 @@ void FrameDecoderPanel::refresh() {
                                    QString::fromStdString(parsed.error())));
             continue;
         }
-        const bus::FrameDescription description = context.read(parsed->frame, station);
+        const busreading::FrameDescription description = context.read(parsed->frame, station);
         const QString frame = QString::fromStdString(description.frameText());
         QString message = QString::fromStdString(std::string(description.name()));
         if (description.isResponse())

@@ -11,7 +11,7 @@ class QTreeWidget;
 namespace stellwerk::ui {
 
 // A workspace tab where a user pastes frames from a log, a trace or the protocol document and
-// sees each one decoded (CS2 and M-CAN); the decoding itself is the core's bus::FrameDescription.
+// sees each one decoded (CS2 and M-CAN); the decoding itself is the core's busreading::FrameDescription.
 class FrameDecoderPanel final : public QWidget {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(FrameDecoderPanel)

@@ -2,9 +2,9 @@
 
 namespace stellwerk::ui {
 
-const bus::FrameDescription& FrameDescriptions::of(std::uint64_t sequence, const can::CanFrame& frame,
-                                                   const bus::BusProfile& profile,
-                                                   const bus::BusContext* context) const {
+const busreading::FrameDescription& FrameDescriptions::of(std::uint64_t sequence, const can::CanFrame& frame,
+                                                          const busreading::BusProfile& profile,
+                                                          const busreading::BusContext* context) const {
     if (const auto found = m_entries.find(sequence); found != m_entries.end())
         return found->second;
     if (m_order.size() >= Capacity) {
@@ -13,7 +13,7 @@ const bus::FrameDescription& FrameDescriptions::of(std::uint64_t sequence, const
     }
     ++m_decodes;
     m_order.push_back(sequence);
-    return m_entries.emplace(sequence, bus::FrameDescription(frame, profile, context)).first->second;
+    return m_entries.emplace(sequence, busreading::FrameDescription(frame, profile, context)).first->second;
 }
 
 void FrameDescriptions::clear() const {

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "bus/BusContext.h"
-#include "bus/FrameDescription.h"
+#include "busreading/BusContext.h"
+#include "busreading/FrameDescription.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -18,14 +18,15 @@ public:
 
     // The description of the row with this sequence number, whose frame came from a bus with `profile`
     // that has revealed `context` so far (null: nothing); valid until the next call.
-    const bus::FrameDescription& of(std::uint64_t sequence, const can::CanFrame& frame,
-                                    const bus::BusProfile& profile, const bus::BusContext* context) const;
+    const busreading::FrameDescription& of(std::uint64_t sequence, const can::CanFrame& frame,
+                                           const busreading::BusProfile& profile,
+                                           const busreading::BusContext* context) const;
     void clear() const;
     // How many frames were decoded so far (for tests: each row once while it stays in the cache).
     std::uint64_t decodeCount() const { return m_decodes; }
 
 private:
-    mutable std::unordered_map<std::uint64_t, bus::FrameDescription> m_entries;
+    mutable std::unordered_map<std::uint64_t, busreading::FrameDescription> m_entries;
     mutable std::deque<std::uint64_t> m_order;
     mutable std::uint64_t m_decodes = 0;
 };

@@ -67,9 +67,9 @@ TEST(EmbeddedDemoDevices, TheDemoStationsDevicesAreOnItsDeviceBus) {
         WaitMs))
         << app.connection.lastProblem().toStdString();
     ASSERT_EQ(app.connection.buses().size(), 2u);
-    EXPECT_TRUE(app.connection.buses()[0].profile.expects(bus::Protocol::Mcan))
+    EXPECT_TRUE(app.connection.buses()[0].profile.expects(busreading::Protocol::Mcan))
         << "the demo MS1 keeps its bus";
-    EXPECT_TRUE(app.connection.buses()[1].profile.expects(bus::Protocol::Orc));
+    EXPECT_TRUE(app.connection.buses()[1].profile.expects(busreading::Protocol::Orc));
     EXPECT_EQ(app.connection.orcSession()->device(sim::EmbeddedStation::DemoOrcDecoder)->busId, 0x0101)
         << "the demo bindings name the decoder by this bus id";
     EXPECT_TRUE(app.connection.deviceRefusals().isEmpty());

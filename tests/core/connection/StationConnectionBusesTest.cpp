@@ -72,10 +72,10 @@ TEST(StationConnectionBuses, HoldsTheStationsBusAndTheFurtherOnesInOrder) {
     const std::vector<connection::BusInfo> buses = rig.connection.buses();
     ASSERT_EQ(buses.size(), 2u);
     EXPECT_TRUE(buses[0].station);
-    EXPECT_TRUE(buses[0].profile.expects(bus::Protocol::Cs2));
+    EXPECT_TRUE(buses[0].profile.expects(busreading::Protocol::Cs2));
     EXPECT_FALSE(buses[1].station);
     EXPECT_EQ(buses[1].place, QStringLiteral("127.0.0.1:%1").arg(rig.modules.port()));
-    EXPECT_FALSE(buses[1].profile.expects(bus::Protocol::Cs2)) << "no CS2 is expected on a module bus";
+    EXPECT_FALSE(buses[1].profile.expects(busreading::Protocol::Cs2)) << "no CS2 is expected on a module bus";
     EXPECT_EQ(rig.connection.furtherBuses(), QStringList{rig.modules.url()});
 
     rig.connection.disconnectFromStation();
@@ -97,20 +97,20 @@ TEST(StationConnectionBuses, FurtherBusFramesAreShownAndCountedButNeverReachTheS
                      [&](const station::StationUpdates& u) {
                          powers.insert(powers.end(), u.power.begin(), u.power.end());
                      });
-    const std::uint64_t cs2Before = rig.connection.busFrames(0, bus::Protocol::Cs2);
+    const std::uint64_t cs2Before = rig.connection.busFrames(0, busreading::Protocol::Cs2);
 
     rig.modules.send({systemStop(), systemStop()});
     ASSERT_TRUE(waitUntil([&] { return further.received.size() == 2; }, 3000));
     QTest::qWait(200);
     EXPECT_EQ(further.received, (std::vector{systemStop(), systemStop()}));
-    EXPECT_EQ(rig.connection.busFrames(1, bus::Protocol::Foreign), 2u);
-    EXPECT_EQ(rig.connection.busFrames(1, bus::Protocol::Cs2), 0u);
+    EXPECT_EQ(rig.connection.busFrames(1, busreading::Protocol::Foreign), 2u);
+    EXPECT_EQ(rig.connection.busFrames(1, busreading::Protocol::Cs2), 0u);
     EXPECT_EQ(std::count(station.received.begin(), station.received.end(), systemStop()), 0);
     for (const QList<QVariant>& seen : stationFrames)
         for (const can::CanFrame& frame : seen.at(0).value<std::vector<can::CanFrame>>())
             EXPECT_NE(frame, systemStop()) << "the station's bus showed a module frame";
     EXPECT_TRUE(powers.empty()) << "a module frame was read as the station's power";
-    EXPECT_GE(rig.connection.busFrames(0, bus::Protocol::Cs2), cs2Before);
+    EXPECT_GE(rig.connection.busFrames(0, busreading::Protocol::Cs2), cs2Before);
     EXPECT_EQ(rig.connection.state(), State::Ready);
     EXPECT_TRUE(rig.modules.written.isEmpty())
         << "nothing speaks to the modules yet: nothing is written there";
@@ -176,7 +176,7 @@ TEST(StationConnectionBuses, GarbageOnAFurtherBusLeavesTheStationAlone) {
     rig.modules.sendBytes(garbage + transport::encodeFrames(std::vector{systemStop()}));
     ASSERT_TRUE(waitUntil([&] { return further.received.size() == 1; }, 3000));
     EXPECT_EQ(further.received.front(), systemStop());
-    EXPECT_EQ(rig.connection.busFrames(1, bus::Protocol::Foreign), 1u);
+    EXPECT_EQ(rig.connection.busFrames(1, busreading::Protocol::Foreign), 1u);
     QTest::qWait(300);
     EXPECT_EQ(states.count(), 0);
     EXPECT_EQ(rig.connection.state(), State::Ready);

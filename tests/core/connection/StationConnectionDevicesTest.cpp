@@ -143,17 +143,20 @@ TEST(StationConnectionDevices, TheSettingsAreSavedAndReadBack) {
 TEST(StationConnectionDevices, TheBusProfilesExpectTheDevicesWiredToThem) {
     DeviceSettings devices = devicesOn(0);
     devices.roModules.push_back(simulatorModule(2, 1));
-    const bus::BusProfile station =
-        connection::deviceBusProfile(devices, 0, bus::BusProfile::centralStation());
-    EXPECT_TRUE(station.expects(bus::Protocol::Orc));
-    EXPECT_TRUE(station.expects(bus::Protocol::Cs2));
-    EXPECT_FALSE(station.expects(bus::Protocol::Mcan)) << "M-CAN and ORC cannot be told apart (notes O26)";
+    const busreading::BusProfile station =
+        connection::deviceBusProfile(devices, 0, busreading::BusProfile::centralStation());
+    EXPECT_TRUE(station.expects(busreading::Protocol::Orc));
+    EXPECT_TRUE(station.expects(busreading::Protocol::Cs2));
+    EXPECT_FALSE(station.expects(busreading::Protocol::Mcan))
+        << "M-CAN and ORC cannot be told apart (notes O26)";
     EXPECT_EQ(station.roModules(), std::vector{ro::RoProfile::simulator(1).ids});
-    const bus::BusProfile further = connection::deviceBusProfile(devices, 1, bus::BusProfile{});
-    EXPECT_FALSE(further.expects(bus::Protocol::Orc));
+    const busreading::BusProfile further = connection::deviceBusProfile(devices, 1, busreading::BusProfile{});
+    EXPECT_FALSE(further.expects(busreading::Protocol::Orc));
     EXPECT_EQ(further.roModules(), std::vector{ro::RoProfile::simulator(2).ids});
-    const bus::BusProfile plain = connection::deviceBusProfile({}, 0, bus::BusProfile::centralStation());
-    EXPECT_TRUE(plain.expects(bus::Protocol::Mcan)) << "without devices the station's bus stays as it was";
+    const busreading::BusProfile plain =
+        connection::deviceBusProfile({}, 0, busreading::BusProfile::centralStation());
+    EXPECT_TRUE(plain.expects(busreading::Protocol::Mcan))
+        << "without devices the station's bus stays as it was";
 }
 
 // The sessions appear once the further bus is connected, and they work: the module's relays are read and
@@ -163,8 +166,8 @@ TEST(StationConnectionDevices, SessionsAreOpenedOnTheirBusAndReachTheDevices) {
     QSignalSpy changed(&rig.connection, &StationConnection::devicesChanged);
     ASSERT_TRUE(rig.start()) << rig.connection.lastProblem().toStdString();
     EXPECT_GE(changed.count(), 1);
-    EXPECT_TRUE(rig.connection.buses()[1].profile.expects(bus::Protocol::Orc));
-    EXPECT_TRUE(rig.connection.buses()[0].profile.expects(bus::Protocol::Mcan));
+    EXPECT_TRUE(rig.connection.buses()[1].profile.expects(busreading::Protocol::Orc));
+    EXPECT_TRUE(rig.connection.buses()[0].profile.expects(busreading::Protocol::Mcan));
     ASSERT_EQ(rig.connection.roModules().size(), 1u);
 
     ASSERT_TRUE(rig.connection.roModule(QStringLiteral("RO 1"))->setOutput(3, true));
@@ -172,7 +175,7 @@ TEST(StationConnectionDevices, SessionsAreOpenedOnTheirBusAndReachTheDevices) {
     rig.connection.orcSession()->switchOutputs(rig.devices.decoder.busId(), 0x05);
     ASSERT_TRUE(waitUntil([&] { return rig.devices.decoder.outputs() == 0x05; }, 3000));
     EXPECT_TRUE(rig.connection.deviceRefusals().isEmpty());
-    EXPECT_EQ(rig.connection.busFrames(0, bus::Protocol::Ro), 0u)
+    EXPECT_EQ(rig.connection.busFrames(0, busreading::Protocol::Ro), 0u)
         << "nothing of the devices on the station's bus";
 
     rig.connection.disconnectFromStation();
@@ -273,7 +276,7 @@ TEST_P(StationBusWithDevicesGoneFor, TheSessionsGoWithTheStationAndComeBackWithI
     ASSERT_TRUE(waitUntil([&] {
         return rig.connection.state() == State::Ready && devicesWork(rig.connection);
     })) << rig.connection.lastProblem().toStdString();
-    EXPECT_TRUE(rig.connection.buses()[0].profile.expects(bus::Protocol::Orc));
+    EXPECT_TRUE(rig.connection.buses()[0].profile.expects(busreading::Protocol::Orc));
     sessionsGoAndComeBack(
         rig.connection, rig.devices, [&] { rig.server.reset(); }, [&] { return rig.listen(); }, GetParam());
     EXPECT_TRUE(waitUntil([&] { return rig.connection.state() == State::Ready; }));

@@ -3,7 +3,7 @@
 // back as soon as the station is heard again. Each test asserts what the simulated station ends with.
 
 #include "ModelBench.h"
-#include "handhelds/HandheldMaster.h"
+#include "mcanhandhelds/HandheldMaster.h"
 #include "model/RailwayHandhelds.h"
 #include "model/RailwayThrottles.h"
 
@@ -137,7 +137,7 @@ TEST_F(AfterTrouble, ASpeedFromADeviceThrottleIsBroughtBackToo) {
 }
 
 TEST_F(AfterTrouble, ASpeedFromAHandheldIsBroughtBackToo) {
-    handhelds::HandheldMaster master([](const std::vector<can::CanFrame>&) {});
+    mcanhandhelds::HandheldMaster master([](const std::vector<can::CanFrame>&) {});
     RailwayHandhelds handhelds(bench.railway, master);
     failWhileStalled([&] { handhelds.setSpeed(Br86, 500); });
     EXPECT_EQ(stationSpeed(bench, Br86), 0);

@@ -82,8 +82,8 @@ public:
         timing.pollPeriod = 50ms;
         return timing;
     }
-    static bus::BusProfile deviceBusProfile() {
-        bus::BusProfile profile{bus::Protocol::Orc};
+    static busreading::BusProfile deviceBusProfile() {
+        busreading::BusProfile profile{busreading::Protocol::Orc};
         profile.addRoModule(ro::RoProfile::simulator(1).ids);
         return profile;
     }
@@ -100,7 +100,7 @@ public:
     sim::SimulatedOrcEncoder encoder{EncoderUid};
     transport::LoopbackTransport busEnd{QStringLiteral("device bus")};
     transport::LoopbackTransport appEnd{QStringLiteral("app's device bus")};
-    buses::Bus deviceBus{appEnd, deviceBusProfile(), QStringLiteral("devices")};
+    bus::Bus deviceBus{appEnd, deviceBusProfile(), QStringLiteral("devices")};
     std::unique_ptr<orccentral::OrcSession> orc =
         std::make_unique<orccentral::OrcSession>(deviceBus, orcSettings());
     std::unique_ptr<romodule::RoModuleSession> roModule =

@@ -224,7 +224,7 @@ public:
     bool muted = false;
     transport::LoopbackTransport stationEnd{QStringLiteral("station")};
     transport::LoopbackTransport appEnd{QStringLiteral("app")};
-    buses::Bus appBus{appEnd, bus::BusProfile::centralStation()};
+    bus::Bus appBus{appEnd, busreading::BusProfile::centralStation()};
     sim::SimulatedStation station;
     station::StationSession session;
     Railway railway;

@@ -28,8 +28,8 @@ protected:
                          });
     }
 
-    static handhelds::MasterSettings fastMaster() {
-        handhelds::MasterSettings settings;
+    static mcanhandhelds::MasterSettings fastMaster() {
+        mcanhandhelds::MasterSettings settings;
         settings.silentAfter = std::chrono::milliseconds(300);
         settings.masterPollEvery = std::chrono::milliseconds(20);
         settings.masterPolls = 5;
@@ -146,7 +146,7 @@ TEST_F(StationAsMaster, AnMs1PulledOutIsDroppedAndLogsInAgainWhenPluggedBackIn) 
     ms1.unplug();
     ASSERT_TRUE(waitFor([&] {
         return master.master().handhelds().empty() ||
-               master.master().handhelds().front().state == handhelds::HandheldState::Offline;
+               master.master().handhelds().front().state == mcanhandhelds::HandheldState::Offline;
     }));
     ms1.plugIn();
     ASSERT_TRUE(waitFor([&] { return ms1.phase() == SimulatedMs1::Phase::Online; }));

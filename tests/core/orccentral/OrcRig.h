@@ -5,7 +5,7 @@
 // the devices' side of the wire is kept, in order, as the frames' document notation.
 
 #include "EventLoopWait.h"
-#include "buses/Bus.h"
+#include "bus/Bus.h"
 #include "can/FrameText.h"
 #include "orccentral/OrcSession.h"
 #include "sim/SimulatedBus.h"
@@ -104,7 +104,7 @@ public:
 
     transport::LoopbackTransport central{QStringLiteral("central")};
     transport::LoopbackTransport devices{QStringLiteral("devices")};
-    buses::Bus bus{central, bus::BusProfile::openRailCan(), QStringLiteral("ORC")};
+    bus::Bus bus{central, busreading::BusProfile::openRailCan(), QStringLiteral("ORC")};
     sim::SimulatedBus simBus;
     sim::SimulatedOrcBooster booster{BoosterUid};
     sim::SimulatedOrcDecoder decoder;

@@ -77,7 +77,7 @@ TEST(OtherFramesOnTheBus, GarbageAndOtherProgramsAreIgnored) {
     EXPECT_EQ(reported.count(), 0);
     EXPECT_EQ(rig.onlineCount(), 3u);
     EXPECT_EQ(rig.decoder.switchCount(), 0) << "the other throttle switched 0x3005, not the CAN decoder";
-    EXPECT_EQ(rig.bus.received(bus::Protocol::Cs2), 2u);
+    EXPECT_EQ(rig.bus.received(busreading::Protocol::Cs2), 2u);
 }
 
 } // namespace

@@ -61,7 +61,7 @@ protected:
         EXPECT_TRUE(sim.printed("OpenRailCAN: a booster, 2 decoder(s), 1 encoder(s) on the station's bus"));
         wire = std::make_unique<transport::TcpTransport>(
             transport::TcpSettings{QStringLiteral("127.0.0.1"), port, {}});
-        bus = std::make_unique<buses::Bus>(*wire, bus::BusProfile::openRailCan(), QStringLiteral("CS2"));
+        bus = std::make_unique<bus::Bus>(*wire, busreading::BusProfile::openRailCan(), QStringLiteral("CS2"));
         central = std::make_unique<OrcSession>(*bus, fastSettings());
         wire->open();
         ASSERT_TRUE(waitFor([&] { return wire->state() == transport::Transport::State::Connected; }));
@@ -77,7 +77,7 @@ protected:
                                "--orc-decoders", "2", "--orc-encoders", "1", "--orc-encoder-toggle", "200"} +
                    Quiet};
     std::unique_ptr<transport::TcpTransport> wire;
-    std::unique_ptr<buses::Bus> bus;
+    std::unique_ptr<bus::Bus> bus;
     std::unique_ptr<OrcSession> central;
 };
 
@@ -147,11 +147,11 @@ TEST(SimProgramOrc, TheThrottleDrivesItsLocoNowAndThen) {
     const std::uint16_t port = sim.tcpPort();
     ASSERT_NE(port, 0) << sim.output().toStdString();
     transport::TcpTransport wire(transport::TcpSettings{QStringLiteral("127.0.0.1"), port, {}});
-    buses::Bus bus(wire, bus::BusProfile::openRailCan(), QStringLiteral("CS2"));
+    bus::Bus bus(wire, busreading::BusProfile::openRailCan(), QStringLiteral("CS2"));
     OrcSession central(bus, fastSettings());
     std::vector<orc::LocoSpeed> speeds;
     QObject context;
-    bus.subscribe(bus::Protocol::Orc, &context, [&speeds](const std::vector<can::CanFrame>& frames) {
+    bus.subscribe(busreading::Protocol::Orc, &context, [&speeds](const std::vector<can::CanFrame>& frames) {
         for (const can::CanFrame& frame : frames)
             if (const auto message = orc::decode(frame); std::holds_alternative<orc::LocoSpeed>(message))
                 speeds.push_back(std::get<orc::LocoSpeed>(message));

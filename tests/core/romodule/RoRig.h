@@ -1,7 +1,7 @@
 #pragma once
 
 #include "EventLoopWait.h"
-#include "buses/Bus.h"
+#include "bus/Bus.h"
 #include "romodule/RoModuleSession.h"
 #include "sim/SimulatedBus.h"
 #include "sim/SimulatedRoModule.h"
@@ -14,7 +14,7 @@ namespace stellwerk::romodule::test {
 
 // A station's bus with one simulated RO module on it, reached by Stellwerk through a real (loopback)
 // transport: the module is a peer of a SimulatedBus whose outside is the far end of the loopback, and the
-// session sits on a buses::Bus over the near end. Records what the session confirmed and what failed.
+// session sits on a bus::Bus over the near end. Records what the session confirmed and what failed.
 struct RoRig {
     explicit RoRig(SessionTiming timing = quickTiming(),
                    ro::RoProfile roProfile = ro::RoProfile::simulator(1))
@@ -26,9 +26,9 @@ struct RoRig {
             [this](const std::vector<can::CanFrame>& frames) { simulatedBus.putFromOutside(frames); });
         QObject::connect(&simulatedBus, &sim::SimulatedBus::framesCarried, &busEnd,
                          [this](const std::vector<can::CanFrame>& frames) { busEnd.sendBatch(frames); });
-        bus::BusProfile busProfile = bus::BusProfile::centralStation();
+        busreading::BusProfile busProfile = busreading::BusProfile::centralStation();
         busProfile.addRoModule(profile.ids);
-        bus = std::make_unique<buses::Bus>(appEnd, busProfile, QStringLiteral("CS2"));
+        bus = std::make_unique<bus::Bus>(appEnd, busProfile, QStringLiteral("CS2"));
         session = std::make_unique<RoModuleSession>(*bus, profile, timing);
         QObject::connect(session.get(), &RoModuleSession::outputsFailed, session.get(),
                          [this](std::uint32_t relays, const QString&) { failed |= relays; });
@@ -69,7 +69,7 @@ struct RoRig {
     sim::SimulatedRoModule module;
     transport::LoopbackTransport appEnd{QStringLiteral("stellwerk")};
     transport::LoopbackTransport busEnd{QStringLiteral("ro-bus")};
-    std::unique_ptr<buses::Bus> bus;
+    std::unique_ptr<bus::Bus> bus;
     std::unique_ptr<RoModuleSession> session;
     std::uint32_t failed = 0;      // relays whose change the session reported as failed
     std::uint32_t changedSeen = 0; // inputs reported with their change flag

@@ -3,7 +3,7 @@
 // which the simulator prints.
 #include "EventLoopWait.h"
 #include "SimProgram.h"
-#include "buses/Bus.h"
+#include "bus/Bus.h"
 #include "romodule/RoModuleSession.h"
 #include "transport/TcpTransport.h"
 
@@ -34,9 +34,9 @@ TEST(SimProgramRo, ARelayOfTheSecondModuleSwitchedOverTcp) {
 
     transport::TcpTransport wire(transport::TcpSettings{QStringLiteral("127.0.0.1"), port, {}});
     const ro::RoProfile module = ro::RoProfile::simulator(2);
-    bus::BusProfile profile = bus::BusProfile::centralStation();
+    busreading::BusProfile profile = busreading::BusProfile::centralStation();
     profile.addRoModule(ro::RoProfile::simulator(1).ids).addRoModule(module.ids);
-    buses::Bus bus(wire, profile, QStringLiteral("CS2"));
+    bus::Bus bus(wire, profile, QStringLiteral("CS2"));
     SessionTiming timing;
     timing.answerTimeout = std::chrono::milliseconds(200); // a process and a TCP hop away
     RoModuleSession session(bus, module, timing);

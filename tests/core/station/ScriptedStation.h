@@ -190,7 +190,7 @@ struct Bench {
     }
 
     transport::LoopbackTransport app{QStringLiteral("app")};
-    buses::Bus bus{app, bus::BusProfile::centralStation()};
+    bus::Bus bus{app, busreading::BusProfile::centralStation()};
     ScriptedStation station;
     StationSession session;
 };

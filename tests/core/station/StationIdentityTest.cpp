@@ -52,8 +52,8 @@ TEST(StationIdentity, StandardFramesOfAnotherProtocolAreIgnored) {
     const std::uint16_t own = bench.session.identity().hash();
     const std::uint8_t stopLike[5] = {};
     bench.station.sendToApp({can::CanFrame::standard(own & 0x7FF, stopLike)});
-    ASSERT_TRUE(waitFor([&] { return bench.bus.received(bus::Protocol::Foreign) == 1; }));
-    EXPECT_EQ(bench.bus.received(bus::Protocol::Cs2), 0u);
+    ASSERT_TRUE(waitFor([&] { return bench.bus.received(busreading::Protocol::Foreign) == 1; }));
+    EXPECT_EQ(bench.bus.received(busreading::Protocol::Cs2), 0u);
     EXPECT_EQ(bench.session.counters().frames, 0u) << "the session never saw it";
     EXPECT_EQ(bench.session.counters().undecodable, 0u);
     EXPECT_EQ(changed.count(), 0);

@@ -7,8 +7,8 @@
 #include "EmbeddedStationSupport.h"
 #include "EventLoopWait.h"
 #include "handheldpanel/HandheldTableModel.h"
-#include "handhelds/HandheldBook.h"
-#include "handhelds/HandheldMaster.h"
+#include "mcanhandhelds/HandheldBook.h"
+#include "mcanhandhelds/HandheldMaster.h"
 #include "model/Railway.h"
 #include "shell/MainWindow.h"
 #include "shell/RailwayBinding.h"
@@ -49,7 +49,7 @@ void clearSettings() {
 }
 
 connection::ConnectionSettings withBook(connection::ConnectionSettings settings,
-                                        handhelds::HandheldBook& book) {
+                                        mcanhandhelds::HandheldBook& book) {
     settings.handhelds.book = &book;
     return settings;
 }
@@ -90,7 +90,7 @@ protected:
 
     Translations translations;
     // Where the program keeps the handhelds' stacks and names (app/gui does the same).
-    handhelds::SettingsHandheldBook book{QStringLiteral("Stellwerk"), QStringLiteral("Stellwerk")};
+    mcanhandhelds::SettingsHandheldBook book{QStringLiteral("Stellwerk"), QStringLiteral("Stellwerk")};
     connection::StationConnection connection{withBook(support::withEmbeddedStation(), book)};
     std::unique_ptr<MainWindow> window;
     std::unique_ptr<RailwayBinding> railways;
@@ -209,7 +209,7 @@ TEST_F(PanelAsMaster, UncheckingActAsMasterMakesStellwerkOnlyWatch) {
     ASSERT_TRUE(waitUntil([&] { return !connection.handhelds()->isMaster(); }, WaitMs));
     EXPECT_EQ(panel->roleText(), QStringLiteral("Stellwerk only watches the handhelds, as chosen."));
     EXPECT_FALSE(QSettings(QStringLiteral("Stellwerk"), QStringLiteral("Stellwerk"))
-                     .value(QStringLiteral("handhelds/actAsMaster"), true)
+                     .value(QStringLiteral("mcanhandhelds/actAsMaster"), true)
                      .toBool())
         << "the choice is kept";
     EXPECT_TRUE(choice->isEnabled()) << "the person may choose again";

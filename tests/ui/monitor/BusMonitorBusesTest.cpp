@@ -29,8 +29,8 @@ using test::systemStop;
 namespace {
 
 std::vector<MonitoredBus> stationAndModules() {
-    return {{QStringLiteral("station"), bus::BusProfile::centralStation()},
-            {QStringLiteral("127.0.0.1:7000"), bus::BusProfile{}}};
+    return {{QStringLiteral("station"), busreading::BusProfile::centralStation()},
+            {QStringLiteral("127.0.0.1:7000"), busreading::BusProfile{}}};
 }
 
 // The embedded station and a module bus, with the monitor watching both.
@@ -65,8 +65,9 @@ TEST(BusMonitorModel, ARowIsReadWithTheProtocolsOfItsBus) {
     EXPECT_EQ(model.busAt(1), 1);
     EXPECT_EQ(cell(model, 0, BusMonitorModel::BusColumn), QStringLiteral("station"));
     EXPECT_EQ(cell(model, 1, BusMonitorModel::BusColumn), QStringLiteral("127.0.0.1:7000"));
-    EXPECT_EQ(model.protocolAt(0), bus::Protocol::Cs2);
-    EXPECT_EQ(model.protocolAt(1), bus::Protocol::Foreign) << "the same bytes on a module bus are no CS2";
+    EXPECT_EQ(model.protocolAt(0), busreading::Protocol::Cs2);
+    EXPECT_EQ(model.protocolAt(1), busreading::Protocol::Foreign)
+        << "the same bytes on a module bus are no CS2";
     EXPECT_EQ(cell(model, 0, 0, BusMonitorModel::ProtocolRole), QStringLiteral("cs2"));
     EXPECT_EQ(cell(model, 1, 0, BusMonitorModel::ProtocolRole), QStringLiteral("foreign"));
     EXPECT_EQ(cell(model, 0, BusMonitorModel::MessageColumn), QStringLiteral("system.stop"));
@@ -85,8 +86,8 @@ TEST(BusMonitorModel, ABusNobodyNamedIsCalledByItsNumber) {
     EXPECT_EQ(model.busCount(), 4);
     EXPECT_EQ(counted.count(), 1);
     EXPECT_EQ(cell(model, 1, BusMonitorModel::BusColumn), QStringLiteral("can3"));
-    EXPECT_EQ(model.protocolAt(0), bus::Protocol::Cs2) << "bus 0 is the station's";
-    EXPECT_EQ(model.protocolAt(1), bus::Protocol::Foreign);
+    EXPECT_EQ(model.protocolAt(0), busreading::Protocol::Cs2) << "bus 0 is the station's";
+    EXPECT_EQ(model.protocolAt(1), busreading::Protocol::Foreign);
     model.clear();
     EXPECT_EQ(model.busCount(), 1);
     EXPECT_EQ(counted.count(), 2);
@@ -101,11 +102,11 @@ TEST(BusMonitorFilter, TheProtocolFilterKeepsOnlyThatProtocolsRows) {
     for (int bus : {0, 1, 0})
         model.addFrames(frames, Direction::Received, QDateTime::currentDateTime(), bus);
     model.flush();
-    filter.setProtocol(bus::Protocol::Foreign);
+    filter.setProtocol(busreading::Protocol::Foreign);
     ASSERT_TRUE(QTest::qWaitFor([&] { return !filter.isScanning(); }));
     ASSERT_EQ(filter.rowCount(), 1);
     EXPECT_EQ(model.busAt(filter.mapToSource(filter.index(0, 0)).row()), 1);
-    filter.setProtocol(bus::Protocol::Cs2);
+    filter.setProtocol(busreading::Protocol::Cs2);
     ASSERT_TRUE(QTest::qWaitFor([&] { return !filter.isScanning(); }));
     EXPECT_EQ(filter.rowCount(), 2);
     filter.setProtocol(std::nullopt);
@@ -161,12 +162,12 @@ TEST(BusMonitorPanel, ARecordingKeepsEachFramesBus) {
     TwoBusesOnScreen screen;
     ASSERT_TRUE(screen.start());
     ASSERT_TRUE(screen.panel.startRecording(path).isEmpty());
-    const std::uint64_t stationFrames = screen.connection.busFrames(0, bus::Protocol::Cs2);
+    const std::uint64_t stationFrames = screen.connection.busFrames(0, busreading::Protocol::Cs2);
     screen.modules.send({systemStop()});
     ASSERT_TRUE(QTest::qWaitFor(
         [&] {
-            return screen.connection.busFrames(1, bus::Protocol::Foreign) == 1 &&
-                   screen.connection.busFrames(0, bus::Protocol::Cs2) > stationFrames;
+            return screen.connection.busFrames(1, busreading::Protocol::Foreign) == 1 &&
+                   screen.connection.busFrames(0, busreading::Protocol::Cs2) > stationFrames;
         },
         10000));
     screen.panel.stopRecording();
@@ -188,7 +189,7 @@ TEST(BusMonitorPanel, ARecordingKeepsEachFramesBus) {
         if (rows.busAt(row) == 1) {
             ++onCan1;
             EXPECT_EQ(cell(rows, row, BusMonitorModel::BusColumn), QStringLiteral("can1"));
-            EXPECT_EQ(rows.protocolAt(row), bus::Protocol::Foreign);
+            EXPECT_EQ(rows.protocolAt(row), busreading::Protocol::Foreign);
         }
     EXPECT_EQ(onCan1, 1);
     EXPECT_FALSE(screen.panel.table()->isColumnHidden(BusMonitorModel::BusColumn));
@@ -225,8 +226,8 @@ TEST(BusMonitorPanel, SavesTheTwoBusScreenshotsWhenAsked) {
             [&] { return screen.connection.state() == connection::StationConnection::State::Ready; }, 10000));
         screen.modules.send(
             {frame("00004711 5 00 00 00 00 00"), frame("1C400300 4 00 01 00 01"), frame("1C410300 2 01 00")});
-        ASSERT_TRUE(
-            QTest::qWaitFor([&] { return screen.connection.busFrames(1, bus::Protocol::Foreign) == 3; }));
+        ASSERT_TRUE(QTest::qWaitFor(
+            [&] { return screen.connection.busFrames(1, busreading::Protocol::Foreign) == 3; }));
         screen.panel.resize(1300, 420);
         screen.panel.show();
         QTest::qWait(300);

@@ -68,7 +68,7 @@ TEST(BusMonitorMcan, RowsAreDescribedWithWhatTheirBusRevealedInArrivalOrder) {
     EXPECT_EQ(cell(model, StatusQueryRow, BusMonitorModel::MessageColumn),
               QStringLiteral("mcan.status-query"));
     EXPECT_EQ(cell(model, StatusQueryRow, 0, BusMonitorModel::ProtocolRole), QStringLiteral("mcan"));
-    EXPECT_EQ(model.protocolAt(TakeRow), bus::Protocol::Mcan);
+    EXPECT_EQ(model.protocolAt(TakeRow), busreading::Protocol::Mcan);
     EXPECT_TRUE(namesTheLoco(cell(model, TakeRow, BusMonitorModel::DetailsColumn)))
         << cell(model, TakeRow, BusMonitorModel::DetailsColumn).toStdString();
     EXPECT_EQ(model.index(TakeRow, 0).data(BusMonitorModel::GroupRole).toInt(),
