@@ -142,6 +142,7 @@ TEST_P(FurtherBusGoneFor, TheStationStaysReadyAndTheBusComesBack) {
     ASSERT_TRUE(rig.start());
     QSignalSpy states(&rig.connection, &StationConnection::stateChanged);
     QSignalSpy problems(&rig.connection, &StationConnection::problem);
+    QSignalSpy busesChanged(&rig.connection.buses(), &ConnectionBuses::busesChanged);
     BusLog further(rig.connection, 1);
 
     rig.modules.stop();
@@ -160,6 +161,8 @@ TEST_P(FurtherBusGoneFor, TheStationStaysReadyAndTheBusComesBack) {
     rig.modules.send({systemStop()});
     ASSERT_TRUE(waitUntil([&] { return further.received.size() == 1; }, 3000));
     EXPECT_EQ(states.count(), 0) << "the station's state never changed";
+    EXPECT_EQ(busesChanged.count(), 0) << "the same bus, away and back: the list never changed";
+    EXPECT_EQ(rig.connection.buses().list().size(), 2u);
     EXPECT_TRUE(rig.modules.written.isEmpty());
 }
 
