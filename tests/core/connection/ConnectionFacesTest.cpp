@@ -1,8 +1,8 @@
 // The faces a StationConnection hands out (issue 33): each follows the connection as it opens and closes,
 // and tells its own users, so that a panel holding one face needs nothing else of the connection.
+#include "EmbeddedStationSupport.h"
 #include "connection/StationConnection.h"
 #include "mcanhandhelds/HandheldMaster.h"
-#include "EmbeddedStationSupport.h"
 #include "ro/RoProfile.h"
 
 #include <QSignalSpy>
@@ -111,13 +111,13 @@ TEST(ConnectionFaces, TheHandheldsFaceBringsAMasterWithEachConnectionAndTakesItA
 }
 
 // The role is the person's choice, not the connection's: chosen while disconnected, the next master
-// follows it from its start; chosen while connected, the master follows at once.
+// follows it from its start; chosen while connected, the master follows at once. (A station nobody
+// answers on: no Central Station and no other master to defer to.)
 TEST(ConnectionFaces, TheRoleChosenOnTheHandheldsFaceHoldsForTheNextMaster) {
     StationConnection connection{support::withEmbeddedStation()};
     ConnectionHandhelds& handhelds = connection.handhelds();
     handhelds.setRole(HandheldRole::Watch);
-    connection.connectToSimulator();
-    ASSERT_TRUE(ready(connection));
+    connection.connectTo(Unreachable);
     ASSERT_NE(handhelds.master(), nullptr);
     EXPECT_EQ(handhelds.role(), HandheldRole::Watch);
     EXPECT_EQ(handhelds.master()->watching(), mcanhandhelds::Watching::Asked);
@@ -126,6 +126,10 @@ TEST(ConnectionFaces, TheRoleChosenOnTheHandheldsFaceHoldsForTheNextMaster) {
     handhelds.setRole(HandheldRole::Master);
     EXPECT_TRUE(handhelds.master()->isMaster());
     EXPECT_EQ(handhelds.master()->watching(), mcanhandhelds::Watching::No);
+
+    connection.connectTo(Unreachable);
+    EXPECT_EQ(handhelds.role(), HandheldRole::Master);
+    EXPECT_TRUE(handhelds.master()->isMaster()) << "the new master takes the role chosen before";
 }
 
 // A further bus that goes away and comes back is the same bus: the list stays, only its state changes.

@@ -27,12 +27,16 @@ namespace {
 template <typename Panel>
 concept TakesTheWholeConnection = requires(Panel& panel, StationConnection* connection) {
     panel.setConnection(connection);
-} || requires(Panel& panel, StationConnection* connection) { panel.setBuses(connection); } ||
-                                  requires(Panel& panel, StationConnection* connection) {
-                                      panel.setDevices(connection);
-                                  } || requires(Panel& panel, StationConnection* connection) {
-                                      panel.setHandhelds(connection);
-                                  };
+}
+|| requires(Panel& panel, StationConnection* connection) {
+    panel.setBuses(connection);
+}
+|| requires(Panel& panel, StationConnection* connection) {
+    panel.setDevices(connection);
+}
+|| requires(Panel& panel, StationConnection* connection) {
+    panel.setHandhelds(connection);
+};
 
 static_assert(!TakesTheWholeConnection<BusMonitorPanel>);
 static_assert(!TakesTheWholeConnection<TrafficStatus>);
@@ -43,8 +47,8 @@ static_assert(std::is_invocable_v<decltype(&BusMonitorPanel::setBuses), BusMonit
                                   connection::ConnectionBuses*>);
 static_assert(std::is_invocable_v<decltype(&TrafficStatus::setBuses), TrafficStatus&,
                                   const connection::ConnectionBuses*>);
-static_assert(std::is_invocable_v<decltype(&DevicesPanel::setDevices), DevicesPanel&,
-                                  connection::ConnectionDevices*>);
+static_assert(
+    std::is_invocable_v<decltype(&DevicesPanel::setDevices), DevicesPanel&, connection::ConnectionDevices*>);
 static_assert(std::is_invocable_v<decltype(&HandheldsPanel::setHandhelds), HandheldsPanel&,
                                   connection::ConnectionHandhelds*>);
 
@@ -77,10 +81,12 @@ TEST_F(PanelFaces, TheHandheldsPanelLetsGoOfTheMasterWhenTheConnectionCloses) {
     EXPECT_EQ(panel.roleText(), notConnected);
     ASSERT_TRUE(connectToTheDemo());
     EXPECT_NE(panel.roleText(), notConnected);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.table().rowCount() == 1; }, ReadyMs)) << "the demo's MS1";
 
     connection.disconnectFromStation();
     EXPECT_EQ(panel.roleText(), notConnected) << "told by the face at once, not by the station's state";
-    EXPECT_EQ(panel.table().rowCount(), 0);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return panel.table().rowCount() == 0; }, ReadyMs))
+        << "the demo's MS1 went";
 }
 
 TEST_F(PanelFaces, TheDevicesPanelSaysNotConnectedOnceTheConnectionCloses) {
@@ -88,7 +94,8 @@ TEST_F(PanelFaces, TheDevicesPanelSaysNotConnectedOnceTheConnectionCloses) {
     panel.setDevices(&connection.devices());
     EXPECT_EQ(panel.summaryText(), QStringLiteral("Not connected."));
     ASSERT_TRUE(connectToTheDemo());
-    EXPECT_TRUE(panel.summaryText().contains(QStringLiteral("RO modules:"))) << panel.summaryText().toStdString();
+    EXPECT_TRUE(panel.summaryText().contains(QStringLiteral("RO modules:")))
+        << panel.summaryText().toStdString();
     EXPECT_TRUE(panel.noteText().contains(QStringLiteral("demo station brings its own devices")));
     EXPECT_GT(panel.table().rowCount(), 0) << "the demo's RO module";
 
