@@ -33,6 +33,7 @@
 
 namespace {
 
+using stellwerk::connection::ConnectionDevices;
 using stellwerk::connection::StationConnection;
 
 // How long a screenshot waits for the station to be ready before it shows whatever state it reached.
@@ -234,18 +235,18 @@ void reportAndQuit(stellwerk::ui::MainWindow& window, const StationConnection& c
 // The railway's accessories and contacts that devices switch and light, and the locos OpenRailCAN throttles
 // drive, following the connection's device sessions as they come and go. The bindings are read anew for
 // every railway: the Devices panel may have changed them.
-void bindDevices(StationConnection& connection, stellwerk::model::Railway& railway, QSettings& saved) {
+void bindDevices(ConnectionDevices& connectionDevices, stellwerk::model::Railway& railway, QSettings& saved) {
     auto* devices = new stellwerk::model::RailwayDevices(railway,
-                                                         connection.address().isEmpty()
+                                                         connectionDevices.onLocalStation()
                                                              ? stellwerk::model::DeviceBindings::demo()
                                                              : stellwerk::model::DeviceBindings::load(saved),
                                                          &railway);
     auto* throttles = new stellwerk::model::RailwayThrottles(railway, &railway);
-    const auto follow = [&connection, devices, throttles] {
-        devices->setSessions(connection.orcSession(), connection.roModules());
-        throttles->setSession(connection.orcSession());
+    const auto follow = [&connectionDevices, devices, throttles] {
+        devices->setSessions(connectionDevices.orcSession(), connectionDevices.roModules());
+        throttles->setSession(connectionDevices.orcSession());
     };
-    QObject::connect(&connection, &StationConnection::devicesChanged, devices, follow);
+    QObject::connect(&connectionDevices, &ConnectionDevices::devicesChanged, devices, follow);
     follow();
 }
 
@@ -285,7 +286,7 @@ int main(int argc, char* argv[]) {
     QObject::connect(&railways, &stellwerk::ui::RailwayBinding::railwayChanged, &railways,
                      [&connection, &deviceFile](stellwerk::model::Railway* railway) {
                          if (railway)
-                             bindDevices(connection, *railway, deviceFile);
+                             bindDevices(connection.devices(), *railway, deviceFile);
                      });
     QObject::connect(
         &railways, &stellwerk::ui::RailwayBinding::railwayChanged, &railways,

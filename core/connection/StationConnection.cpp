@@ -51,12 +51,23 @@ StationCounts StationCounts::of(const station::StartupResult& result) {
 }
 
 StationConnection::StationConnection(ConnectionSettings settings, QObject* parent)
-    : QObject(parent), settings_(std::move(settings)),
-      pictures_(new LocomotivePictures(settings_.pictures, this)) {}
+    : QObject(parent), settings_(std::move(settings)), buses_(new ConnectionBuses(this)),
+      devices_(new ConnectionDevices(settings_.devices, settings_.localStationDevices, this)),
+      handhelds_(new ConnectionHandhelds(settings_.handhelds, this)),
+      pictures_(new LocomotivePictures(settings_.pictures, this)) {
+    connect(devices_, &ConnectionDevices::problem, this, &StationConnection::report);
+}
 
+// The faces let go of the link without a word: nobody is told about a connection that goes with its owner.
 StationConnection::~StationConnection() {
-    if (link_)
-        link_->detach(this);
+    if (!link_)
+        return;
+    link_->detach(this);
+    for (QObject* face : std::initializer_list<QObject*>{buses_, devices_, handhelds_})
+        face->blockSignals(true);
+    buses_->release();
+    devices_->release();
+    handhelds_->release();
     link_.reset();
 }
 
@@ -71,11 +82,8 @@ void StationConnection::connectTo(const QString& url, const QStringList& further
         return fail(station.error());
     }
     std::vector<transport::TransportSettings> further;
-    activeDevices_ = settings_.devices;
-    if (link_->local && settings_.localStationDevices) {
+    if (devices_->choose(link_->local != nullptr))
         further = link_->local->deviceBuses();
-        activeDevices_ = *settings_.localStationDevices;
-    }
     for (const QString& address : furtherBuses) {
         const auto settings = furtherBusSettings(address);
         if (!settings) {
@@ -125,11 +133,9 @@ StationConnection::furtherBusSettings(const QString& address) {
 // Ends the connection; its parts go at the next turn of the event loop, since this may be called from
 // inside one of their signals.
 void StationConnection::disconnectFromStation() {
-    const bool hadBuses = link_ && !link_->buses.empty();
-    const bool hadDevices =
-        link_ && link_->devices && (link_->devices->orc() || !link_->devices->roModules().empty());
     if (link_) {
         link_->detach(this); // closing the transports below tears the device sessions down
+        devices_->release();
         if (link_->session)
             link_->session->liveness().stop();
         for (const auto& transport : link_->transports)
@@ -145,10 +151,8 @@ void StationConnection::disconnectFromStation() {
     lastProblem_.clear();
     everConnected_ = lost_ = silent_ = loading_ = loaded_ = reload_ = false;
     updateState();
-    if (hadBuses)
-        emit busesChanged();
-    if (hadDevices)
-        emit devicesChanged();
+    buses_->release();
+    handhelds_->release();
 }
 
 std::uint16_t StationConnection::embeddedPort() const {
@@ -159,48 +163,13 @@ std::uint16_t StationConnection::embeddedPort() const {
     return tcp ? tcp->port : 0;
 }
 
-transport::TransportCounters StationConnection::transportCounters() const {
-    return link_ && !link_->transports.empty() ? link_->stationTransport().counters()
-                                               : transport::TransportCounters{};
-}
-
-std::vector<BusInfo> StationConnection::buses() const {
-    std::vector<BusInfo> buses;
-    if (link_)
-        for (const auto& bus : link_->buses)
-            buses.push_back({bus->name(), bus->profile(), bus.get() == link_->buses.front().get()});
-    return buses;
-}
-
-bool StationConnection::isBusConnected(int index) const {
-    return link_ && index >= 0 && std::size_t(index) < link_->transports.size() &&
-           link_->transports[std::size_t(index)]->state() == transport::Transport::State::Connected;
-}
-
-std::uint64_t StationConnection::busFrames(int index, busreading::Protocol protocol) const {
-    if (!link_ || index < 0 || std::size_t(index) >= link_->buses.size())
-        return 0;
-    return link_->buses[std::size_t(index)]->received(protocol);
-}
-
 station::StationSession* StationConnection::session() const {
     return link_ ? link_->session.get() : nullptr;
 }
 
-mcanhandhelds::HandheldMaster* StationConnection::handhelds() const {
-    return link_ && link_->handhelds ? &link_->handhelds->master() : nullptr;
-}
-
-void StationConnection::setHandheldRole(HandheldRole role) {
-    settings_.handhelds.role = role;
-    if (link_ && link_->handhelds)
-        link_->handhelds->setRole(role,
-                                  loaded_ ? result_.devices : std::vector<station::DeviceDescription>{});
-}
-
 void StationConnection::open(std::unique_ptr<transport::Transport> station,
                              const std::vector<transport::TransportSettings>& further) {
-    const DeviceSettings& devices = activeDevices_;
+    const DeviceSettings& devices = devices_->active();
     link_->addBus(std::move(station), deviceBusProfile(devices, 0, busreading::BusProfile::centralStation()),
                   endpoint_.place);
     for (const transport::TransportSettings& settings : further)
@@ -208,43 +177,15 @@ void StationConnection::open(std::unique_ptr<transport::Transport> station,
                       deviceBusProfile(devices, int(link_->buses.size()), settings_.furtherBusProfile),
                       StationEndpoint::of(settings).place);
     link_->session = std::make_unique<station::StationSession>(link_->stationBus(), settings_.session);
-    link_->handhelds = std::make_unique<HandheldConnection>(link_->stationBus(), settings_.handhelds);
     watchTransport();
-    watchBuses();
-    openDevices();
+    watchBusProblems();
+    handhelds_->open(*link_);
+    devices_->open(*link_);
+    buses_->follow(*link_);
     updateState();
-    emit busesChanged();
     emit sessionStarted(link_->session.get());
     for (const auto& transport : link_->transports)
         transport->open();
-}
-
-// The device sessions of the settings, made as their buses connect; refusals are told at once.
-void StationConnection::openDevices() {
-    std::vector<bus::Bus*> buses;
-    for (const auto& bus : link_->buses)
-        buses.push_back(bus.get());
-    link_->devices = std::make_unique<DeviceSessions>(activeDevices_, std::move(buses));
-    connect(link_->devices.get(), &DeviceSessions::sessionsChanged, this, &StationConnection::devicesChanged);
-    connect(link_->devices.get(), &DeviceSessions::problem, this, &StationConnection::report);
-    for (const QString& refusal : link_->devices->refusals())
-        report(refusal);
-}
-
-orccentral::OrcSession* StationConnection::orcSession() const {
-    return link_ && link_->devices ? link_->devices->orc() : nullptr;
-}
-
-std::vector<romodule::RoModuleSession*> StationConnection::roModules() const {
-    return link_ && link_->devices ? link_->devices->roModules() : std::vector<romodule::RoModuleSession*>{};
-}
-
-romodule::RoModuleSession* StationConnection::roModule(const QString& name) const {
-    return link_ && link_->devices ? link_->devices->roModule(name) : nullptr;
-}
-
-QStringList StationConnection::deviceRefusals() const {
-    return link_ && link_->devices ? link_->devices->refusals() : QStringList{};
 }
 
 void StationConnection::fail(const QString& reason) {
@@ -256,23 +197,16 @@ void StationConnection::fail(const QString& reason) {
 void StationConnection::watchTransport() {
     transport::Transport* station = &link_->stationTransport();
     connect(station, &transport::Transport::stateChanged, this, &StationConnection::transportStateChanged);
-    connect(&link_->stationBus(), &bus::Bus::framesSeen, this, &StationConnection::framesSeen);
     station::Liveness& liveness = link_->session->liveness();
     connect(&liveness, &station::Liveness::stationSilent, this, &StationConnection::stationSilent);
     connect(&liveness, &station::Liveness::stationRecovered, this, &StationConnection::stationRecovered);
 }
 
-// Every bus's frames for the monitor; the problems of every bus for the person (a further bus that goes
-// away does not change the station's state: its transport tries again by itself).
-void StationConnection::watchBuses() {
-    for (std::size_t index = 0; index < link_->buses.size(); ++index) {
-        connect(link_->transports[index].get(), &transport::Transport::problem, this,
-                &StationConnection::report);
-        connect(link_->buses[index].get(), &bus::Bus::framesSeen, this,
-                [this, index](const std::vector<can::CanFrame>& frames, bool outgoing) {
-                    emit busFramesSeen(int(index), frames, outgoing);
-                });
-    }
+// The problems of every bus for the person (a further bus that goes away does not change the station's
+// state: its transport tries again by itself).
+void StationConnection::watchBusProblems() {
+    for (const auto& transport : link_->transports)
+        connect(transport.get(), &transport::Transport::problem, this, &StationConnection::report);
 }
 
 void StationConnection::transportStateChanged(transport::Transport::State state) {

@@ -2,6 +2,9 @@
 
 #include "base/Expected.h"
 #include "busreading/FrameClassifier.h"
+#include "connection/ConnectionBuses.h"
+#include "connection/ConnectionDevices.h"
+#include "connection/ConnectionHandhelds.h"
 #include "connection/DeviceSettings.h"
 #include "connection/HandheldConnection.h"
 #include "connection/LocomotivePictures.h"
@@ -70,20 +73,14 @@ struct ConnectionSettings {
     std::optional<DeviceSettings> localStationDevices{};
 };
 
-// One bus of the connection, as the monitor shows it.
-struct BusInfo {
-    QString place; // "socketcan/can1", "127.0.0.1:15731"; the station's place on the station's bus
-    busreading::BusProfile profile; // what is expected on it
-    bool station = false;           // the bus the command station is reached by (always bus 0)
-};
-
 // The one object the app holds to be connected to a station. Given an address (udp://, tcp://, can://,
 // see transport/TransportAddress.h) it opens the transport, runs the station session's start-up and
 // watches liveness; given none it starts the program's local station (the embedded simulated CS2, from
 // the settings' factory) and reaches it over a real transport. Further buses (a USB-CAN adapter wired to
 // relay modules) are held open beside the station's; a bus that goes away is reported and reconnected by
 // its transport without touching the station's state.
-// Its state is in user terms; the model takes the session and the start-up result from here.
+// Its state is in user terms; the model takes the session and the start-up result from here. What the
+// panels need of the rest is handed out as faces, one job each: buses(), devices(), handhelds(), pictures().
 // After the station was silent or the connection was lost, the start-up runs again (the station may
 // have restarted, and others may have changed what we missed); a start-up cut short by a loss, or during
 // which the station fell silent, is thrown away and never emitted as configurationLoaded.
@@ -110,12 +107,6 @@ public:
     const QString& address() const { return address_; }
     // The further buses' addresses given to connectTo().
     const QStringList& furtherBuses() const { return furtherBuses_; }
-    // The buses held open, the station's first; empty while disconnected.
-    std::vector<BusInfo> buses() const;
-    // Whether bus `index` is connected now.
-    bool isBusConnected(int index) const;
-    // Frames received on bus `index` that belong to `protocol` (Foreign: to none expected there).
-    std::uint64_t busFrames(int index, busreading::Protocol protocol) const;
     const StationEndpoint& endpoint() const { return endpoint_; }
     QString description() const { return endpoint_.description(); }
     const LoadingProgress& progress() const { return progress_; }
@@ -124,39 +115,21 @@ public:
     const station::StartupResult& startupResult() const { return result_; }
     // The session while connected (also during the start-up), else null.
     station::StationSession* session() const;
-    // The MS1 handhelds' master on the station's bus while connected (watching only when it may not be the
-    // master), else null. Made with the session, gone with it.
-    mcanhandhelds::HandheldMaster* handhelds() const;
-    // The OpenRailCAN central while its bus is connected and the settings want it, else null.
-    orccentral::OrcSession* orcSession() const;
-    // The RO module sessions whose bus is connected, in the settings' order; one by name (or null).
-    std::vector<romodule::RoModuleSession*> roModules() const;
-    romodule::RoModuleSession* roModule(const QString& name) const;
-    // Why devices of the settings were refused on this connection (an 11-bit module on a UDP/TCP
-    // gateway, a bus that is not open), one sentence each; also reported as problem().
-    QStringList deviceRefusals() const;
-    const DeviceSettings& deviceSettings() const { return settings_.devices; }
-    // The devices of the current connection (the local station's own when connected to it).
-    const DeviceSettings& activeDevices() const { return activeDevices_; }
-    // Devices for later connections (the current one keeps its own until connectTo() again).
-    void setDeviceSettings(DeviceSettings devices) { settings_.devices = std::move(devices); }
-    // Whether Stellwerk answers the handhelds, from now on and for later connections.
-    void setHandheldRole(HandheldRole role);
-    HandheldRole handheldRole() const { return settings_.handhelds.role; }
     // Why the connection failed (state Failed), in English.
     QString failureReason() const { return failure_; }
     // The last problem reported (connection refused, a file that could not be read, ...).
     QString lastProblem() const { return lastProblem_; }
     // The local station's TCP port while it runs, else 0 (for diagnostics and tests).
     std::uint16_t embeddedPort() const;
-    // What the transport of the current connection counted (frames in and out, ...); zeros while there is
-    // none.
-    transport::TransportCounters transportCounters() const;
-    // The station's web server ("http://192.168.2.5", port 80 as on a CS2; the port of the address's
-    // `?http=` option; the embedded station's own port), empty when the station is reached over CAN or
-    // there is none.
-    QString webAddress() const { return pictures_->station(); }
-    // The locomotives' pictures from that web server (and the open layout's icons folder).
+    // The buses held open, their frames and counters: the bus monitor's face.
+    ConnectionBuses& buses() const { return *buses_; }
+    // The device sessions and the device settings: the devices panel's face.
+    ConnectionDevices& devices() const { return *devices_; }
+    // The MS1 handhelds' master and Stellwerk's role among them: the handhelds panel's face.
+    ConnectionHandhelds& handhelds() const { return *handhelds_; }
+    // The locomotives' pictures from the station's web server ("http://192.168.2.5", port 80 as on a CS2;
+    // the port of the address's `?http=` option; the embedded station's own port; none over CAN), and the
+    // open layout's icons folder.
     LocomotivePictures& pictures() const { return *pictures_; }
 
 signals:
@@ -168,17 +141,6 @@ signals:
     void sessionStarted(stellwerk::station::StationSession* session);
     // A start-up finished (the first one, and again after each reload): the moment to load the model.
     void configurationLoaded(const stellwerk::station::StartupResult& result);
-    // Frames on the wire, for a bus monitor: one signal per batch the transport read (`outgoing` false)
-    // and per block it wrote after pacing (`outgoing` true), in the order they passed.
-    // Only the station's bus.
-    void framesSeen(const std::vector<stellwerk::can::CanFrame>& frames, bool outgoing);
-    // The same for every bus, with its index in buses().
-    void busFramesSeen(int bus, const std::vector<stellwerk::can::CanFrame>& frames, bool outgoing);
-    // The buses were opened (after connectTo) or closed.
-    void busesChanged();
-    // Device sessions were made (their bus connected) or torn down (it went away, or the connection
-    // ended): whoever holds one asks orcSession() / roModules() again.
-    void devicesChanged();
 
 private:
     Expected<std::unique_ptr<transport::Transport>, QString> stationTransport();
@@ -187,8 +149,7 @@ private:
               const std::vector<transport::TransportSettings>& further);
     void fail(const QString& reason);
     void watchTransport();
-    void watchBuses();
-    void openDevices();
+    void watchBusProblems();
     void transportStateChanged(transport::Transport::State state);
     void stationSilent();
     void stationRecovered();
@@ -202,7 +163,9 @@ private:
     State evaluate() const;
 
     ConnectionSettings settings_;
-    DeviceSettings activeDevices_;
+    ConnectionBuses* buses_;
+    ConnectionDevices* devices_;
+    ConnectionHandhelds* handhelds_;
     LocomotivePictures* pictures_;
     std::unique_ptr<StationLink> link_;
     QString address_;

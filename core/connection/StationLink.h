@@ -40,7 +40,7 @@ public:
     transport::Transport& stationTransport() const { return *transports.front(); }
 
     // Stops every signal from the link's parts to `receiver`.
-    void detach(const QObject* receiver) {
+    void detach(const QObject* receiver) const {
         for (const auto& transport : transports)
             QObject::disconnect(transport.get(), nullptr, receiver, nullptr);
         for (const auto& bus : buses)

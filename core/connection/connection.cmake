@@ -2,6 +2,12 @@
 # user terms. The simulated CS2 reaches it only as a local peer from a factory (transport/LocalPeer.h).
 stellwerk_core_library(connection)
 target_sources(stellwerk-connection PRIVATE
+    connection/ConnectionBuses.cpp
+    connection/ConnectionBuses.h
+    connection/ConnectionDevices.cpp
+    connection/ConnectionDevices.h
+    connection/ConnectionHandhelds.cpp
+    connection/ConnectionHandhelds.h
     connection/DeviceSessions.cpp
     connection/DeviceSessions.h
     connection/DeviceSettings.cpp

@@ -91,9 +91,9 @@ public:
                          });
         QObject::connect(&connection, &connection::StationConnection::configurationLoaded, &connection,
                          [this](const station::StartupResult& result) { railway->load(result); });
-        QObject::connect(&connection, &connection::StationConnection::devicesChanged, &connection,
+        QObject::connect(&connection.devices(), &connection::ConnectionDevices::devicesChanged, &connection,
                          [this] { follow(); });
-        QObject::connect(&connection, &connection::StationConnection::framesSeen, &connection,
+        QObject::connect(&connection.buses(), &connection::ConnectionBuses::stationFramesSeen, &connection,
                          [this](const std::vector<can::CanFrame>& frames, bool outgoing) {
                              if (outgoing)
                                  sent.insert(sent.end(), frames.begin(), frames.end());
@@ -113,13 +113,13 @@ public:
     }
     void follow() {
         if (devices)
-            devices->setSessions(connection.orcSession(), connection.roModules());
+            devices->setSessions(connection.devices().orcSession(), connection.devices().roModules());
     }
     // Ready, the railway loaded, the module's relays read and the decoder given its bus id.
     bool ready() {
         return waitFor(
             [this] {
-                const orccentral::OrcSession* orc = connection.orcSession();
+                const orccentral::OrcSession* orc = connection.devices().orcSession();
                 const orccentral::OrcDevice* decoder = orc ? orc->device(DecoderUid) : nullptr;
                 return connection.state() == connection::StationConnection::State::Ready && railway &&
                        railway->isStateReported() && railway->accessory(1)->isPositionReported() && decoder &&
@@ -192,7 +192,7 @@ TEST_P(DevicesOverWire, ARouteSwitchesAnRoRelayAndAnOpenRailCanDecoderOutput) {
     DeviceApp app;
     app.connection.connectTo(station.url());
     ASSERT_TRUE(app.ready()) << app.connection.lastProblem().toStdString();
-    EXPECT_TRUE(app.connection.deviceRefusals().isEmpty());
+    EXPECT_TRUE(app.connection.devices().refusals().isEmpty());
 
     QSignalSpy finished(app.railway.get(), &model::Railway::routeFinished);
     QSignalSpy failed(app.railway.get(), &model::Railway::routeFailed);

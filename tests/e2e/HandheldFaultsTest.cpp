@@ -38,8 +38,8 @@ TEST_P(HandheldStationGoneMidCommand, TheGivenUpSpeedNeverArrivesAndTheHandheldS
     station.first.plugIn();
     ASSERT_TRUE(drivesFirstLoco(station.first));
     const std::uint32_t locId = *app.handheld(FirstMs1)->loco;
-    QObject::connect(&app.connection, &connection::StationConnection::framesSeen, &app.connection,
-                     [&](const std::vector<can::CanFrame>& frames, bool outgoing) {
+    QObject::connect(&app.connection.buses(), &connection::ConnectionBuses::stationFramesSeen,
+                     &app.connection, [&](const std::vector<can::CanFrame>& frames, bool outgoing) {
                          if (outgoing && station.server && setsSpeed(frames, locId, 504))
                              station.stopServer(); // the station goes with the command on its way
                      });

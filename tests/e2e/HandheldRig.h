@@ -127,12 +127,12 @@ public:
         QObject::connect(&connection, &connection::StationConnection::sessionStarted, &connection,
                          [this](station::StationSession* session) {
                              railway = std::make_unique<model::Railway>(*session);
-                             if (mcanhandhelds::HandheldMaster* master = connection.handhelds())
+                             if (mcanhandhelds::HandheldMaster* master = connection.handhelds().master())
                                  new model::RailwayHandhelds(*railway, *master, railway.get());
                          });
         QObject::connect(&connection, &connection::StationConnection::configurationLoaded, &connection,
                          [this](const station::StartupResult& result) { railway->load(result); });
-        QObject::connect(&connection, &connection::StationConnection::framesSeen, &connection,
+        QObject::connect(&connection.buses(), &connection::ConnectionBuses::stationFramesSeen, &connection,
                          [this](const std::vector<can::CanFrame>& frames, bool outgoing) {
                              for (const can::CanFrame& frame : frames) {
                                  if (outgoing && mcan::isMcan(frame))
@@ -150,7 +150,7 @@ public:
             timeoutMs);
     }
 
-    mcanhandhelds::HandheldMaster& master() const { return *connection.handhelds(); }
+    mcanhandhelds::HandheldMaster& master() const { return *connection.handhelds().master(); }
 
     // The handheld as the app shows it, when it knows it.
     std::optional<mcanhandhelds::Handheld> handheld(std::uint32_t uid) const {

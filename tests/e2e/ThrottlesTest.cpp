@@ -107,12 +107,12 @@ public:
                          });
         QObject::connect(&connection, &connection::StationConnection::configurationLoaded, &connection,
                          [this](const station::StartupResult& result) { railway->load(result); });
-        QObject::connect(&connection, &connection::StationConnection::devicesChanged, &connection,
+        QObject::connect(&connection.devices(), &connection::ConnectionDevices::devicesChanged, &connection,
                          [this] { follow(); });
     }
     void follow() {
         if (railway)
-            throttles->setSession(connection.orcSession());
+            throttles->setSession(connection.devices().orcSession());
     }
     // Ready, the railway loaded and a bridge beside the central.
     bool ready(int timeoutMs = 3 * WaitMs) {
@@ -185,8 +185,8 @@ TEST_P(ThrottleStationGoneMidCommand, TheGivenUpSpeedNeverArrivesAndTheThrottleD
     ThrottleApp app;
     app.connection.connectTo(station.url());
     ASSERT_TRUE(app.ready());
-    QObject::connect(&app.connection, &connection::StationConnection::framesSeen, &app.connection,
-                     [&](const std::vector<can::CanFrame>& frames, bool outgoing) {
+    QObject::connect(&app.connection.buses(), &connection::ConnectionBuses::stationFramesSeen,
+                     &app.connection, [&](const std::vector<can::CanFrame>& frames, bool outgoing) {
                          if (outgoing && station.server && setsSpeed(frames, MfxLoco, 777))
                              station.stopServer(); // the station goes with the command on its way
                      });

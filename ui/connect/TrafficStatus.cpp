@@ -1,6 +1,6 @@
 #include "connect/TrafficStatus.h"
 
-#include "connection/StationConnection.h"
+#include "connection/ConnectionBuses.h"
 
 #include <QEvent>
 #include <QHBoxLayout>
@@ -22,9 +22,9 @@ TrafficStatus::TrafficStatus(QWidget* parent)
     refresh();
 }
 
-void TrafficStatus::setConnection(const connection::StationConnection* station) {
-    m_connection = station;
-    if (m_connection)
+void TrafficStatus::setBuses(const connection::ConnectionBuses* buses) {
+    m_buses = buses;
+    if (m_buses)
         m_timer->start();
     else
         m_timer->stop();
@@ -43,7 +43,7 @@ void TrafficStatus::changeEvent(QEvent* event) {
 
 void TrafficStatus::refresh() {
     const transport::TransportCounters counters =
-        m_connection ? m_connection->transportCounters() : transport::TransportCounters{};
+        m_buses ? m_buses->stationCounters() : transport::TransportCounters{};
     const QLocale locale;
     m_text->setText(tr("Frames in %1 · out %2")
                         .arg(locale.toString(qulonglong(counters.framesIn)),

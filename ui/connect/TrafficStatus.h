@@ -7,7 +7,7 @@ class QLabel;
 class QTimer;
 
 namespace stellwerk::connection {
-class StationConnection;
+class ConnectionBuses;
 }
 
 namespace stellwerk::ui {
@@ -23,7 +23,8 @@ public:
 
     explicit TrafficStatus(QWidget* parent = nullptr);
 
-    void setConnection(const connection::StationConnection* station);
+    // Counts the frames of the station's bus among `buses` (null: none).
+    void setBuses(const connection::ConnectionBuses* buses);
     QString text() const;
 
 protected:
@@ -32,7 +33,7 @@ protected:
 private:
     void refresh();
 
-    QPointer<const connection::StationConnection> m_connection;
+    QPointer<const connection::ConnectionBuses> m_buses;
     QLabel* m_text;
     QTimer* m_timer;
 };

@@ -1,6 +1,6 @@
 #include "devices/DeviceTableModel.h"
 
-#include "connection/StationConnection.h"
+#include "connection/ConnectionDevices.h"
 #include "devices/HexText.h"
 #include "orccentral/OrcSession.h"
 #include "romodule/RoModuleSession.h"
@@ -11,26 +11,26 @@ namespace {
 using orccentral::OrcDevice;
 using romodule::RoModuleSession;
 
-const connection::RoModuleSettings* moduleSettings(const connection::StationConnection& connection,
+const connection::RoModuleSettings* moduleSettings(const connection::ConnectionDevices& devices,
                                                    const QString& name) {
-    return connection.activeDevices().roModule(name);
+    return devices.active().roModule(name);
 }
 
 } // namespace
 
 DeviceTableModel::DeviceTableModel(QObject* parent) : QAbstractTableModel(parent) {}
 
-void DeviceTableModel::setConnection(connection::StationConnection* connection) {
-    m_connection = connection;
+void DeviceTableModel::setDevices(connection::ConnectionDevices* devices) {
+    m_devices = devices;
     refresh();
 }
 
 void DeviceTableModel::refresh() {
     std::vector<Row> rows;
-    if (m_connection) {
-        for (const connection::RoModuleSettings& module : m_connection->activeDevices().roModules)
+    if (m_devices) {
+        for (const connection::RoModuleSettings& module : m_devices->active().roModules)
             rows.push_back({false, 0, QString::fromStdString(module.profile.name)});
-        if (const orccentral::OrcSession* orc = m_connection->orcSession())
+        if (const orccentral::OrcSession* orc = m_devices->orcSession())
             for (const OrcDevice& device : orc->devices())
                 rows.push_back({true, device.uid, {}});
     }
@@ -58,7 +58,7 @@ int DeviceTableModel::columnCount(const QModelIndex& parent) const {
 }
 
 QVariant DeviceTableModel::data(const QModelIndex& index, int role) const {
-    if (!index.isValid() || index.row() >= rowCount() || role != Qt::DisplayRole || !m_connection)
+    if (!index.isValid() || index.row() >= rowCount() || role != Qt::DisplayRole || !m_devices)
         return {};
     const Row& row = m_rows[std::size_t(index.row())];
     return row.orc ? orcText(row.uid, index.column()) : moduleText(row.module, index.column());
@@ -101,7 +101,7 @@ QString DeviceTableModel::orcTypeName(std::uint8_t type) {
 }
 
 QString DeviceTableModel::orcText(std::uint32_t uid, int column) const {
-    const orccentral::OrcSession* orc = m_connection->orcSession();
+    const orccentral::OrcSession* orc = m_devices->orcSession();
     const OrcDevice* device = orc ? orc->device(uid) : nullptr;
     if (!device)
         return column == State ? tr("gone") : QString();
@@ -129,7 +129,7 @@ QString DeviceTableModel::orcText(std::uint32_t uid, int column) const {
 }
 
 QString DeviceTableModel::moduleText(const QString& name, int column) const {
-    const connection::RoModuleSettings* settings = moduleSettings(*m_connection, name);
+    const connection::RoModuleSettings* settings = moduleSettings(*m_devices, name);
     if (!settings)
         return {};
     const ro::FrameIds& ids = settings->profile.ids;
@@ -150,9 +150,9 @@ QString DeviceTableModel::moduleText(const QString& name, int column) const {
 }
 
 QString DeviceTableModel::moduleState(const QString& name) const {
-    const RoModuleSession* session = m_connection->roModule(name);
+    const RoModuleSession* session = m_devices->roModule(name);
     if (!session) {
-        for (const QString& refusal : m_connection->deviceRefusals())
+        for (const QString& refusal : m_devices->refusals())
             if (refusal.contains(name))
                 return tr("refused");
         return tr("bus not connected");

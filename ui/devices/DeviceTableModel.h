@@ -7,7 +7,7 @@
 #include <vector>
 
 namespace stellwerk::connection {
-class StationConnection;
+class ConnectionDevices;
 }
 
 namespace stellwerk::ui {
@@ -30,7 +30,7 @@ public:
 
     explicit DeviceTableModel(QObject* parent = nullptr);
 
-    void setConnection(connection::StationConnection* connection);
+    void setDevices(connection::ConnectionDevices* devices);
     // Reads the devices again (a session came or went, a device changed).
     void refresh();
     const std::vector<Row>& rows() const { return m_rows; }
@@ -50,7 +50,7 @@ private:
     QString moduleText(const QString& name, int column) const;
     QString moduleState(const QString& name) const;
 
-    QPointer<connection::StationConnection> m_connection;
+    QPointer<connection::ConnectionDevices> m_devices;
     std::vector<Row> m_rows;
 };
 

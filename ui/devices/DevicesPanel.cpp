@@ -2,7 +2,7 @@
 
 #include "common/SideBySide.h"
 #include "common/StellwerkSettings.h"
-#include "connection/StationConnection.h"
+#include "connection/ConnectionDevices.h"
 #include "devices/BindingsDialog.h"
 #include "devices/DeviceTableModel.h"
 #include "devices/OrcDeviceView.h"
@@ -106,16 +106,13 @@ DevicesPanel::DevicesPanel(QWidget* parent)
 
 DevicesPanel::~DevicesPanel() = default;
 
-void DevicesPanel::setConnection(connection::StationConnection* connection) {
-    if (m_connection)
-        m_connection->disconnect(this);
-    m_connection = connection;
-    m_model->setConnection(connection);
-    if (connection) {
-        connect(connection, &connection::StationConnection::devicesChanged, this,
-                &DevicesPanel::attachSessions);
-        connect(connection, &connection::StationConnection::stateChanged, this, &DevicesPanel::refresh);
-    }
+void DevicesPanel::setDevices(connection::ConnectionDevices* devices) {
+    if (m_devices)
+        m_devices->disconnect(this);
+    m_devices = devices;
+    m_model->setDevices(devices);
+    if (devices)
+        connect(devices, &connection::ConnectionDevices::devicesChanged, this, &DevicesPanel::attachSessions);
     attachSessions();
 }
 
@@ -126,11 +123,11 @@ void DevicesPanel::setRailway(model::Railway* railway) {
 
 // Follows the sessions there are now: their changes refresh the rows.
 void DevicesPanel::attachSessions() {
-    if (m_connection) {
-        if (orccentral::OrcSession* orc = m_connection->orcSession())
+    if (m_devices) {
+        if (orccentral::OrcSession* orc = m_devices->orcSession())
             connect(orc, &orccentral::OrcSession::deviceChanged, this, &DevicesPanel::refresh,
                     Qt::UniqueConnection);
-        for (RoModuleSession* module : m_connection->roModules())
+        for (RoModuleSession* module : m_devices->roModules())
             connect(module, &RoModuleSession::stateChanged, this, &DevicesPanel::refresh,
                     Qt::UniqueConnection);
     }
@@ -158,19 +155,18 @@ void DevicesPanel::selectRow(int row) {
 
 void DevicesPanel::updateDetails() {
     const QModelIndex current = m_view->currentIndex();
-    if (!m_connection || !current.isValid() || current.row() >= m_model->rowCount()) {
+    if (!m_devices || !current.isValid() || current.row() >= m_model->rowCount()) {
         m_details->setCurrentWidget(m_hint);
         updateButtons();
         return;
     }
     const DeviceTableModel::Row& row = m_model->rows()[std::size_t(current.row())];
     if (row.orc) {
-        m_orcView->setDevice(m_connection->orcSession(), row.uid);
+        m_orcView->setDevice(m_devices->orcSession(), row.uid);
         m_details->setCurrentWidget(m_orcView);
-    } else if (const connection::RoModuleSettings* settings =
-                   m_connection->activeDevices().roModule(row.module)) {
+    } else if (const connection::RoModuleSettings* settings = m_devices->active().roModule(row.module)) {
         m_moduleView->setModule(
-            *settings, m_connection->roModule(row.module),
+            *settings, m_devices->roModule(row.module),
             m_model->data(m_model->index(current.row(), DeviceTableModel::State)).toString());
         m_details->setCurrentWidget(m_moduleView);
     }
@@ -178,9 +174,9 @@ void DevicesPanel::updateDetails() {
 }
 
 void DevicesPanel::updateButtons() {
-    m_add->setEnabled(m_connection != nullptr);
+    m_add->setEnabled(m_devices != nullptr);
     const QString module = selectedModule();
-    const bool saved = m_connection && m_connection->deviceSettings().roModule(module);
+    const bool saved = m_devices && m_devices->settings().roModule(module);
     m_edit->setEnabled(saved);
     m_remove->setEnabled(saved);
     m_bindings->setEnabled(railwayDevices() != nullptr);
@@ -195,7 +191,7 @@ QString DevicesPanel::selectedModule() const {
 }
 
 bool DevicesPanel::onDemo() const {
-    return m_connection && m_connection->address().isEmpty();
+    return m_devices && m_devices->onLocalStation();
 }
 
 model::RailwayDevices* DevicesPanel::railwayDevices() const {
@@ -203,11 +199,11 @@ model::RailwayDevices* DevicesPanel::railwayDevices() const {
 }
 
 QString DevicesPanel::summaryText() const {
-    if (!m_connection || m_connection->state() == connection::StationConnection::State::Disconnected)
+    if (!m_devices || !m_devices->isOpen())
         return tr("Not connected.");
     QStringList parts;
-    const orccentral::OrcSession* orc = m_connection->orcSession();
-    if (!m_connection->activeDevices().orc.on)
+    const orccentral::OrcSession* orc = m_devices->orcSession();
+    if (!m_devices->active().orc.on)
         parts << tr("OpenRailCAN: Stellwerk is not the central.");
     else if (!orc)
         parts << tr("OpenRailCAN: its bus is not connected.");
@@ -218,19 +214,19 @@ QString DevicesPanel::summaryText() const {
         parts
             << tr("OpenRailCAN: %1 of %n device(s) online.", nullptr, int(orc->devices().size())).arg(online);
     }
-    const std::vector<RoModuleSession*> modules = m_connection->roModules();
+    const std::vector<RoModuleSession*> modules = m_devices->roModules();
     const auto online = std::count_if(modules.begin(), modules.end(), [](const RoModuleSession* m) {
         return m->state() == RoModuleSession::State::Online;
     });
-    parts << tr("RO modules: %1 of %n online.", nullptr, int(m_connection->activeDevices().roModules.size()))
-                 .arg(online);
-    for (const QString& refusal : m_connection->deviceRefusals())
+    parts
+        << tr("RO modules: %1 of %n online.", nullptr, int(m_devices->active().roModules.size())).arg(online);
+    for (const QString& refusal : m_devices->refusals())
         parts << tr("Refused: %1.").arg(refusal);
     return parts.join(QLatin1Char(' '));
 }
 
 QString DevicesPanel::noteText() const {
-    if (!m_connection)
+    if (!m_devices)
         return {};
     if (onDemo())
         return tr("The demo station brings its own devices; modules you add are for your own station.");
@@ -238,9 +234,9 @@ QString DevicesPanel::noteText() const {
 }
 
 RoModuleDialog* DevicesPanel::editModule(const QString& name) {
-    if (!m_connection)
+    if (!m_devices)
         return nullptr;
-    const DeviceSettings& devices = m_connection->deviceSettings();
+    const DeviceSettings& devices = m_devices->settings();
     const connection::RoModuleSettings* existing = devices.roModule(name);
     QStringList taken = moduleNames(devices);
     taken.removeAll(name);
@@ -252,9 +248,9 @@ RoModuleDialog* DevicesPanel::editModule(const QString& name) {
 }
 
 void DevicesPanel::saveModule(const QString& oldName, const RoModuleDialog& dialog) {
-    if (!m_connection || !dialog.problem().isEmpty())
+    if (!m_devices || !dialog.problem().isEmpty())
         return;
-    DeviceSettings devices = m_connection->deviceSettings();
+    DeviceSettings devices = m_devices->settings();
     const std::string old = oldName.toStdString();
     const auto found = std::find_if(devices.roModules.begin(), devices.roModules.end(),
                                     [&](const auto& module) { return module.profile.name == old; });
@@ -264,7 +260,7 @@ void DevicesPanel::saveModule(const QString& oldName, const RoModuleDialog& dial
         devices.roModules.push_back(dialog.module());
     QSettings settings = stellwerkSettings();
     devices.save(settings);
-    m_connection->setDeviceSettings(std::move(devices));
+    m_devices->setSettings(std::move(devices));
     refresh();
 }
 
@@ -281,14 +277,14 @@ void DevicesPanel::askRemove() {
 }
 
 void DevicesPanel::removeModule(const QString& name) {
-    if (!m_connection)
+    if (!m_devices)
         return;
-    DeviceSettings devices = m_connection->deviceSettings();
+    DeviceSettings devices = m_devices->settings();
     const std::string wanted = name.toStdString();
     std::erase_if(devices.roModules, [&](const auto& module) { return module.profile.name == wanted; });
     QSettings settings = stellwerkSettings();
     devices.save(settings);
-    m_connection->setDeviceSettings(std::move(devices));
+    m_devices->setSettings(std::move(devices));
     refresh();
 }
 
@@ -297,9 +293,9 @@ BindingsDialog* DevicesPanel::editBindings() {
     if (!devices || !m_railway)
         return nullptr;
     BindingsDialog::Choices choices;
-    if (m_connection) {
-        choices.modules = moduleNames(m_connection->activeDevices());
-        if (const orccentral::OrcSession* orc = m_connection->orcSession())
+    if (m_devices) {
+        choices.modules = moduleNames(m_devices->active());
+        if (const orccentral::OrcSession* orc = m_devices->orcSession())
             for (const orccentral::OrcDevice& device : orc->devices()) {
                 if (device.type == EncoderType)
                     choices.encoders.append(device.uid);

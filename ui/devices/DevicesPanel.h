@@ -10,7 +10,7 @@ class QStackedWidget;
 class QTableView;
 
 namespace stellwerk::connection {
-class StationConnection;
+class ConnectionDevices;
 }
 namespace stellwerk::model {
 class Railway;
@@ -37,7 +37,8 @@ public:
     explicit DevicesPanel(QWidget* parent = nullptr);
     ~DevicesPanel() override;
 
-    void setConnection(connection::StationConnection* connection);
+    // Shows the devices of the connection's `devices` face and edits its settings (null: none).
+    void setDevices(connection::ConnectionDevices* devices);
     void setRailway(model::Railway* railway);
 
     DeviceTableModel& table() const { return *m_model; }
@@ -70,7 +71,7 @@ private:
     void askRemove();
     void retranslate();
 
-    QPointer<connection::StationConnection> m_connection;
+    QPointer<connection::ConnectionDevices> m_devices;
     QPointer<model::Railway> m_railway;
     QLabel* m_summary;
     QTableView* m_view;

@@ -2,7 +2,7 @@
 
 #include "common/SideBySide.h"
 #include "common/StellwerkSettings.h"
-#include "connection/StationConnection.h"
+#include "connection/ConnectionHandhelds.h"
 #include "handheldpanel/HandheldDetails.h"
 #include "handheldpanel/HandheldTableModel.h"
 #include "mcanhandhelds/HandheldMaster.h"
@@ -97,16 +97,14 @@ HandheldsPanel::HandheldsPanel(QWidget* parent)
 
 HandheldsPanel::~HandheldsPanel() = default;
 
-void HandheldsPanel::setConnection(connection::StationConnection* connection) {
-    if (m_connection)
-        disconnect(m_connection, nullptr, this, nullptr);
-    m_connection = connection;
-    if (m_connection) {
-        m_connection->setHandheldRole(m_actAsMaster->isChecked() ? connection::HandheldRole::Automatic
-                                                                 : connection::HandheldRole::Watch);
-        connect(m_connection, &connection::StationConnection::sessionStarted, this,
-                &HandheldsPanel::attachMaster);
-        connect(m_connection, &connection::StationConnection::stateChanged, this,
+void HandheldsPanel::setHandhelds(connection::ConnectionHandhelds* handhelds) {
+    if (m_handhelds)
+        disconnect(m_handhelds, nullptr, this, nullptr);
+    m_handhelds = handhelds;
+    if (m_handhelds) {
+        m_handhelds->setRole(m_actAsMaster->isChecked() ? connection::HandheldRole::Automatic
+                                                        : connection::HandheldRole::Watch);
+        connect(m_handhelds, &connection::ConnectionHandhelds::masterReplaced, this,
                 &HandheldsPanel::attachMaster);
     }
     attachMaster();
@@ -114,7 +112,7 @@ void HandheldsPanel::setConnection(connection::StationConnection* connection) {
 
 // The master lives as long as one connection's session: a new one comes with each connection.
 void HandheldsPanel::attachMaster() {
-    mcanhandhelds::HandheldMaster* master = m_connection ? m_connection->handhelds() : nullptr;
+    mcanhandhelds::HandheldMaster* master = m_handhelds ? m_handhelds->master() : nullptr;
     if (master != m_master) {
         if (m_master)
             disconnect(m_master, nullptr, this, nullptr);
@@ -214,9 +212,8 @@ void HandheldsPanel::updateChoices() {
 
 void HandheldsPanel::chooseRole(bool master) {
     stellwerkSettings().setValue(ActAsMasterKey, master);
-    if (m_connection)
-        m_connection->setHandheldRole(master ? connection::HandheldRole::Automatic
-                                             : connection::HandheldRole::Watch);
+    if (m_handhelds)
+        m_handhelds->setRole(master ? connection::HandheldRole::Automatic : connection::HandheldRole::Watch);
     refresh();
 }
 

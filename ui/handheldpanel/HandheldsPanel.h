@@ -9,7 +9,7 @@ class QPushButton;
 class QTableView;
 
 namespace stellwerk::connection {
-class StationConnection;
+class ConnectionHandhelds;
 }
 namespace stellwerk::mcanhandhelds {
 class HandheldMaster;
@@ -32,7 +32,8 @@ public:
     explicit HandheldsPanel(QWidget* parent = nullptr);
     ~HandheldsPanel() override;
 
-    void setConnection(connection::StationConnection* connection);
+    // Shows the handhelds of the connection's `handhelds` face and sets Stellwerk's role there (null: none).
+    void setHandhelds(connection::ConnectionHandhelds* handhelds);
     void setRailway(model::Railway* railway);
     HandheldTableModel& table() const { return *m_model; }
     // What the line above the table says now.
@@ -51,7 +52,7 @@ private:
     void chooseRole(bool master);
     void retranslate();
 
-    QPointer<connection::StationConnection> m_connection;
+    QPointer<connection::ConnectionHandhelds> m_handhelds;
     QPointer<mcanhandhelds::HandheldMaster> m_master;
     QPointer<model::Railway> m_railway;
     QLabel* m_role;

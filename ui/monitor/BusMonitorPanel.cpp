@@ -1,7 +1,7 @@
 #include "monitor/BusMonitorPanel.h"
 
 #include "common/SideBySide.h"
-#include "connection/StationConnection.h"
+#include "connection/ConnectionBuses.h"
 #include "monitor/BusMonitorFilter.h"
 #include "monitor/BusMonitorFilterBar.h"
 #include "monitor/BusMonitorLog.h"
@@ -163,13 +163,13 @@ QTableView* BusMonitorPanel::table() const {
     return m_table;
 }
 
-void BusMonitorPanel::setConnection(connection::StationConnection* station) {
-    if (m_connection)
-        disconnect(m_connection, nullptr, this, nullptr);
-    m_connection = station;
-    if (station) {
-        connect(station, &connection::StationConnection::busFramesSeen, this, &BusMonitorPanel::receive);
-        connect(station, &connection::StationConnection::busesChanged, this, &BusMonitorPanel::takeBuses);
+void BusMonitorPanel::setBuses(connection::ConnectionBuses* buses) {
+    if (m_buses)
+        disconnect(m_buses, nullptr, this, nullptr);
+    m_buses = buses;
+    if (buses) {
+        connect(buses, &connection::ConnectionBuses::busFramesSeen, this, &BusMonitorPanel::receive);
+        connect(buses, &connection::ConnectionBuses::busesChanged, this, &BusMonitorPanel::takeBuses);
     }
     takeBuses();
 }
@@ -178,8 +178,8 @@ void BusMonitorPanel::setConnection(connection::StationConnection* station) {
 void BusMonitorPanel::takeBuses() {
     std::vector<MonitoredBus> buses;
     QStringList names;
-    if (m_connection)
-        for (const connection::BusInfo& info : m_connection->buses()) {
+    if (m_buses)
+        for (const connection::BusInfo& info : m_buses->list()) {
             buses.push_back({info.station ? tr("station") : info.place, info.profile});
             names.append(buses.back().name);
         }
@@ -359,7 +359,7 @@ void BusMonitorPanel::retranslate() {
     m_history->setSuffix(tr(" frames"));
     m_history->setToolTip(tr("How many frames the table keeps; older ones are dropped"));
     emit m_model->headerDataChanged(Qt::Horizontal, 0, BusMonitorModel::ColumnCount - 1);
-    if (m_connection && m_replay->state() == BusMonitorReplay::State::Idle)
+    if (m_buses && m_replay->state() == BusMonitorReplay::State::Idle)
         takeBuses(); // the station's bus is named in the language
     retranslateReplay();
     updateCounter();

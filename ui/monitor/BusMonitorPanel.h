@@ -18,7 +18,7 @@ namespace stellwerk::can {
 struct CanFrame;
 }
 namespace stellwerk::connection {
-class StationConnection;
+class ConnectionBuses;
 }
 
 namespace stellwerk::ui {
@@ -41,9 +41,9 @@ public:
     explicit BusMonitorPanel(QWidget* parent = nullptr);
     ~BusMonitorPanel() override;
 
-    // Shows the frames of `station` (received and sent) from now on (null: none). It must outlive the
-    // panel or be replaced before it goes.
-    void setConnection(connection::StationConnection* station);
+    // Shows the frames on the connection's `buses` (received and sent) from now on (null: none). They
+    // must outlive the panel or be replaced before they go.
+    void setBuses(connection::ConnectionBuses* buses);
 
     BusMonitorModel* model() const { return m_model; }
     BusMonitorFilter* filter() const { return m_filter; }
@@ -114,7 +114,7 @@ private:
     QPushButton* m_liveButton = nullptr;
     QProgressBar* m_replayProgress = nullptr;
     QLabel* m_replayStatus = nullptr;
-    QPointer<connection::StationConnection> m_connection;
+    QPointer<connection::ConnectionBuses> m_buses;
     std::unique_ptr<BusMonitorLogWriter> m_recorder;
     QStringList m_skippedLines; // "line 3: why", the first MaxSkippedShown of them
 };

@@ -259,11 +259,11 @@ void MainWindow::setConnection(connection::StationConnection* station) {
     m_locomotivePanel->setPictures(m_pictures);
     m_stationStatus->setConnection(station);
     m_startupProgress->setConnection(station);
-    m_traffic->setConnection(station);
-    m_busMonitor->setConnection(station);
+    m_traffic->setBuses(station ? &station->buses() : nullptr);
+    m_busMonitor->setBuses(station ? &station->buses() : nullptr);
     m_trackPlan->setConnection(station);
-    m_handhelds->setConnection(station);
-    m_devices->setConnection(station);
+    m_handhelds->setHandhelds(station ? &station->handhelds() : nullptr);
+    m_devices->setDevices(station ? &station->devices() : nullptr);
     if (m_connection) {
         connect(m_connection, &connection::StationConnection::problem, this,
                 [this](const QString& message) { showStationProblem(message); });

@@ -27,7 +27,7 @@ RailwayBinding::~RailwayBinding() {
 // The railway of the session, and the handhelds on the station's bus driving it.
 void RailwayBinding::sessionStarted(station::StationSession* session) {
     auto* railway = new model::Railway(*session);
-    if (mcanhandhelds::HandheldMaster* master = connection_.handhelds())
+    if (mcanhandhelds::HandheldMaster* master = connection_.handhelds().master())
         new model::RailwayHandhelds(*railway, *master, railway);
     replace(railway);
 }

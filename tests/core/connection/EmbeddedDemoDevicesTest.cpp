@@ -15,6 +15,7 @@
 #include <memory>
 
 using namespace stellwerk;
+using connection::ConnectionDevices;
 using connection::StationConnection;
 
 namespace {
@@ -35,7 +36,8 @@ struct DemoApp {
                          });
         QObject::connect(&connection, &StationConnection::configurationLoaded, &connection,
                          [this](const station::StartupResult& result) { railway->load(result); });
-        QObject::connect(&connection, &StationConnection::devicesChanged, &connection, [this] { follow(); });
+        QObject::connect(&connection.devices(), &ConnectionDevices::devicesChanged, &connection,
+                         [this] { follow(); });
     }
     static connection::ConnectionSettings settings() {
         connection::ConnectionSettings settings = support::withEmbeddedStation();
@@ -44,7 +46,7 @@ struct DemoApp {
     }
     void follow() {
         if (devices)
-            devices->setSessions(connection.orcSession(), connection.roModules());
+            devices->setSessions(connection.devices().orcSession(), connection.devices().roModules());
     }
 
     StationConnection connection;
@@ -57,8 +59,9 @@ TEST(EmbeddedDemoDevices, TheDemoStationsDevicesAreOnItsDeviceBus) {
     app.connection.connectTo(QString());
     ASSERT_TRUE(QTest::qWaitFor(
         [&] {
-            const orccentral::OrcSession* orc = app.connection.orcSession();
-            const romodule::RoModuleSession* module = app.connection.roModule(QStringLiteral("Demo RO"));
+            const orccentral::OrcSession* orc = app.connection.devices().orcSession();
+            const romodule::RoModuleSession* module =
+                app.connection.devices().roModule(QStringLiteral("Demo RO"));
             return app.connection.state() == StationConnection::State::Ready && orc &&
                    orc->device(sim::EmbeddedStation::DemoOrcDecoder) &&
                    orc->device(sim::EmbeddedStation::DemoOrcEncoder) && module &&
@@ -66,13 +69,14 @@ TEST(EmbeddedDemoDevices, TheDemoStationsDevicesAreOnItsDeviceBus) {
         },
         WaitMs))
         << app.connection.lastProblem().toStdString();
-    ASSERT_EQ(app.connection.buses().size(), 2u);
-    EXPECT_TRUE(app.connection.buses()[0].profile.expects(busreading::Protocol::Mcan))
+    ASSERT_EQ(app.connection.buses().list().size(), 2u);
+    EXPECT_TRUE(app.connection.buses().list()[0].profile.expects(busreading::Protocol::Mcan))
         << "the demo MS1 keeps its bus";
-    EXPECT_TRUE(app.connection.buses()[1].profile.expects(busreading::Protocol::Orc));
-    EXPECT_EQ(app.connection.orcSession()->device(sim::EmbeddedStation::DemoOrcDecoder)->busId, 0x0101)
+    EXPECT_TRUE(app.connection.buses().list()[1].profile.expects(busreading::Protocol::Orc));
+    EXPECT_EQ(app.connection.devices().orcSession()->device(sim::EmbeddedStation::DemoOrcDecoder)->busId,
+              0x0101)
         << "the demo bindings name the decoder by this bus id";
-    EXPECT_TRUE(app.connection.deviceRefusals().isEmpty());
+    EXPECT_TRUE(app.connection.devices().refusals().isEmpty());
 }
 
 // Route 1 "Einfahrt Gleis 1": A Einfahrsignal (6) green, W1 Einfahrt West (1) to position 1, P1 (7).
@@ -81,7 +85,7 @@ TEST(EmbeddedDemoDevices, ARouteOfTheDemoPlanSwitchesTheRelayAndTheDecoderOutput
     app.connection.connectTo(QString());
     ASSERT_TRUE(QTest::qWaitFor(
         [&] {
-            const orccentral::OrcSession* orc = app.connection.orcSession();
+            const orccentral::OrcSession* orc = app.connection.devices().orcSession();
             return app.railway && app.railway->isStateReported() && app.railway->accessory(1) &&
                    app.railway->accessory(1)->isPositionReported() && orc &&
                    orc->deviceAt(0x0101); // a decoder has no query: its outputs are known once switched

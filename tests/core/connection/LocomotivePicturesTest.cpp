@@ -272,15 +272,15 @@ TEST(StationConnectionPictures, AnAddressWithAnHttpPortFetchesThePicturesThere) 
     const QString port = web.address().section(QLatin1Char(':'), -1);
     StationConnection connection(support::withEmbeddedStation());
     connection.connectTo("tcp://127.0.0.1:1?http=" + port);
-    EXPECT_EQ(connection.webAddress(), web.address());
+    EXPECT_EQ(connection.pictures().station(), web.address());
     EXPECT_EQ(connection.endpoint().description(), QStringLiteral("CS2 at 127.0.0.1:1 (TCP)"));
     ASSERT_TRUE(settled(connection.pictures(), "ICE 3"));
     EXPECT_EQ(connection.pictures().picture("ICE 3"), demoPicture("ICE 3.png"));
     EXPECT_EQ(web.requests(), 1);
     connection.connectTo("udp://127.0.0.1?listen=0&http=" + port);
-    EXPECT_EQ(connection.webAddress(), web.address());
+    EXPECT_EQ(connection.pictures().station(), web.address());
     connection.connectTo("tcp://127.0.0.1:1?http=80");
-    EXPECT_EQ(connection.webAddress(), "http://127.0.0.1");
+    EXPECT_EQ(connection.pictures().station(), "http://127.0.0.1");
 }
 
 // stellwerk-sim serves the pictures on its --http-port and says which address to give Stellwerk for them;
@@ -300,7 +300,7 @@ TEST(StationConnectionPictures, StellwerkSimSaysTheAddressThroughWhichItsPicture
     EXPECT_EQ(match.captured(2).toUInt(), http);
     StationConnection connection(support::withEmbeddedStation());
     connection.connectTo(match.captured(1));
-    EXPECT_EQ(connection.webAddress(), QStringLiteral("http://127.0.0.1:%1").arg(http));
+    EXPECT_EQ(connection.pictures().station(), QStringLiteral("http://127.0.0.1:%1").arg(http));
     ASSERT_TRUE(settled(connection.pictures(), "BR 218"));
     EXPECT_EQ(connection.pictures().status("BR 218"), Status::Present)
         << connection.pictures().problem("BR 218").toStdString();
@@ -309,18 +309,17 @@ TEST(StationConnectionPictures, StellwerkSimSaysTheAddressThroughWhichItsPicture
 TEST(StationConnectionPictures, TheWebAddressFollowsTheStation) {
     StationConnection connection(support::withEmbeddedStation());
     connection.connectTo("tcp://127.0.0.1:1");
-    EXPECT_EQ(connection.webAddress(), "http://127.0.0.1");
+    EXPECT_EQ(connection.pictures().station(), "http://127.0.0.1");
     connection.connectTo("udp://192.168.2.5");
-    EXPECT_EQ(connection.webAddress(), "http://192.168.2.5");
+    EXPECT_EQ(connection.pictures().station(), "http://192.168.2.5");
     connection.connectTo("can://virtualcan/can0");
-    EXPECT_EQ(connection.webAddress(), "");
+    EXPECT_EQ(connection.pictures().station(), "");
     connection.connectToSimulator();
-    EXPECT_TRUE(connection.webAddress().startsWith("http://127.0.0.1:"));
-    EXPECT_EQ(connection.webAddress(), connection.pictures().station());
+    EXPECT_TRUE(connection.pictures().station().startsWith("http://127.0.0.1:"));
     ASSERT_TRUE(settled(connection.pictures(), "ICE 3"));
     EXPECT_EQ(connection.pictures().picture("ICE 3"), demoPicture("ICE 3.png"));
     connection.disconnectFromStation();
-    EXPECT_EQ(connection.webAddress(), "");
+    EXPECT_EQ(connection.pictures().station(), "");
 }
 
 } // namespace

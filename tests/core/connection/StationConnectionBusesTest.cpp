@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 using namespace stellwerk;
+using connection::ConnectionBuses;
 using connection::StationConnection;
 using State = StationConnection::State;
 
@@ -40,7 +41,7 @@ can::CanFrame systemStop() {
 // What the connection showed of bus `index`, as the monitor receives it.
 struct BusLog {
     BusLog(StationConnection& connection, int index) {
-        QObject::connect(&connection, &StationConnection::busFramesSeen, &context,
+        QObject::connect(&connection.buses(), &ConnectionBuses::busFramesSeen, &context,
                          [this, index](int bus, const std::vector<can::CanFrame>& frames, bool outgoing) {
                              if (bus == index && !outgoing)
                                  received.insert(received.end(), frames.begin(), frames.end());
@@ -57,7 +58,8 @@ struct TwoBuses {
         if (!modules.listen())
             return false;
         connection.connectTo(QString(), {modules.url()});
-        return ready(connection) && waitUntil([&] { return connection.isBusConnected(1); }, ReadyMs) &&
+        return ready(connection) &&
+               waitUntil([&] { return connection.buses().isBusConnected(1); }, ReadyMs) &&
                waitUntil([&] { return modules.hasClient(); }, ReadyMs);
     }
     support::ModuleBusPeer modules;
@@ -66,10 +68,10 @@ struct TwoBuses {
 
 TEST(StationConnectionBuses, HoldsTheStationsBusAndTheFurtherOnesInOrder) {
     TwoBuses rig;
-    QSignalSpy changed(&rig.connection, &StationConnection::busesChanged);
+    QSignalSpy changed(&rig.connection.buses(), &ConnectionBuses::busesChanged);
     ASSERT_TRUE(rig.start()) << rig.connection.lastProblem().toStdString();
     EXPECT_EQ(changed.count(), 1);
-    const std::vector<connection::BusInfo> buses = rig.connection.buses();
+    const std::vector<connection::BusInfo> buses = rig.connection.buses().list();
     ASSERT_EQ(buses.size(), 2u);
     EXPECT_TRUE(buses[0].station);
     EXPECT_TRUE(buses[0].profile.expects(busreading::Protocol::Cs2));
@@ -80,8 +82,8 @@ TEST(StationConnectionBuses, HoldsTheStationsBusAndTheFurtherOnesInOrder) {
 
     rig.connection.disconnectFromStation();
     EXPECT_EQ(changed.count(), 2);
-    EXPECT_TRUE(rig.connection.buses().empty());
-    EXPECT_FALSE(rig.connection.isBusConnected(1));
+    EXPECT_TRUE(rig.connection.buses().list().empty());
+    EXPECT_FALSE(rig.connection.buses().isBusConnected(1));
 }
 
 // A frame that looks like "system stop" on the module bus is foreign there: counted and shown on bus 1,
@@ -91,26 +93,26 @@ TEST(StationConnectionBuses, FurtherBusFramesAreShownAndCountedButNeverReachTheS
     ASSERT_TRUE(rig.start());
     BusLog further(rig.connection, 1);
     BusLog station(rig.connection, 0);
-    QSignalSpy stationFrames(&rig.connection, &StationConnection::framesSeen);
+    QSignalSpy stationFrames(&rig.connection.buses(), &ConnectionBuses::stationFramesSeen);
     std::vector<station::PowerChange> powers;
     QObject::connect(rig.connection.session(), &station::StationSession::updated, &further.context,
                      [&](const station::StationUpdates& u) {
                          powers.insert(powers.end(), u.power.begin(), u.power.end());
                      });
-    const std::uint64_t cs2Before = rig.connection.busFrames(0, busreading::Protocol::Cs2);
+    const std::uint64_t cs2Before = rig.connection.buses().busFrames(0, busreading::Protocol::Cs2);
 
     rig.modules.send({systemStop(), systemStop()});
     ASSERT_TRUE(waitUntil([&] { return further.received.size() == 2; }, 3000));
     QTest::qWait(200);
     EXPECT_EQ(further.received, (std::vector{systemStop(), systemStop()}));
-    EXPECT_EQ(rig.connection.busFrames(1, busreading::Protocol::Foreign), 2u);
-    EXPECT_EQ(rig.connection.busFrames(1, busreading::Protocol::Cs2), 0u);
+    EXPECT_EQ(rig.connection.buses().busFrames(1, busreading::Protocol::Foreign), 2u);
+    EXPECT_EQ(rig.connection.buses().busFrames(1, busreading::Protocol::Cs2), 0u);
     EXPECT_EQ(std::count(station.received.begin(), station.received.end(), systemStop()), 0);
     for (const QList<QVariant>& seen : stationFrames)
         for (const can::CanFrame& frame : seen.at(0).value<std::vector<can::CanFrame>>())
             EXPECT_NE(frame, systemStop()) << "the station's bus showed a module frame";
     EXPECT_TRUE(powers.empty()) << "a module frame was read as the station's power";
-    EXPECT_GE(rig.connection.busFrames(0, busreading::Protocol::Cs2), cs2Before);
+    EXPECT_GE(rig.connection.buses().busFrames(0, busreading::Protocol::Cs2), cs2Before);
     EXPECT_EQ(rig.connection.state(), State::Ready);
     EXPECT_TRUE(rig.modules.written.isEmpty())
         << "nothing speaks to the modules yet: nothing is written there";
@@ -118,14 +120,14 @@ TEST(StationConnectionBuses, FurtherBusFramesAreShownAndCountedButNeverReachTheS
 
 TEST(StationConnectionBuses, AFurtherBusThatCannotBeReadFailsTheConnectionAndOpensNothing) {
     StationConnection connection{support::withEmbeddedStation()};
-    QSignalSpy changed(&connection, &StationConnection::busesChanged);
+    QSignalSpy changed(&connection.buses(), &ConnectionBuses::busesChanged);
     connection.connectTo(QString(),
                          {QStringLiteral("can://socketcan/can1"), QStringLiteral("http://modules")});
     EXPECT_EQ(connection.state(), State::Failed);
     EXPECT_TRUE(connection.failureReason().startsWith(QStringLiteral("further bus \"http://modules\": ")))
         << connection.failureReason().toStdString();
     EXPECT_EQ(connection.embeddedPort(), 0) << "the simulated station was not left running";
-    EXPECT_TRUE(connection.buses().empty());
+    EXPECT_TRUE(connection.buses().list().empty());
     EXPECT_EQ(connection.session(), nullptr);
     EXPECT_EQ(changed.count(), 0);
 }
@@ -140,10 +142,11 @@ TEST_P(FurtherBusGoneFor, TheStationStaysReadyAndTheBusComesBack) {
     ASSERT_TRUE(rig.start());
     QSignalSpy states(&rig.connection, &StationConnection::stateChanged);
     QSignalSpy problems(&rig.connection, &StationConnection::problem);
+    QSignalSpy busesChanged(&rig.connection.buses(), &ConnectionBuses::busesChanged);
     BusLog further(rig.connection, 1);
 
     rig.modules.stop();
-    ASSERT_TRUE(waitUntil([&] { return !rig.connection.isBusConnected(1); }, 5000));
+    ASSERT_TRUE(waitUntil([&] { return !rig.connection.buses().isBusConnected(1); }, 5000));
     const QString port = QString::number(rig.modules.port());
     ASSERT_TRUE(waitUntil([&] { return !problems.isEmpty(); }, 5000));
     EXPECT_TRUE(problems.at(0).at(0).toString().contains(port))
@@ -153,11 +156,13 @@ TEST_P(FurtherBusGoneFor, TheStationStaysReadyAndTheBusComesBack) {
     EXPECT_FALSE(rig.connection.session()->liveness().isStationSilent());
 
     ASSERT_TRUE(rig.modules.listen());
-    ASSERT_TRUE(
-        waitUntil([&] { return rig.connection.isBusConnected(1) && rig.modules.hasClient(); }, ReconnectMs));
+    ASSERT_TRUE(waitUntil([&] { return rig.connection.buses().isBusConnected(1) && rig.modules.hasClient(); },
+                          ReconnectMs));
     rig.modules.send({systemStop()});
     ASSERT_TRUE(waitUntil([&] { return further.received.size() == 1; }, 3000));
     EXPECT_EQ(states.count(), 0) << "the station's state never changed";
+    EXPECT_EQ(busesChanged.count(), 0) << "the same bus, away and back: the list never changed";
+    EXPECT_EQ(rig.connection.buses().list().size(), 2u);
     EXPECT_TRUE(rig.modules.written.isEmpty());
 }
 
@@ -176,7 +181,7 @@ TEST(StationConnectionBuses, GarbageOnAFurtherBusLeavesTheStationAlone) {
     rig.modules.sendBytes(garbage + transport::encodeFrames(std::vector{systemStop()}));
     ASSERT_TRUE(waitUntil([&] { return further.received.size() == 1; }, 3000));
     EXPECT_EQ(further.received.front(), systemStop());
-    EXPECT_EQ(rig.connection.busFrames(1, busreading::Protocol::Foreign), 1u);
+    EXPECT_EQ(rig.connection.buses().busFrames(1, busreading::Protocol::Foreign), 1u);
     QTest::qWait(300);
     EXPECT_EQ(states.count(), 0);
     EXPECT_EQ(rig.connection.state(), State::Ready);

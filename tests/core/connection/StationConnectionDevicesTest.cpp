@@ -21,6 +21,8 @@
 #include <gtest/gtest.h>
 
 using namespace stellwerk;
+using connection::ConnectionBuses;
+using connection::ConnectionDevices;
 using connection::DeviceSettings;
 using connection::RoModuleSettings;
 using connection::StationConnection;
@@ -79,8 +81,8 @@ struct SimulatedDevices {
 };
 
 bool devicesWork(const StationConnection& connection) {
-    RoModuleSession* module = connection.roModule(QStringLiteral("RO 1"));
-    orccentral::OrcSession* orc = connection.orcSession();
+    RoModuleSession* module = connection.devices().roModule(QStringLiteral("RO 1"));
+    orccentral::OrcSession* orc = connection.devices().orcSession();
     return module && module->state() == RoModuleSession::State::Online && module->outputs() && orc &&
            orc->device(DecoderUid) && orc->device(EncoderUid) &&
            orc->device(DecoderUid)->state == orccentral::OrcDevice::State::Online;
@@ -163,24 +165,24 @@ TEST(StationConnectionDevices, TheBusProfilesExpectTheDevicesWiredToThem) {
 // switched, the decoder and the encoder are found and given their bus ids.
 TEST(StationConnectionDevices, SessionsAreOpenedOnTheirBusAndReachTheDevices) {
     FurtherBusRig rig;
-    QSignalSpy changed(&rig.connection, &StationConnection::devicesChanged);
+    QSignalSpy changed(&rig.connection.devices(), &ConnectionDevices::devicesChanged);
     ASSERT_TRUE(rig.start()) << rig.connection.lastProblem().toStdString();
     EXPECT_GE(changed.count(), 1);
-    EXPECT_TRUE(rig.connection.buses()[1].profile.expects(busreading::Protocol::Orc));
-    EXPECT_TRUE(rig.connection.buses()[0].profile.expects(busreading::Protocol::Mcan));
-    ASSERT_EQ(rig.connection.roModules().size(), 1u);
+    EXPECT_TRUE(rig.connection.buses().list()[1].profile.expects(busreading::Protocol::Orc));
+    EXPECT_TRUE(rig.connection.buses().list()[0].profile.expects(busreading::Protocol::Mcan));
+    ASSERT_EQ(rig.connection.devices().roModules().size(), 1u);
 
-    ASSERT_TRUE(rig.connection.roModule(QStringLiteral("RO 1"))->setOutput(3, true));
+    ASSERT_TRUE(rig.connection.devices().roModule(QStringLiteral("RO 1"))->setOutput(3, true));
     ASSERT_TRUE(waitUntil([&] { return rig.devices.module.relay(3); }, 3000));
-    rig.connection.orcSession()->switchOutputs(rig.devices.decoder.busId(), 0x05);
+    rig.connection.devices().orcSession()->switchOutputs(rig.devices.decoder.busId(), 0x05);
     ASSERT_TRUE(waitUntil([&] { return rig.devices.decoder.outputs() == 0x05; }, 3000));
-    EXPECT_TRUE(rig.connection.deviceRefusals().isEmpty());
-    EXPECT_EQ(rig.connection.busFrames(0, busreading::Protocol::Ro), 0u)
+    EXPECT_TRUE(rig.connection.devices().refusals().isEmpty());
+    EXPECT_EQ(rig.connection.buses().busFrames(0, busreading::Protocol::Ro), 0u)
         << "nothing of the devices on the station's bus";
 
     rig.connection.disconnectFromStation();
-    EXPECT_EQ(rig.connection.orcSession(), nullptr);
-    EXPECT_TRUE(rig.connection.roModules().empty());
+    EXPECT_EQ(rig.connection.devices().orcSession(), nullptr);
+    EXPECT_TRUE(rig.connection.devices().roModules().empty());
 }
 
 // Notes C3: the CS2's 13-byte form has no room for an 11-bit frame.
@@ -193,12 +195,12 @@ TEST(StationConnectionDevices, AnElevenBitModuleOnATcpGatewayIsRefusedWithTheRea
     QSignalSpy problems(&connection, &StationConnection::problem);
     connection.connectTo(QString());
     ASSERT_TRUE(waitUntil([&] { return connection.state() == State::Ready; }));
-    ASSERT_EQ(connection.deviceRefusals().size(), 1);
-    const QString refusal = connection.deviceRefusals().front();
+    ASSERT_EQ(connection.devices().refusals().size(), 1);
+    const QString refusal = connection.devices().refusals().front();
     EXPECT_TRUE(refusal.contains(QStringLiteral("RO 1")) && refusal.contains(QStringLiteral("11-bit")))
         << refusal.toStdString();
     EXPECT_FALSE(problems.isEmpty());
-    EXPECT_EQ(connection.roModule(QStringLiteral("RO 1")), nullptr);
+    EXPECT_EQ(connection.devices().roModule(QStringLiteral("RO 1")), nullptr);
 }
 
 TEST(StationConnectionDevices, AModuleOnABusThatIsNotOpenIsRefused) {
@@ -207,9 +209,9 @@ TEST(StationConnectionDevices, AModuleOnABusThatIsNotOpenIsRefused) {
     StationConnection connection{support::withEmbeddedStation(settingsWith(devices))};
     connection.connectTo(QString());
     ASSERT_TRUE(waitUntil([&] { return connection.state() == State::Ready; }));
-    ASSERT_EQ(connection.deviceRefusals().size(), 1);
-    EXPECT_TRUE(connection.deviceRefusals().front().contains(QStringLiteral("bus 2 is not open")));
-    EXPECT_TRUE(connection.roModules().empty());
+    ASSERT_EQ(connection.devices().refusals().size(), 1);
+    EXPECT_TRUE(connection.devices().refusals().front().contains(QStringLiteral("bus 2 is not open")));
+    EXPECT_TRUE(connection.devices().roModules().empty());
 }
 
 // A session that existed while its bus was away would report what it can no longer know: the sessions go
@@ -217,17 +219,20 @@ TEST(StationConnectionDevices, AModuleOnABusThatIsNotOpenIsRefused) {
 void sessionsGoAndComeBack(StationConnection& connection, SimulatedDevices& devices,
                            const std::function<void()>& unplug, const std::function<bool()>& plugIn,
                            int outageMs) {
-    QSignalSpy changed(&connection, &StationConnection::devicesChanged);
+    QSignalSpy changed(&connection.devices(), &ConnectionDevices::devicesChanged);
     unplug();
-    ASSERT_TRUE(waitUntil([&] { return connection.roModules().empty() && !connection.orcSession(); }, 5000));
+    ASSERT_TRUE(waitUntil(
+        [&] { return connection.devices().roModules().empty() && !connection.devices().orcSession(); },
+        5000));
     EXPECT_GE(changed.count(), 1);
     devices.module.presetRelays(0x0010); // someone switched relay 5 by hand meanwhile
     QTest::qWait(outageMs);
-    EXPECT_TRUE(connection.roModules().empty()) << "no session while the bus is away";
+    EXPECT_TRUE(connection.devices().roModules().empty()) << "no session while the bus is away";
     ASSERT_TRUE(plugIn());
     ASSERT_TRUE(waitUntil([&] { return devicesWork(connection); }, ReconnectMs + ReadyMs));
-    EXPECT_EQ(*connection.roModule(QStringLiteral("RO 1"))->outputs(), 0x0010u) << "the relays are read anew";
-    ASSERT_TRUE(connection.roModule(QStringLiteral("RO 1"))->setOutput(1, true));
+    EXPECT_EQ(*connection.devices().roModule(QStringLiteral("RO 1"))->outputs(), 0x0010u)
+        << "the relays are read anew";
+    ASSERT_TRUE(connection.devices().roModule(QStringLiteral("RO 1"))->setOutput(1, true));
     ASSERT_TRUE(waitUntil([&] { return devices.module.relays() == 0x0011u; }, 3000));
 }
 
@@ -276,7 +281,7 @@ TEST_P(StationBusWithDevicesGoneFor, TheSessionsGoWithTheStationAndComeBackWithI
     ASSERT_TRUE(waitUntil([&] {
         return rig.connection.state() == State::Ready && devicesWork(rig.connection);
     })) << rig.connection.lastProblem().toStdString();
-    EXPECT_TRUE(rig.connection.buses()[0].profile.expects(busreading::Protocol::Orc));
+    EXPECT_TRUE(rig.connection.buses().list()[0].profile.expects(busreading::Protocol::Orc));
     sessionsGoAndComeBack(
         rig.connection, rig.devices, [&] { rig.server.reset(); }, [&] { return rig.listen(); }, GetParam());
     EXPECT_TRUE(waitUntil([&] { return rig.connection.state() == State::Ready; }));

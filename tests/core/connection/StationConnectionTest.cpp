@@ -16,6 +16,7 @@
 #include <vector>
 
 using namespace stellwerk;
+using connection::ConnectionBuses;
 using connection::LoadingProgress;
 using connection::LoadingStep;
 using connection::StationConnection;
@@ -148,14 +149,14 @@ TEST(StationConnection, EmbeddedStationHasTheDemoLayoutsCounts) {
 
 TEST(StationConnection, CountsTheFramesOfItsTransportAndZerosWithoutOne) {
     StationConnection connection{support::withEmbeddedStation()};
-    EXPECT_EQ(connection.transportCounters().framesIn, 0u);
+    EXPECT_EQ(connection.buses().stationCounters().framesIn, 0u);
     connection.connectToSimulator();
     ASSERT_TRUE(waitForState(connection, State::Ready));
-    const transport::TransportCounters counters = connection.transportCounters();
+    const transport::TransportCounters counters = connection.buses().stationCounters();
     EXPECT_GT(counters.framesOut, 10u);               // pings, config requests, state queries
     EXPECT_GT(counters.framesIn, counters.framesOut); // every request has an answer, downloads have many
     connection.disconnectFromStation();
-    EXPECT_EQ(connection.transportCounters().framesOut, 0u);
+    EXPECT_EQ(connection.buses().stationCounters().framesOut, 0u);
 }
 
 TEST(StationConnection, ProgressNamesTheStepsAndTheFilesWithTheirPercentage) {
@@ -236,7 +237,7 @@ TEST(StationConnection, FramesSeenReportsWhatWasSentAndWhatCameBack) {
     ASSERT_TRUE(station.start());
     StationConnection connection{support::withEmbeddedStation()};
     std::vector<std::pair<bool, can::CanFrame>> seen;
-    QObject::connect(&connection, &StationConnection::framesSeen,
+    QObject::connect(&connection.buses(), &ConnectionBuses::stationFramesSeen,
                      [&seen](const std::vector<can::CanFrame>& frames, bool outgoing) {
                          for (const can::CanFrame& frame : frames)
                              seen.emplace_back(outgoing, frame);

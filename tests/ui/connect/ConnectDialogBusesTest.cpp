@@ -101,8 +101,9 @@ TEST_F(ConnectDialogBusesTest, ConnectOpensTheFurtherBusesAndRemembersThem) {
     });
     window.findChild<QAction*>(QStringLiteral("connectAction"))->trigger();
     EXPECT_EQ(station.furtherBuses(), QStringList{modules.url()});
-    ASSERT_EQ(station.buses().size(), 2u);
-    EXPECT_TRUE(QTest::qWaitFor([&] { return station.isBusConnected(1) && modules.hasClient(); }, 10000));
+    ASSERT_EQ(station.buses().list().size(), 2u);
+    EXPECT_TRUE(
+        QTest::qWaitFor([&] { return station.buses().isBusConnected(1) && modules.hasClient(); }, 10000));
     EXPECT_EQ(StationUrlSettings::furtherBuses(), QStringList{modules.url()});
 
     QTimer::singleShot(0, &window, [&modules] {

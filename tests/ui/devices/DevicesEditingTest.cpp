@@ -54,7 +54,7 @@ TEST_F(DevicesEditingTest, AModuleIsAddedOnlyWhenItCanWorkAndIsSaved) {
     ASSERT_NE(added, nullptr);
     EXPECT_EQ(added->profile.ids, (ro::FrameIds{0x1FE0009, 0x1FF0009, true}));
     EXPECT_EQ(added->profile.outputs.count, 16) << "the simulator's layout is the starting point";
-    EXPECT_NE(connection.deviceSettings().roModule(QStringLiteral("Relais Süd")), nullptr)
+    EXPECT_NE(connection.devices().settings().roModule(QStringLiteral("Relais Süd")), nullptr)
         << "the next connection uses it";
     EXPECT_TRUE(panel->noteText().contains(QStringLiteral("next connection")));
 }
@@ -65,13 +65,13 @@ TEST_F(DevicesEditingTest, EscapeLeavesTheModulesAsTheyWere) {
     field(*dialog, "moduleName")->setText(QStringLiteral("Umbenannt"));
     QTest::keyClick(dialog, Qt::Key_Escape);
     EXPECT_TRUE(saved().roModules.empty()) << "nothing was written";
-    ASSERT_EQ(connection.deviceSettings().roModules.size(), 1u);
-    EXPECT_EQ(connection.deviceSettings().roModules[0].profile.name, "RO 1");
+    ASSERT_EQ(connection.devices().settings().roModules.size(), 1u);
+    EXPECT_EQ(connection.devices().settings().roModules[0].profile.name, "RO 1");
 }
 
 TEST_F(DevicesEditingTest, AModuleIsRemovedFromTheSettings) {
     panel->removeModule(QStringLiteral("RO 1"));
-    EXPECT_TRUE(connection.deviceSettings().roModules.empty());
+    EXPECT_TRUE(connection.devices().settings().roModules.empty());
     EXPECT_TRUE(saved().roModules.empty());
     EXPECT_TRUE(saved().orc.on) << "the central stays";
 }

@@ -148,7 +148,7 @@ TEST_F(DevicesPanelTest, ABusThatGoesAwaySaysSoAndComesBackReadAfresh) {
 // Frames on the module's answer id that are no RO answer (another program on the bus, a broken module)
 // change nothing on the screen and are counted.
 TEST_F(DevicesPanelTest, GarbageOnTheAnswerIdChangesNothing) {
-    const romodule::RoModuleSession* session = connection.roModule(QStringLiteral("RO 1"));
+    const romodule::RoModuleSession* session = connection.devices().roModule(QStringLiteral("RO 1"));
     ASSERT_NE(session, nullptr);
     const std::uint64_t unreadable = session->counters().malformed;
     const std::uint64_t foreign = session->counters().stale + session->counters().unsolicited;

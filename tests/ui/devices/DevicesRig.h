@@ -97,9 +97,10 @@ protected:
             QSettings saved = stellwerkSettings();
             auto* devices = new model::RailwayDevices(*railway, model::DeviceBindings::load(saved), railway);
             const auto follow = [this, devices] {
-                devices->setSessions(connection.orcSession(), connection.roModules());
+                devices->setSessions(connection.devices().orcSession(), connection.devices().roModules());
             };
-            QObject::connect(&connection, &connection::StationConnection::devicesChanged, devices, follow);
+            QObject::connect(&connection.devices(), &connection::ConnectionDevices::devicesChanged, devices,
+                             follow);
             follow();
         }
         window->setRailway(railway);

@@ -133,7 +133,7 @@ protected:
         ASSERT_TRUE(server->listen());
         connection.connectTo(QStringLiteral("tcp://127.0.0.1:%1").arg(server->tcpPort()));
         ASSERT_TRUE(test::waitForState(connection, State::Ready));
-        ASSERT_TRUE(waitUntil([&] { return connection.handhelds()->isMaster(); }, WaitMs));
+        ASSERT_TRUE(waitUntil([&] { return connection.handhelds().master()->isMaster(); }, WaitMs));
         ms1.plugIn();
         ASSERT_TRUE(waitUntil([&] { return rowShows(0, HandheldTableModel::State, "online"); }, WaitMs));
         ASSERT_TRUE(waitUntil([&] { return ms1.memory().stack.size() >= 2; }, WaitMs));
@@ -187,7 +187,7 @@ TEST_F(PanelAsMaster, ARemovedStackEntryLeavesTheHandheldsStackAndIsRemembered) 
     for (const sim::Ms1Loco& loco : ms1.memory().stack)
         EXPECT_NE(QString::fromStdString(loco.name), removed);
     EXPECT_EQ(stack->count(), before - 1);
-    const auto shown = connection.handhelds()->handhelds();
+    const auto shown = connection.handhelds().master()->handhelds();
     ASSERT_EQ(shown.size(), 1u);
     EXPECT_EQ(shown.front().stack.size(), std::size_t(before - 1));
     const auto saved = book.load(0x000204B3);
@@ -206,7 +206,7 @@ TEST_F(PanelAsMaster, ANameGivenInThePanelIsShownForTheHandheld) {
 TEST_F(PanelAsMaster, UncheckingActAsMasterMakesStellwerkOnlyWatch) {
     auto* choice = panel->findChild<QCheckBox*>(QStringLiteral("actAsMaster"));
     choice->click();
-    ASSERT_TRUE(waitUntil([&] { return !connection.handhelds()->isMaster(); }, WaitMs));
+    ASSERT_TRUE(waitUntil([&] { return !connection.handhelds().master()->isMaster(); }, WaitMs));
     EXPECT_EQ(panel->roleText(), QStringLiteral("Stellwerk only watches the handhelds, as chosen."));
     EXPECT_FALSE(QSettings(QStringLiteral("Stellwerk"), QStringLiteral("Stellwerk"))
                      .value(QStringLiteral("mcanhandhelds/actAsMaster"), true)

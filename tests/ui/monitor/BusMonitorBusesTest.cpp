@@ -37,13 +37,14 @@ std::vector<MonitoredBus> stationAndModules() {
 struct TwoBusesOnScreen {
     TwoBusesOnScreen() : connection(support::withEmbeddedStation()) {
         translations.select(Language::English);
-        panel.setConnection(&connection);
+        panel.setBuses(&connection.buses());
     }
     bool start() {
         if (!modules.listen())
             return false;
         connection.connectTo(QString(), {modules.url()});
-        return QTest::qWaitFor([&] { return connection.isBusConnected(1) && modules.hasClient(); }, 10000);
+        return QTest::qWaitFor([&] { return connection.buses().isBusConnected(1) && modules.hasClient(); },
+                               10000);
     }
     Translations translations;
     support::ModuleBusPeer modules;
@@ -116,7 +117,7 @@ TEST(BusMonitorFilter, TheProtocolFilterKeepsOnlyThatProtocolsRows) {
 TEST(BusMonitorPanel, TheBusColumnShowsOnlyWithMoreThanOneBus) {
     connection::StationConnection station{support::withEmbeddedStation()};
     BusMonitorPanel panel;
-    panel.setConnection(&station);
+    panel.setBuses(&station.buses());
     station.connectTo(QString());
     EXPECT_TRUE(panel.table()->isColumnHidden(BusMonitorModel::BusColumn));
 
@@ -162,12 +163,12 @@ TEST(BusMonitorPanel, ARecordingKeepsEachFramesBus) {
     TwoBusesOnScreen screen;
     ASSERT_TRUE(screen.start());
     ASSERT_TRUE(screen.panel.startRecording(path).isEmpty());
-    const std::uint64_t stationFrames = screen.connection.busFrames(0, busreading::Protocol::Cs2);
+    const std::uint64_t stationFrames = screen.connection.buses().busFrames(0, busreading::Protocol::Cs2);
     screen.modules.send({systemStop()});
     ASSERT_TRUE(QTest::qWaitFor(
         [&] {
-            return screen.connection.busFrames(1, busreading::Protocol::Foreign) == 1 &&
-                   screen.connection.busFrames(0, busreading::Protocol::Cs2) > stationFrames;
+            return screen.connection.buses().busFrames(1, busreading::Protocol::Foreign) == 1 &&
+                   screen.connection.buses().busFrames(0, busreading::Protocol::Cs2) > stationFrames;
         },
         10000));
     screen.panel.stopRecording();
@@ -227,7 +228,7 @@ TEST(BusMonitorPanel, SavesTheTwoBusScreenshotsWhenAsked) {
         screen.modules.send(
             {frame("00004711 5 00 00 00 00 00"), frame("1C400300 4 00 01 00 01"), frame("1C410300 2 01 00")});
         ASSERT_TRUE(QTest::qWaitFor(
-            [&] { return screen.connection.busFrames(1, busreading::Protocol::Foreign) == 3; }));
+            [&] { return screen.connection.buses().busFrames(1, busreading::Protocol::Foreign) == 3; }));
         screen.panel.resize(1300, 420);
         screen.panel.show();
         QTest::qWait(300);

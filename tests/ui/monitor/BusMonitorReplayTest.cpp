@@ -209,10 +209,11 @@ TEST_F(BusMonitorReplayTest, AMissingFileIsAnErrorAndNothingPlays) {
 TEST_F(BusMonitorReplayTest, PanelShowsTheReplayedFramesInsteadOfLiveOnes) {
     connection::StationConnection station{support::withEmbeddedStation()};
     BusMonitorPanel panel;
-    panel.setConnection(&station);
+    panel.setBuses(&station.buses());
     panel.setReplaySpeed(10.0);
     ASSERT_EQ(panel.openLog(write(timedLog())), QString());
-    emit station.busFramesSeen(0, {can::parseFrame("00004711 5 00 00 00 00 01").value().frame}, false);
+    emit station.buses().busFramesSeen(0, {can::parseFrame("00004711 5 00 00 00 00 01").value().frame},
+                                       false);
     ASSERT_TRUE(QTest::qWaitFor([&] { return panel.replay()->state() == State::Finished; }, ReplayMs));
     panel.model()->flush();
     const BusMonitorModel& model = *panel.model();

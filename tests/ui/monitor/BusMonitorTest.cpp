@@ -182,7 +182,7 @@ TEST(BusMonitorPanel, FilterFindsAFrameByNameAndByLocId) {
 TEST(BusMonitorPanel, ShowsTheFramesOfTheEmbeddedStation) {
     connection::StationConnection station{support::withEmbeddedStation()};
     BusMonitorPanel panel;
-    panel.setConnection(&station);
+    panel.setBuses(&station.buses());
     station.connectToSimulator();
     ASSERT_TRUE(test::waitForState(station, connection::StationConnection::State::Ready));
     ASSERT_TRUE(QTest::qWaitFor([&] { return panel.model()->rowCount() > 0; }, FramesMs));
@@ -199,15 +199,15 @@ TEST(BusMonitorPanel, ARecordingIsOnDiskBatchByBatchWhileItRuns) {
     const QString path = dir.filePath(QStringLiteral("running.log"));
     connection::StationConnection station{support::withEmbeddedStation()};
     BusMonitorPanel recorder;
-    recorder.setConnection(&station);
+    recorder.setBuses(&station.buses());
     ASSERT_EQ(recorder.startRecording(path), QString());
     const auto linesOnDisk = [&path] {
         QFile file(path); // a reader of its own, as after a crash
         return file.open(QIODevice::ReadOnly) ? file.readAll().count('\n') : qsizetype(-1);
     };
-    emit station.busFramesSeen(0, {systemStop(), locoSpeed()}, false);
+    emit station.buses().busFramesSeen(0, {systemStop(), locoSpeed()}, false);
     EXPECT_EQ(linesOnDisk(), 2);
-    emit station.busFramesSeen(0, {locoSpeed()}, true);
+    emit station.buses().busFramesSeen(0, {locoSpeed()}, true);
     EXPECT_EQ(linesOnDisk(), 3);
     EXPECT_TRUE(recorder.isRecording());
 }
@@ -218,12 +218,12 @@ TEST(BusMonitorPanel, RecordsACandumpLogAndOpensItAgain) {
     const QString path = dir.filePath(QStringLiteral("bus.log"));
     connection::StationConnection station{support::withEmbeddedStation()};
     BusMonitorPanel recorder;
-    recorder.setConnection(&station);
+    recorder.setBuses(&station.buses());
     ASSERT_EQ(recorder.startRecording(path), QString());
-    emit station.busFramesSeen(0, {systemStop(), locoSpeed()}, false);
-    emit station.busFramesSeen(0, {locoSpeed()}, true);
+    emit station.buses().busFramesSeen(0, {systemStop(), locoSpeed()}, false);
+    emit station.buses().busFramesSeen(0, {locoSpeed()}, true);
     recorder.stopRecording();
-    emit station.busFramesSeen(0, {systemStop()}, false); // not recorded any more
+    emit station.buses().busFramesSeen(0, {systemStop()}, false); // not recorded any more
 
     QFile file(path);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
@@ -282,15 +282,15 @@ TEST(BusMonitorPanel, AMissingLogIsReportedAndTheLiveViewStays) {
     ASSERT_TRUE(dir.isValid());
     BusMonitorPanel panel;
     connection::StationConnection station{support::withEmbeddedStation()};
-    panel.setConnection(&station);
-    emit station.busFramesSeen(0, {systemStop()}, false);
+    panel.setBuses(&station.buses());
+    emit station.buses().busFramesSeen(0, {systemStop()}, false);
     panel.model()->flush();
     ASSERT_EQ(panel.model()->rowCount(), 1);
     EXPECT_FALSE(panel.openLog(dir.filePath(QStringLiteral("none.log"))).isEmpty());
     EXPECT_EQ(panel.replay()->state(), BusMonitorReplay::State::Idle);
     EXPECT_EQ(panel.model()->rowCount(), 1) << "nothing shown is lost";
     EXPECT_TRUE(panel.findChild<QWidget*>(QStringLiteral("busMonitorReplayBar"))->isHidden());
-    emit station.busFramesSeen(0, {locoSpeed()}, true);
+    emit station.buses().busFramesSeen(0, {locoSpeed()}, true);
     panel.model()->flush();
     EXPECT_EQ(panel.model()->rowCount(), 2);
 }
@@ -305,7 +305,7 @@ TEST(BusMonitorPanel, ShowsTheCommandsTheAppSendsAndTheAnswers) {
     connection::StationConnection station{support::withEmbeddedStation()};
     RailwayBinding railways{station};
     BusMonitorPanel panel;
-    panel.setConnection(&station);
+    panel.setBuses(&station.buses());
     station.connectTo(simulated.url());
     ASSERT_TRUE(test::waitForState(station, connection::StationConnection::State::Ready));
     ASSERT_NE(railways.railway(), nullptr);

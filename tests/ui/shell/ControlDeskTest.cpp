@@ -189,7 +189,7 @@ TEST_F(ControlDeskOnStationTest, StatusBarCountsFramesAndShowsTheTrackPower) {
     ASSERT_TRUE(
         QTest::qWaitFor([traffic] { return traffic->text() != QStringLiteral("Frames in 0 · out 0"); },
                         TrafficStatus::RefreshMs * 4));
-    const auto counters = station.transportCounters();
+    const auto counters = station.buses().stationCounters();
     EXPECT_GT(counters.framesIn, 0u);
     EXPECT_TRUE(traffic->text().startsWith(QStringLiteral("Frames in "))) << traffic->text().toStdString();
     EXPECT_EQ(window->findChild<PowerStatus*>(QStringLiteral("powerStatus"))->text(),

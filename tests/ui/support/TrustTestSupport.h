@@ -24,7 +24,7 @@ namespace stellwerk::ui::test {
 class WireWatch {
 public:
     explicit WireWatch(const connection::StationConnection& station) {
-        QObject::connect(&station, &connection::StationConnection::framesSeen, &context_,
+        QObject::connect(&station.buses(), &connection::ConnectionBuses::stationFramesSeen, &context_,
                          [this](const std::vector<can::CanFrame>& frames, bool outgoing) {
                              if (outgoing)
                                  for (const can::CanFrame& frame : frames)
