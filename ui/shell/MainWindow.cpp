@@ -261,7 +261,6 @@ void MainWindow::setConnection(connection::StationConnection* station) {
     m_startupProgress->setConnection(station);
     m_traffic->setConnection(station);
     m_busMonitor->setConnection(station);
-    m_trackPlan->setConnection(station);
     m_handhelds->setConnection(station);
     m_devices->setConnection(station);
     if (m_connection) {
@@ -271,6 +270,10 @@ void MainWindow::setConnection(connection::StationConnection* station) {
                 &MainWindow::connectionStateChanged);
         connect(m_connection, &QObject::destroyed, this, [this] { m_connection = nullptr; });
     }
+}
+
+void MainWindow::setLayoutInUse(model::LayoutInUse* layout) {
+    m_trackPlan->setLayoutInUse(layout);
 }
 
 void MainWindow::setRailway(model::Railway* railway) {
