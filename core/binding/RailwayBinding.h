@@ -43,8 +43,8 @@ class RailwayBinding final : public QObject {
     Q_DISABLE_COPY_MOVE(RailwayBinding)
 
 public:
-    // `layout` (may be null) is set from each station's download, and forgets it when the binding goes;
-    // it must outlive the binding.
+    // `layout` (may be null, else it must outlive the binding) is set from each station's download, which
+    // it forgets again when the session ends or the binding goes.
     explicit RailwayBinding(model::LayoutInUse* layout = nullptr, QObject* parent = nullptr);
     // Follows `connection`, which must outlive the binding: its sessions, start-ups and device sessions;
     // the pictures of an opened layout go to its LocomotivePictures.
