@@ -8,10 +8,11 @@
 // A plain harness printing figures. Run: QT_QPA_PLATFORM=offscreen build/bench/stellwerk-trackplan-bench
 
 #include "BenchmarkPage.h"
+#include "binding/RailwayBinding.h"
 #include "connection/StationConnection.h"
 #include "cs2config/TrackElementType.h"
+#include "model/LayoutInUse.h"
 #include "model/Railway.h"
-#include "shell/RailwayBinding.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
@@ -157,7 +158,8 @@ void benchBlocks() {
     const model::TrackLayout layout({downloaded});
     trackgraph::GraphSource source;
     source.pages.push_back({0, "station", &downloaded.page.elements});
-    const std::shared_ptr<const ui::PlanGraph> graph = ui::PlanGraph::derive(source, layout);
+    const std::shared_ptr<const ui::PlanGraph> graph = ui::PlanGraph::of(
+        std::make_shared<const trackgraph::TrackGraph>(trackgraph::TrackGraph::derive(source)), layout);
     const auto shared = std::make_shared<const model::LayoutPage>(layout.pages()[0]);
     const auto lookOf = [&page = *shared](int tile) {
         const model::LayoutTile& t = page.tiles[std::size_t(tile)];
@@ -192,7 +194,8 @@ constexpr int BatchSize = 20;
 constexpr qint64 RunMs = 5000;
 
 // Waits until the connection is ready and the binding has a railway (at most 15 s).
-bool waitForRailway(const connection::StationConnection& connection, const ui::RailwayBinding& railways) {
+bool waitForRailway(const connection::StationConnection& connection,
+                    const binding::RailwayBinding& railways) {
     QElapsedTimer wait;
     wait.start();
     while (connection.state() != connection::StationConnection::State::Ready && wait.elapsed() < 15000)
@@ -259,9 +262,12 @@ void benchContacts() {
     sim::StationServer server(station, settings);
     server.listen();
     connection::StationConnection connection;
-    ui::RailwayBinding railways(connection);
+    model::LayoutInUse layout;
+    binding::RailwayBinding railways(connection, &layout);
     ui::TrackPlanPanel panel;
-    QObject::connect(&railways, &ui::RailwayBinding::railwayChanged, &panel, &ui::TrackPlanPanel::setRailway);
+    panel.setLayoutInUse(&layout);
+    QObject::connect(&railways, &binding::RailwayBinding::railwayChanged, &panel,
+                     &ui::TrackPlanPanel::setRailway);
     panel.resize(1200, 800);
     panel.show();
     connection.connectTo(QStringLiteral("tcp://127.0.0.1:%1").arg(server.tcpPort()));

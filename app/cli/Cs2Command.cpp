@@ -3,6 +3,7 @@
 #include "cs2config/ConfigFile.h"
 #include "cs2config/LayoutFolder.h"
 #include "cs2config/TrackLayout.h"
+#include "model/LayoutInUse.h"
 
 #include <filesystem>
 #include <fstream>
@@ -54,11 +55,12 @@ bool checkFile(const std::filesystem::path& path, std::ostream& out) {
 
 // A layout folder: every file it holds as `check FILE` does, then the files checked against each other.
 bool checkFolder(const std::filesystem::path& folder, std::ostream& out) {
-    const LayoutFolder::Content content = LayoutFolder::open(folder);
-    if (!content.problem.empty()) {
-        out << folder.string() << ": not usable - " << content.problem << "\n";
+    model::LayoutInUse layout;
+    if (const std::string problem = layout.open(folder); !problem.empty()) {
+        out << folder.string() << ": not usable - " << problem << "\n";
         return false;
     }
+    const LayoutFolder::Content& content = *layout.folderContent();
     bool usable = true;
     if (content.extent == LayoutFolder::Extent::PagesOnly) // the index is missing: what was done instead
         out << content.layout.diagnostics.formatAll();

@@ -1,9 +1,8 @@
 #include "HandheldCommand.h"
 
+#include "binding/RailwayBinding.h"
 #include "bus/Bus.h"
 #include "connection/HandheldConnection.h"
-#include "model/Railway.h"
-#include "model/RailwayHandhelds.h"
 #include "station/StartupSequence.h"
 
 #include <QObject>
@@ -138,7 +137,8 @@ std::string eventLine(const HandheldEvent& event, bool json) {
     return line;
 }
 
-// The master, the railway it drives and the start-up that loads the railway, living as long as the command.
+// The master, the railway it drives (bound by the RailwayBinding) and the start-up that loads the railway,
+// living as long as the command.
 class HandheldRun final : public QObject {
 public:
     HandheldRun(StationClient& client, const HandheldOptions& options, std::ostream& out, std::ostream& err)
@@ -150,14 +150,14 @@ public:
                 [this, json = options.json](const HandheldEvent& event) {
                     out_ << eventLine(event, json) << std::endl;
                 });
-        railway_ = std::make_unique<model::Railway>(client.session());
-        driving_ = std::make_unique<model::RailwayHandhelds>(*railway_, handhelds_->master());
+        railways_ = std::make_unique<binding::RailwayBinding>();
+        railways_->sessionStarted(client.session(), &handhelds_->master());
         startup_ = std::make_unique<station::StartupSequence>(client.session());
         connect(startup_.get(), &station::StartupSequence::problem, this,
                 [this](const QString& message) { err_ << "note: " << message.toStdString() << '\n'; });
         connect(startup_.get(), &station::StartupSequence::ready, this,
                 [this](const station::StartupResult& result) {
-                    railway_->load(result);
+                    railways_->configurationLoaded(result);
                     handhelds_->devicesListed(result.devices);
                     const mcanhandhelds::HandheldMaster& master = handhelds_->master();
                     err_ << (master.isMaster()
@@ -169,16 +169,14 @@ public:
     }
     ~HandheldRun() override {
         startup_.reset(); // before the railway: the start-up feeds it
-        driving_.reset();
-        railway_.reset();
+        railways_.reset();
     }
 
 private:
     std::ostream& out_;
     std::ostream& err_;
     std::unique_ptr<connection::HandheldConnection> handhelds_;
-    std::unique_ptr<model::Railway> railway_;
-    std::unique_ptr<model::RailwayHandhelds> driving_;
+    std::unique_ptr<binding::RailwayBinding> railways_;
     std::unique_ptr<station::StartupSequence> startup_;
 };
 

@@ -1,13 +1,9 @@
 #include "LayoutCommand.h"
 
-#include "cs2config/ConfigFile.h"
-#include "cs2config/LayoutFolder.h"
+#include "model/LayoutInUse.h"
 #include "trackgraph/GraphReport.h"
-#include "trackgraph/TrackGraph.h"
 
 #include <algorithm>
-#include <filesystem>
-#include <optional>
 #include <ostream>
 
 namespace stellwerk::cli {
@@ -21,38 +17,24 @@ int usageError(std::ostream& err, const std::string& problem) {
     return 2;
 }
 
-// fahrstrassen.cs2 beside the track plan, when it is there and readable.
-std::optional<cs2config::RouteFile> routesOf(const std::filesystem::path& configDirectory) {
-    std::error_code error;
-    const std::filesystem::path file = configDirectory / "fahrstrassen.cs2";
-    if (!std::filesystem::is_regular_file(file, error))
-        return std::nullopt;
-    const cs2config::ConfigFile config = cs2config::ConfigFile::load(file);
-    if (const cs2config::RouteFile* routes = config.model<cs2config::RouteFile>())
-        return *routes;
-    return std::nullopt;
-}
-
 bool anyPageRead(const cs2config::TrackLayout& layout) {
     return std::any_of(layout.pages.begin(), layout.pages.end(),
                        [](const cs2config::TrackLayoutPage& page) { return page.loaded; });
 }
 
+// The graph of the layout in use once the folder is opened (its plan, accessories and routes).
 int runGraph(const std::string& folder, bool json, std::ostream& out, std::ostream& err) {
-    const cs2config::LayoutFolder::Content content = cs2config::LayoutFolder::open(folder);
-    if (!content.problem.empty()) {
-        err << "stellwerk-cli layout graph: " << content.problem << "\n";
+    model::LayoutInUse layout;
+    if (const std::string problem = layout.open(folder); !problem.empty()) {
+        err << "stellwerk-cli layout graph: " << problem << "\n";
         return 1;
     }
-    if (!anyPageRead(content.layout)) {
-        err << "stellwerk-cli layout graph: no page of the track plan in " << content.configDirectory.string()
+    if (!anyPageRead(*layout.files())) {
+        err << "stellwerk-cli layout graph: no page of the track plan in " << layout.folder().string()
             << " could be read\n";
         return 1;
     }
-    const std::optional<cs2config::RouteFile> routes = routesOf(content.configDirectory);
-    const trackgraph::TrackGraph graph = trackgraph::TrackGraph::derive(
-        content.layout, content.accessories ? &*content.accessories : nullptr, routes ? &*routes : nullptr);
-    out << (json ? trackgraph::toJson(graph) : trackgraph::describeGraph(graph));
+    out << (json ? trackgraph::toJson(*layout.graph()) : trackgraph::describeGraph(*layout.graph()));
     return 0;
 }
 

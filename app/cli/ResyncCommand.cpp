@@ -1,5 +1,6 @@
 #include "ResyncCommand.h"
 
+#include "binding/RailwayBinding.h"
 #include "model/Railway.h"
 #include "station/StartupSequence.h"
 
@@ -34,19 +35,18 @@ std::string locomotiveLine(const model::Locomotive& loco) {
     return line;
 }
 
-// The railway and the start-up that loads it, living as long as the command.
+// The railway (bound by the RailwayBinding) and the start-up that loads it, living as long as the command.
 class ResyncRun final : public QObject {
 public:
     ResyncRun(StationClient& client, bool stop, std::ostream& out, std::ostream& err)
         : QObject(&client), client_(client), out_(out), err_(err) {
-        railway_ =
-            std::make_unique<model::Railway>(client.session()); // before the start-up: it keeps its answers
-        railway_->setAftermath(stop ? model::Aftermath::StopLocomotives : model::Aftermath::RestoreConfirmed);
-        connect(railway_.get(), &model::Railway::locomotiveCommandFailed, this,
+        railways_.sessionStarted(client.session(), nullptr); // before the start-up: it keeps its answers
+        model::Railway* railway = railways_.railway();
+        railway->setAftermath(stop ? model::Aftermath::StopLocomotives : model::Aftermath::RestoreConfirmed);
+        connect(railway, &model::Railway::locomotiveCommandFailed, this,
                 [this](quint32, auto, int, const QString& reason) { fail(reason); });
-        connect(railway_.get(), &model::Railway::problem, this,
-                [this](const QString& message) { fail(message); });
-        connect(railway_.get(), &model::Railway::backInStep, this, &ResyncRun::done);
+        connect(railway, &model::Railway::problem, this, [this](const QString& message) { fail(message); });
+        connect(railway, &model::Railway::backInStep, this, &ResyncRun::done);
         station::StartupOptions options;
         options.readStatusData = false;
         startup_ = std::make_unique<station::StartupSequence>(client.session(), options);
@@ -54,14 +54,13 @@ public:
                 [this](const QString& message) { err_ << "note: " << message.toStdString() << '\n'; });
         connect(startup_.get(), &station::StartupSequence::ready, this,
                 [this](const station::StartupResult& result) {
-                    railway_->load(result);
-                    railway_->bringBackInStep();
+                    railways_.configurationLoaded(result);
+                    railways_.railway()->bringBackInStep();
                 });
         startup_->start();
     }
     ~ResyncRun() override {
-        startup_.reset();
-        railway_.reset();
+        startup_.reset(); // before the railway: the start-up feeds it
     }
 
 private:
@@ -71,10 +70,11 @@ private:
     }
 
     void done(int answered, int unanswered) {
-        const auto& locomotives = railway_->state().locomotives().items();
-        out_ << (railway_->aftermath() == model::Aftermath::StopLocomotives ? "ok: stopped " : "ok: sent ")
+        const model::Railway& railway = *railways_.railway();
+        const auto& locomotives = railway.state().locomotives().items();
+        out_ << (railway.aftermath() == model::Aftermath::StopLocomotives ? "ok: stopped " : "ok: sent ")
              << locomotives.size()
-             << (railway_->aftermath() == model::Aftermath::StopLocomotives
+             << (railway.aftermath() == model::Aftermath::StopLocomotives
                      ? " locomotives"
                      : " locomotives their confirmed speed")
              << " and read " << answered << " states again" << (unanswered ? ", " : "")
@@ -87,7 +87,7 @@ private:
     StationClient& client_;
     std::ostream& out_;
     std::ostream& err_;
-    std::unique_ptr<model::Railway> railway_;
+    binding::RailwayBinding railways_;
     std::unique_ptr<station::StartupSequence> startup_;
     int failures_ = 0;
 };

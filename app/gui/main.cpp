@@ -1,18 +1,17 @@
 // Start-up of the Stellwerk desktop application: language from the settings, then the main window, then the
 // station (the one in the settings or on the command line; the embedded simulated one when none is set).
 
+#include "binding/RailwayBinding.h"
 #include "connect/StationUrlSettings.h"
 #include "connection/StationConnection.h"
 #include "mcanhandhelds/HandheldBook.h"
+#include "model/LayoutInUse.h"
 #include "model/OccupantBook.h"
 #include "model/Railway.h"
-#include "model/RailwayDevices.h"
-#include "model/RailwayThrottles.h"
 #include "monitor/FrameDecoderPanel.h"
 #include "shell/ApplicationInfo.h"
 #include "shell/LanguageSettings.h"
 #include "shell/MainWindow.h"
-#include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "shell/Workspace.h"
 #include "sim/EmbeddedStation.h"
@@ -33,7 +32,6 @@
 
 namespace {
 
-using stellwerk::connection::ConnectionDevices;
 using stellwerk::connection::StationConnection;
 
 // How long a screenshot waits for the station to be ready before it shows whatever state it reached.
@@ -232,24 +230,6 @@ void reportAndQuit(stellwerk::ui::MainWindow& window, const StationConnection& c
     });
 }
 
-// The railway's accessories and contacts that devices switch and light, and the locos OpenRailCAN throttles
-// drive, following the connection's device sessions as they come and go. The bindings are read anew for
-// every railway: the Devices panel may have changed them.
-void bindDevices(ConnectionDevices& connectionDevices, stellwerk::model::Railway& railway, QSettings& saved) {
-    auto* devices = new stellwerk::model::RailwayDevices(railway,
-                                                         connectionDevices.onLocalStation()
-                                                             ? stellwerk::model::DeviceBindings::demo()
-                                                             : stellwerk::model::DeviceBindings::load(saved),
-                                                         &railway);
-    auto* throttles = new stellwerk::model::RailwayThrottles(railway, &railway);
-    const auto follow = [&connectionDevices, devices, throttles] {
-        devices->setSessions(connectionDevices.orcSession(), connectionDevices.roModules());
-        throttles->setSession(connectionDevices.orcSession());
-    };
-    QObject::connect(&connectionDevices, &ConnectionDevices::devicesChanged, devices, follow);
-    follow();
-}
-
 } // namespace
 
 int main(int argc, char* argv[]) {
@@ -282,18 +262,21 @@ int main(int argc, char* argv[]) {
     connectionSettings.devices = stellwerk::connection::DeviceSettings::load(deviceFile);
     connectionSettings.localStationDevices = stellwerk::connection::DeviceSettings::embeddedDemo();
     StationConnection connection{std::move(connectionSettings)}; // outlives the railway and the window
-    stellwerk::ui::RailwayBinding railways(connection);          // a railway model per session
-    QObject::connect(&railways, &stellwerk::ui::RailwayBinding::railwayChanged, &railways,
-                     [&connection, &deviceFile](stellwerk::model::Railway* railway) {
-                         if (railway)
-                             bindDevices(connection.devices(), *railway, deviceFile);
-                     });
+    stellwerk::model::LayoutInUse layout; // the station's download, or a folder the user opened
+    // A railway model per session, bound to the handhelds and devices, and the layout in use it was loaded
+    // with. The devices' bindings are read anew for every railway: the Devices panel may have changed them.
+    stellwerk::binding::RailwayBinding railways(connection, &layout);
+    railways.bindDevices([&connection, &deviceFile] {
+        return connection.devices().onLocalStation() ? stellwerk::model::DeviceBindings::demo()
+                                                     : stellwerk::model::DeviceBindings::load(deviceFile);
+    });
     QObject::connect(
-        &railways, &stellwerk::ui::RailwayBinding::railwayChanged, &railways,
+        &railways, &stellwerk::binding::RailwayBinding::railwayChanged, &railways,
         [&demoOccupants](stellwerk::model::Railway* railway) { demoOccupants.setRailway(railway); });
     stellwerk::ui::MainWindow window(translations);
     window.setConnection(&connection);
-    QObject::connect(&railways, &stellwerk::ui::RailwayBinding::railwayChanged, &window,
+    window.setLayoutInUse(&layout);
+    QObject::connect(&railways, &stellwerk::binding::RailwayBinding::railwayChanged, &window,
                      &stellwerk::ui::MainWindow::setRailway);
     if (!options.captureFile.isEmpty()) {
         if (const QString error = window.frameDecoder()->loadCapture(options.captureFile); !error.isEmpty()) {

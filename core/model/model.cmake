@@ -8,6 +8,8 @@ target_sources(stellwerk-model PRIVATE
     model/DeviceBindings.cpp
     model/DeviceBindings.h
     model/FeedbackContact.cpp
+    model/LayoutInUse.cpp
+    model/LayoutInUse.h
     model/Locomotive.cpp
     model/OccupantBook.cpp
     model/OccupantBook.h
@@ -33,4 +35,4 @@ target_sources(stellwerk-model PRIVATE
     model/UnconfirmedCommands.cpp
     model/UnconfirmedCommands.h
 )
-target_link_libraries(stellwerk-model PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-station stellwerk-mcanhandhelds stellwerk-orccentral stellwerk-romodule Qt6::Core)
+target_link_libraries(stellwerk-model PUBLIC stellwerk-cs2 stellwerk-cs2config stellwerk-station stellwerk-mcanhandhelds stellwerk-orccentral stellwerk-romodule stellwerk-trackgraph Qt6::Core)

@@ -261,7 +261,6 @@ void MainWindow::setConnection(connection::StationConnection* station) {
     m_startupProgress->setConnection(station);
     m_traffic->setBuses(station ? &station->buses() : nullptr);
     m_busMonitor->setBuses(station ? &station->buses() : nullptr);
-    m_trackPlan->setConnection(station);
     m_handhelds->setHandhelds(station ? &station->handhelds() : nullptr);
     m_devices->setDevices(station ? &station->devices() : nullptr);
     if (m_connection) {
@@ -271,6 +270,10 @@ void MainWindow::setConnection(connection::StationConnection* station) {
                 &MainWindow::connectionStateChanged);
         connect(m_connection, &QObject::destroyed, this, [this] { m_connection = nullptr; });
     }
+}
+
+void MainWindow::setLayoutInUse(model::LayoutInUse* layout) {
+    m_trackPlan->setLayoutInUse(layout);
 }
 
 void MainWindow::setRailway(model::Railway* railway) {

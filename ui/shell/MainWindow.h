@@ -11,8 +11,9 @@ namespace stellwerk::connection {
 class StationConnection;
 }
 namespace stellwerk::model {
+class LayoutInUse;
 class Railway;
-}
+} // namespace stellwerk::model
 
 namespace stellwerk::ui {
 
@@ -77,6 +78,8 @@ public:
 
     // The railway the panels show and STOP / GO acts on (null: none); see RailwayBinding.
     void setRailway(model::Railway* railway);
+    // The layout the plan shows and opens and exports folders into (it must outlive the window).
+    void setLayoutInUse(model::LayoutInUse* layout);
     // The station connection the status bar shows and Station → Connect… reconnects (null: none). It
     // must outlive the window or be replaced before it goes.
     void setConnection(connection::StationConnection* station);

@@ -12,7 +12,6 @@ target_sources(stellwerk-ui PRIVATE
     shell/LanguageSettings.cpp shell/LanguageSettings.h
     shell/MainWindow.cpp shell/MainWindow.h
     shell/PassingMessage.cpp shell/PassingMessage.h
-    shell/RailwayBinding.cpp shell/RailwayBinding.h
     shell/Translations.cpp shell/Translations.h
     shell/WindowLayoutSettings.cpp shell/WindowLayoutSettings.h
     shell/Workspace.cpp shell/Workspace.h

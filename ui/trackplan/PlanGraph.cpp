@@ -1,45 +1,32 @@
 #include "trackplan/PlanGraph.h"
 
-#include "cs2config/ConfigFile.h"
-
 #include <algorithm>
 
 namespace stellwerk::ui {
 namespace {
 
-// True when the source's pages are the shown layout's, in the same order.
-bool samePages(const trackgraph::GraphSource& source, const model::TrackLayout& shown) {
+// True when the graph's pages are the shown layout's, in the same order.
+bool samePages(const trackgraph::TrackGraph& graph, const model::TrackLayout& shown) {
     const std::vector<model::LayoutPage>& pages = shown.pages();
-    if (pages.empty() || pages.size() != source.pages.size())
+    if (pages.empty() || pages.size() != graph.pages().size())
         return false;
     for (std::size_t i = 0; i < pages.size(); ++i)
-        if (pages[i].id != source.pages[i].id)
+        if (pages[i].id != graph.pages()[i].id)
             return false;
     return true;
 }
 
 } // namespace
 
-std::shared_ptr<const PlanGraph> PlanGraph::derive(const trackgraph::GraphSource& source,
-                                                   const model::TrackLayout& shown) {
-    if (!samePages(source, shown))
+std::shared_ptr<const PlanGraph> PlanGraph::of(std::shared_ptr<const trackgraph::TrackGraph> graph,
+                                               const model::TrackLayout& shown) {
+    if (!graph || !samePages(*graph, shown))
         return nullptr;
-    return std::shared_ptr<const PlanGraph>(new PlanGraph(trackgraph::TrackGraph::derive(source), shown));
+    return std::shared_ptr<const PlanGraph>(new PlanGraph(std::move(graph), shown));
 }
 
-std::optional<cs2config::RouteFile> PlanGraph::routesIn(const std::filesystem::path& configDirectory) {
-    std::error_code error;
-    const std::filesystem::path file = configDirectory / "fahrstrassen.cs2";
-    if (!std::filesystem::is_regular_file(file, error))
-        return std::nullopt;
-    const cs2config::ConfigFile config = cs2config::ConfigFile::load(file);
-    if (const cs2config::RouteFile* routes = config.model<cs2config::RouteFile>())
-        return *routes;
-    return std::nullopt;
-}
-
-PlanGraph::PlanGraph(trackgraph::TrackGraph graph, const model::TrackLayout& shown)
-    : m_graph(std::move(graph)), m_planTiles(m_graph.tiles().size()) {
+PlanGraph::PlanGraph(std::shared_ptr<const trackgraph::TrackGraph> graph, const model::TrackLayout& shown)
+    : m_graph(std::move(graph)), m_planTiles(m_graph->tiles().size()) {
     const std::vector<model::LayoutPage>& pages = shown.pages();
     m_graphTiles.resize(pages.size());
     for (int p = 0; p < int(pages.size()); ++p) {
@@ -48,7 +35,7 @@ PlanGraph::PlanGraph(trackgraph::TrackGraph graph, const model::TrackLayout& sho
         tiles.reserve(page.tiles.size());
         for (int t = 0; t < int(page.tiles.size()); ++t) {
             const cs2config::TrackPosition& at = page.tiles[std::size_t(t)].position;
-            const std::optional<trackgraph::TileId> id = m_graph.tileAt({page.id, at.column, at.row});
+            const std::optional<trackgraph::TileId> id = m_graph->tileAt({page.id, at.column, at.row});
             tiles.push_back(id);
             if (id && !m_planTiles[*id])
                 m_planTiles[*id] = model::TileRef{p, t};
@@ -70,17 +57,17 @@ std::optional<model::TileRef> PlanGraph::planTile(trackgraph::TileId tile) const
 
 std::vector<int> PlanGraph::blocksAt(model::TileRef tile) const {
     const std::optional<trackgraph::TileId> id = graphTile(tile);
-    return id ? m_graph.blocksAt(*id) : std::vector<int>();
+    return id ? m_graph->blocksAt(*id) : std::vector<int>();
 }
 
 std::vector<const trackgraph::Problem*> PlanGraph::problemsAt(model::TileRef tile) const {
     const std::optional<trackgraph::TileId> id = graphTile(tile);
-    return id ? m_graph.problemsAt(*id) : std::vector<const trackgraph::Problem*>();
+    return id ? m_graph->problemsAt(*id) : std::vector<const trackgraph::Problem*>();
 }
 
 std::vector<int> PlanGraph::problemTilesOf(int page) const {
     std::vector<int> tiles;
-    for (const trackgraph::Problem& problem : m_graph.problems())
+    for (const trackgraph::Problem& problem : m_graph->problems())
         if (const std::optional<model::TileRef> at = planTile(problem.tile); at && at->page == page)
             tiles.push_back(at->tile);
     std::sort(tiles.begin(), tiles.end());

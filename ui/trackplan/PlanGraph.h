@@ -3,26 +3,23 @@
 #include "model/TrackLayout.h"
 #include "trackgraph/TrackGraph.h"
 
-#include <filesystem>
 #include <memory>
 #include <optional>
 #include <vector>
 
 namespace stellwerk::ui {
 
-// The track graph of the layout the plan shows, derived once when a layout is loaded, with the plan's tiles
-// (page index, tile index) translated to the graph's and back. The plan keeps one and hands it to its page
-// views and its block popup, so that nothing derives the graph while painting.
+// The track graph of the layout in use (derived there, once per layout) with the plan's tiles (page index,
+// tile index) translated to the graph's and back. The plan keeps one and hands it to its page views and its
+// block popup.
 class PlanGraph final {
 public:
-    // Derives the graph of `source`, which must hold the pages `shown` was made from (same numbers, same
-    // order); null when it does not (a railway not loaded yet) or has no page.
-    static std::shared_ptr<const PlanGraph> derive(const trackgraph::GraphSource& source,
-                                                   const model::TrackLayout& shown);
-    // fahrstrassen.cs2 of a configuration folder, when it is there and readable.
-    static std::optional<cs2config::RouteFile> routesIn(const std::filesystem::path& configDirectory);
+    // The tiles of `graph`, which must have been derived from the pages `shown` was made from (same
+    // numbers, same order); null when it was not, or there is no graph.
+    static std::shared_ptr<const PlanGraph> of(std::shared_ptr<const trackgraph::TrackGraph> graph,
+                                               const model::TrackLayout& shown);
 
-    const trackgraph::TrackGraph& graph() const { return m_graph; }
+    const trackgraph::TrackGraph& graph() const { return *m_graph; }
     std::optional<trackgraph::TileId> graphTile(model::TileRef tile) const;
     std::optional<model::TileRef> planTile(trackgraph::TileId tile) const;
     // The blocks a plan tile belongs to (none for a turnout, a label, ...).
@@ -33,9 +30,9 @@ public:
     std::vector<int> problemTilesOf(int page) const;
 
 private:
-    PlanGraph(trackgraph::TrackGraph graph, const model::TrackLayout& shown);
+    PlanGraph(std::shared_ptr<const trackgraph::TrackGraph> graph, const model::TrackLayout& shown);
 
-    trackgraph::TrackGraph m_graph;
+    std::shared_ptr<const trackgraph::TrackGraph> m_graph;
     // Per plan page, per plan tile: the graph's tile; and per graph tile, the first plan tile drawing it.
     std::vector<std::vector<std::optional<trackgraph::TileId>>> m_graphTiles;
     std::vector<std::optional<model::TileRef>> m_planTiles;

@@ -4,7 +4,7 @@
 #include "common/NotReported.h"
 #include "common/ProblemBar.h"
 #include "common/ToolIcons.h"
-#include "connection/StationConnection.h"
+#include "model/LayoutInUse.h"
 #include "model/Railway.h"
 #include "trackgraph/TrackGraph.h"
 #include "trackplan/BlockDescription.h"
@@ -34,17 +34,6 @@
 #include <filesystem>
 
 namespace stellwerk::ui {
-namespace {
-
-// The downloaded form of an opened folder's pages, which model::TrackLayout is built from.
-std::vector<station::DownloadedPage> downloadedPages(const cs2config::TrackLayout& layout) {
-    std::vector<station::DownloadedPage> pages;
-    for (const cs2config::TrackLayoutPage& page : layout.pages)
-        pages.push_back({page.id, page.name, page.page});
-    return pages;
-}
-
-} // namespace
 
 TrackPlanPanel::TrackPlanPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("trackPlanPanel"));
@@ -110,8 +99,7 @@ TrackPlanPanel::TrackPlanPanel(QWidget* parent) : QWidget(parent) {
     m_source->setContentsMargins(8, 0, 8, 0);
     m_tabs->setCornerWidget(m_source, Qt::TopRightCorner);
     layout->addWidget(m_tabs, 1);
-    retranslate();
-    rebuild();
+    setLayoutInUse(new model::LayoutInUse(this));
 }
 
 TrackPlanPanel::~TrackPlanPanel() = default;
@@ -121,7 +109,7 @@ void TrackPlanPanel::setRailway(model::Railway* railway) {
         disconnect(m_railway, nullptr, this, nullptr);
     m_railway = railway;
     if (m_railway) {
-        connect(m_railway, &model::Railway::loaded, this, &TrackPlanPanel::rebuild);
+        connect(m_railway, &model::Railway::loaded, this, &TrackPlanPanel::railwayLoaded);
         connect(m_railway, &model::Railway::tilesChanged, this, &TrackPlanPanel::tilesChanged);
         connect(m_railway, &model::Railway::routeStarted, this, &TrackPlanPanel::routeChanged);
         connect(m_railway, &model::Railway::routeFinished, this, &TrackPlanPanel::routeChanged);
@@ -134,32 +122,49 @@ void TrackPlanPanel::setRailway(model::Railway* railway) {
         connect(m_railway, &QObject::destroyed, this, [this] { setRailway(nullptr); });
     }
     m_layoutState->setRailway(railway);
-    if (!m_folder)
+    if (!showsFolder())
         rebuild();
     updateActions();
 }
 
-void TrackPlanPanel::setConnection(connection::StationConnection* connection) {
-    m_connection = connection;
+void TrackPlanPanel::setLayoutInUse(model::LayoutInUse* layout) {
+    if (m_layoutInUse) {
+        disconnect(m_layoutInUse, nullptr, this, nullptr);
+        if (m_layoutInUse->parent() == this) // the panel's own, until it was given one
+            m_layoutInUse->deleteLater();
+    }
+    m_layoutInUse = layout;
+    connect(m_layoutInUse, &model::LayoutInUse::changed, this, &TrackPlanPanel::rebuild);
+    rebuild();
+}
+
+// The railway read the station again: its states are new, the pages are the layout in use's.
+void TrackPlanPanel::railwayLoaded() {
+    m_setRoutes->update(isLive() ? m_railway.data() : nullptr);
+    stateReportedChanged();
+    for (TrackPageView* view : m_views)
+        if (view)
+            view->update();
+}
+
+bool TrackPlanPanel::showsFolder() const {
+    return m_layoutInUse->origin() == model::LayoutInUse::Origin::Folder;
 }
 
 bool TrackPlanPanel::openFolder(const QString& folder) {
-    cs2config::LayoutFolder::Content content = cs2config::LayoutFolder::open(folder.toStdString());
-    if (!content.problem.empty()) {
-        showProblem([problem = QString::fromStdString(content.problem)] {
+    if (const std::string problem = m_layoutInUse->open(folder.toStdString()); !problem.empty()) {
+        showProblem([problem = QString::fromStdString(problem)] {
             return tr("Cannot open the layout: %1").arg(problem);
         });
         return false;
     }
-    m_folderNames.clear();
-    if (content.accessories)
-        for (const cs2config::Accessory& accessory : content.accessories->accessories)
-            m_folderNames[accessory.id] = QString::fromStdString(accessory.name);
-    m_folderLayout = model::TrackLayout(downloadedPages(content.layout));
-    m_folderRoutes = PlanGraph::routesIn(content.configDirectory);
-    if (m_connection) // the pictures of the folder's locomotives, in its icons folder
-        m_connection->pictures().setFolder(QString::fromStdString(
-            cs2config::LayoutFolder::iconsDirectoryOf(content.configDirectory).string()));
+    showOpenedFolder();
+    return true;
+}
+
+// What opening the folder in use found: a missing index, files that disagree (nothing: the bar hides).
+void TrackPlanPanel::showOpenedFolder() {
+    const cs2config::LayoutFolder::Content& content = *m_layoutInUse->folderContent();
     const bool withoutIndex = content.extent == cs2config::LayoutFolder::Extent::PagesOnly;
     showProblem([withoutIndex, findings = content.findings, pages = int(content.layout.pages.size()),
                  index = content.configDirectory / "gleisbild.cs2"] {
@@ -173,9 +178,6 @@ bool TrackPlanPanel::openFolder(const QString& folder) {
             parts << findingsText(findings);
         return parts.join(QLatin1Char('\n'));
     });
-    m_folder = std::move(content);
-    rebuild();
-    return true;
 }
 
 // What the layout check found, the first few in full (`stellwerk-cli cs2 check DIR` lists them all).
@@ -198,40 +200,18 @@ QString TrackPlanPanel::findingsText(const std::vector<cs2config::LayoutFinding>
 }
 
 void TrackPlanPanel::showStationPlan() {
-    m_folder.reset();
-    if (m_connection)
-        m_connection->pictures().setFolder({});
-    m_folderLayout = {};
-    m_folderNames.clear();
-    m_folderRoutes.reset();
     showProblem({});
-    rebuild();
+    m_layoutInUse->showStation();
 }
 
 bool TrackPlanPanel::exportTo(const QString& folder) {
-    cs2config::ConfigFolderFiles files;
-    if (m_folder) {
-        files = cs2config::LayoutFolder::filesOf(m_folder->layout.plan, m_folder->layout.pages);
-        files.merge(cs2config::LayoutFolder::companionFiles(m_folder->configDirectory));
-    } else if (m_connection && m_connection->startupResult().trackPlan) {
-        const station::StartupResult& result = m_connection->startupResult();
-        std::vector<cs2config::TrackLayoutPage> pages;
-        for (const station::DownloadedPage& downloaded : result.pages) {
-            cs2config::TrackLayoutPage& page = pages.emplace_back();
-            page.id = downloaded.id;
-            page.name = downloaded.name;
-            page.loaded = true;
-            page.page = downloaded.page;
-        }
-        files = cs2config::LayoutFolder::filesOf(*result.trackPlan, pages);
-        files.merge(cs2config::LayoutFolder::stationFiles(result.files));
-    } else {
+    if (!m_layoutInUse->hasPlan()) {
         showProblem([] {
             return tr("There is no track plan to export: connect to a station or open a layout first.");
         });
         return false;
     }
-    const std::string problem = cs2config::LayoutFolder::write(folder.toStdString(), files);
+    const std::string problem = m_layoutInUse->exportTo(folder.toStdString());
     if (problem.empty())
         showProblem({});
     else
@@ -253,13 +233,11 @@ void TrackPlanPanel::rebuild() {
         m_tabs->removeTab(0);
         delete page;
     }
-    m_live = !m_folder && m_railway;
-    m_layout = m_folder ? std::make_shared<const model::TrackLayout>(m_folderLayout)
-               : m_live ? std::make_shared<const model::TrackLayout>(m_railway->layout())
-                        : nullptr;
+    m_live = m_layoutInUse->origin() == model::LayoutInUse::Origin::Station && m_railway;
+    m_layout = m_layoutInUse->pages();
     indexRoutes();
     m_setRoutes->update(m_live ? m_railway.data() : nullptr);
-    m_graph = m_layout ? PlanGraph::derive(graphSource(), *m_layout) : nullptr;
+    m_graph = m_layout ? PlanGraph::of(m_layoutInUse->graph(), *m_layout) : nullptr;
     m_blockPopup->hide();
     if (m_layout)
         for (int i = 0; i < int(m_layout->pages().size()); ++i)
@@ -285,9 +263,8 @@ void TrackPlanPanel::addPage(int index) {
         notice->setAlignment(Qt::AlignCenter);
         notice->setWordWrap(true);
         notice->setMargin(24);
-        if (m_folder)
-            notice->setToolTip(
-                QString::fromStdString(m_folder->layout.pages[std::size_t(index)].file.string()));
+        notice->setToolTip(QString::fromStdString(
+            m_layoutInUse->folderContent()->layout.pages[std::size_t(index)].file.string()));
         scroll->setWidgetResizable(true);
         scroll->setWidget(notice);
         m_views.push_back(nullptr);
@@ -319,9 +296,10 @@ void TrackPlanPanel::addPage(int index) {
 // Why a page of an opened folder has nothing to show (its file is missing or unreadable); empty for a
 // page that was read.
 QString TrackPlanPanel::emptyPageText(int index) const {
-    if (!m_folder || index < 0 || index >= int(m_folder->layout.pages.size()))
+    const cs2config::LayoutFolder::Content* folder = m_layoutInUse->folderContent();
+    if (!showsFolder() || index < 0 || index >= int(folder->layout.pages.size()))
         return {};
-    const cs2config::TrackLayoutPage& page = m_folder->layout.pages[std::size_t(index)];
+    const cs2config::TrackLayoutPage& page = folder->layout.pages[std::size_t(index)];
     if (page.loaded)
         return {};
     if (page.file.empty())
@@ -430,24 +408,18 @@ void TrackPlanPanel::stateReportedChanged() {
             view->setDimmed(isLive() && !isReported());
 }
 
+// The railway's names while live (they may have been changed since the download), else the files'.
 QString TrackPlanPanel::accessoryName(std::int64_t id) const {
-    if (m_folder) {
-        const auto it = m_folderNames.find(id);
-        return it == m_folderNames.end() ? QString() : it->second;
-    }
-    const model::Accessory* accessory = m_railway ? m_railway->accessory(id) : nullptr;
+    if (!isLive())
+        return QString::fromStdString(m_layoutInUse->accessoryName(id));
+    const model::Accessory* accessory = m_railway->accessory(id);
     return accessory ? accessory->name() : QString();
 }
 
 QString TrackPlanPanel::routeName(std::int64_t id) const {
-    if (m_folder) {
-        if (m_folderRoutes)
-            for (const cs2config::Route& route : m_folderRoutes->routes)
-                if (route.id == id)
-                    return QString::fromStdString(route.name);
-        return {};
-    }
-    const model::Route* route = m_railway ? m_railway->route(id) : nullptr;
+    if (!isLive())
+        return QString::fromStdString(m_layoutInUse->routeName(id));
+    const model::Route* route = m_railway->route(id);
     return route ? route->name() : QString();
 }
 
@@ -563,23 +535,6 @@ void TrackPlanPanel::applyBlocks() {
         m_blockPopup->hide();
 }
 
-// The source of the graph: the opened folder's files, or the station's download the railway was made of.
-trackgraph::GraphSource TrackPlanPanel::graphSource() const {
-    if (m_folder)
-        return trackgraph::GraphSource::of(m_folder->layout,
-                                           m_folder->accessories ? &*m_folder->accessories : nullptr,
-                                           m_folderRoutes ? &*m_folderRoutes : nullptr);
-    trackgraph::GraphSource source;
-    if (!m_live || !m_connection)
-        return source;
-    const station::StartupResult& result = m_connection->startupResult();
-    for (const station::DownloadedPage& page : result.pages)
-        source.pages.push_back({page.id, page.name, &page.page.elements});
-    source.accessories = result.accessories ? &*result.accessories : nullptr;
-    source.routes = result.routes ? &*result.routes : nullptr;
-    return source;
-}
-
 void TrackPlanPanel::goToPage(std::int64_t pageId) {
     for (int i = 0; i < int(m_layout->pages().size()); ++i)
         if (m_layout->pages()[std::size_t(i)].id == pageId)
@@ -607,8 +562,8 @@ bool TrackPlanPanel::mayOpen() const {
 }
 
 void TrackPlanPanel::updateActions() {
-    m_station->setVisible(m_folder.has_value() && m_railway);
-    m_export->setEnabled(m_folder.has_value() || (m_connection && m_connection->startupResult().trackPlan));
+    m_station->setVisible(showsFolder() && m_railway);
+    m_export->setEnabled(m_layoutInUse->hasPlan());
     const bool drawn =
         std::any_of(m_views.begin(), m_views.end(), [](const TrackPageView* view) { return view; });
     for (QAction* action : {m_zoomIn, m_zoomOut, m_fit})
@@ -633,11 +588,11 @@ void TrackPlanPanel::retranslate() {
             action->text(), action->shortcut().toString(QKeySequence::NativeText)));
     m_emptyText->setText(tr("No track plan: connect to a station or open a CS2 layout folder."));
     // A folder by its name (the one holding config/), the whole path in the tooltip.
-    const std::filesystem::path config = m_folder ? m_folder->configDirectory : std::filesystem::path();
+    const std::filesystem::path config = m_layoutInUse->folder();
     m_source->setText(
-        m_folder    ? tr("Files: %1").arg(QString::fromStdString(config.parent_path().filename().string()))
-        : m_railway ? tr("Live from the station")
-                    : QString());
+        showsFolder() ? tr("Files: %1").arg(QString::fromStdString(config.parent_path().filename().string()))
+        : m_railway   ? tr("Live from the station")
+                      : QString());
     m_source->setToolTip(QString::fromStdString(config.string()));
     m_blockPopup->hide(); // its words are in the language before
     if (m_layout)

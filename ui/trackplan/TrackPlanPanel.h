@@ -1,7 +1,6 @@
 #pragma once
 
 #include "cs2config/LayoutFolder.h"
-#include "cs2config/RouteFile.h"
 #include "model/TrackLayout.h"
 #include "trackplan/PageZoom.h"
 
@@ -20,16 +19,11 @@ class QMenu;
 class QTabWidget;
 class QToolBar;
 
-namespace stellwerk::connection {
-class StationConnection;
-}
 namespace stellwerk::model {
 class FeedbackContact;
+class LayoutInUse;
 class Railway;
 } // namespace stellwerk::model
-namespace stellwerk::trackgraph {
-struct GraphSource;
-}
 
 namespace stellwerk::ui {
 
@@ -41,11 +35,11 @@ class SetRoutes;
 class TrackPageView;
 struct TrackTileLook;
 
-// The track plan: every page of the station's gleisbild as a tab, live turnout, signal, contact and
-// route states, switching by click, and opening or exporting a CS2 configuration folder. Without a
-// station it shows a plan opened from files. It derives the track graph of the layout it shows once per
-// layout (PlanGraph) and, when asked, draws the blocks, lists and marks the drawing's problems, and says
-// what a block clicked leads to.
+// The track plan: every page of the layout in use as a tab, with the railway's live turnout, signal,
+// contact and route states while that layout is the station's, switching by click, and "Open layout..."
+// and "Export layout..." asked of the layout in use. It shows the layout in use and its track graph
+// (PlanGraph) and, when asked, draws the blocks, lists and marks the drawing's problems, and says what a
+// block clicked leads to.
 class TrackPlanPanel final : public QWidget {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(TrackPlanPanel)
@@ -56,12 +50,15 @@ public:
 
     // The railway whose plan and states the panel shows (null: none; an opened folder stays shown).
     void setRailway(model::Railway* railway);
-    // The connection whose downloaded files an export writes beside the plan.
-    void setConnection(connection::StationConnection* connection);
+    // The layout it shows and asks to open and export folders (the program's, which the railway's binding
+    // sets from the station's download; it must outlive the panel); until then one of its own, which only
+    // opened folders fill.
+    void setLayoutInUse(model::LayoutInUse* layout);
+    model::LayoutInUse& layoutInUse() const { return *m_layoutInUse; }
 
-    // Shows the layout of a CS2 configuration folder (the folder or its `config`), as far as it is there
-    // (the pages of gleisbilder/ when gleisbild.cs2 is missing, with a warning), or a single page file;
-    // false and a problem shown when nothing can be read.
+    // Opens a CS2 configuration folder (the folder or its `config`) as the layout in use, as far as it is
+    // there (the pages of gleisbilder/ when gleisbild.cs2 is missing, with a warning), or a single page
+    // file; false and a problem shown when nothing can be read (the layout shown stays).
     bool openFolder(const QString& folder);
     // Asked before "Open layout..." shows its folder dialog; opening goes on only when it returns true
     // (the window asks about unsaved locomotive edits there).
@@ -78,7 +75,7 @@ public:
 
     QTabWidget* pageTabs() const { return m_tabs; }
     TrackPageView* pageView(int page) const;
-    // The layout shown: the panel's own copy of the railway's or the opened folder's (null: none).
+    // The pages shown: the layout in use's (null: none).
     const model::TrackLayout* layout() const { return m_layout.get(); }
     // Says when the layout is stopped, halted or not reported; hidden while trains may run.
     LayoutStateBanner* layoutState() const { return m_layoutState; }
@@ -98,7 +95,7 @@ public:
     // The red bar that shows it (folded, dismissed).
     ProblemBar* problemBar() const { return m_problem; }
 
-    // The track graph of the layout shown (null: none, or not derived: a railway not loaded yet).
+    // The track graph of the layout shown, with the plan's tiles (null: no page).
     const PlanGraph* graph() const { return m_graph.get(); }
     // "Blocks" on the plan's toolbar (and in the View menu): outlines the blocks with their names, lists
     // the drawing's problems in the bar above the plan and marks their tiles; a click on a block's track
@@ -126,8 +123,9 @@ protected:
 
 private:
     void rebuild();
-    // True while the pages shown are the railway's, with its live states.
+    void railwayLoaded();
     QString occupantName(const model::FeedbackContact& contact) const;
+    // True while the pages shown are the station's, with the railway's live states.
     bool isLive() const;
     bool isReported() const;
     TrackTileLook lookOn(const model::TrackLayout& layout, model::TileRef ref) const;
@@ -143,7 +141,6 @@ private:
     void goToPage(std::int64_t pageId);
     QString accessoryName(std::int64_t id) const;
     QString routeName(std::int64_t id) const;
-    trackgraph::GraphSource graphSource() const;
     void applyBlocks();
     void showBlock(model::TileRef tile, int block);
     QString graphToolTip(model::TileRef tile) const;
@@ -154,12 +151,11 @@ private:
     void updateIcons();
     void retranslate();
 
+    bool showsFolder() const;
+    void showOpenedFolder();
+
     QPointer<model::Railway> m_railway;
-    QPointer<connection::StationConnection> m_connection;
-    std::optional<cs2config::LayoutFolder::Content> m_folder;
-    model::TrackLayout m_folderLayout;
-    std::map<std::int64_t, QString> m_folderNames;
-    std::optional<cs2config::RouteFile> m_folderRoutes;
+    model::LayoutInUse* m_layoutInUse = nullptr; // given ones outlive the panel
     // Shared with the page views, which keep their page alive whatever happens to the railway.
     std::shared_ptr<const model::TrackLayout> m_layout;
     bool m_live = false;

@@ -4,6 +4,7 @@
 // reports the train standing there.
 
 #include "EmbeddedStationSupport.h"
+#include "binding/RailwayBinding.h"
 #include "model/RailwayDevices.h"
 #include "sim/EmbeddedStation.h"
 #include "sim/SimulatedOrcDevices.h"
@@ -22,36 +23,21 @@ namespace {
 
 constexpr int WaitMs = 10000;
 
-// The GUI program's wiring: the demo devices with the embedded station, a railway per session and its
-// devices following the connection's sessions.
+// The GUI program's wiring: the demo devices with the embedded station, and the railway binding that makes
+// a railway per session with its devices following the connection's sessions.
 struct DemoApp {
-    DemoApp() : connection(settings()) {
-        QObject::connect(&connection, &StationConnection::sessionStarted, &connection,
-                         [this](station::StationSession* session) {
-                             devices.reset();
-                             railway = std::make_unique<model::Railway>(*session);
-                             devices = std::make_unique<model::RailwayDevices>(*railway,
-                                                                               model::DeviceBindings::demo());
-                             follow();
-                         });
-        QObject::connect(&connection, &StationConnection::configurationLoaded, &connection,
-                         [this](const station::StartupResult& result) { railway->load(result); });
-        QObject::connect(&connection.devices(), &ConnectionDevices::devicesChanged, &connection,
-                         [this] { follow(); });
+    DemoApp() : connection(settings()), railways(connection) {
+        railways.bindDevices([] { return model::DeviceBindings::demo(); });
     }
     static connection::ConnectionSettings settings() {
         connection::ConnectionSettings settings = support::withEmbeddedStation();
         settings.localStationDevices = connection::DeviceSettings::embeddedDemo();
         return settings;
     }
-    void follow() {
-        if (devices)
-            devices->setSessions(connection.devices().orcSession(), connection.devices().roModules());
-    }
+    model::Railway* railway() const { return railways.railway(); }
 
     StationConnection connection;
-    std::unique_ptr<model::Railway> railway;
-    std::unique_ptr<model::RailwayDevices> devices;
+    binding::RailwayBinding railways;
 };
 
 TEST(EmbeddedDemoDevices, TheDemoStationsDevicesAreOnItsDeviceBus) {
@@ -86,21 +72,21 @@ TEST(EmbeddedDemoDevices, ARouteOfTheDemoPlanSwitchesTheRelayAndTheDecoderOutput
     ASSERT_TRUE(QTest::qWaitFor(
         [&] {
             const orccentral::OrcSession* orc = app.connection.devices().orcSession();
-            return app.railway && app.railway->isStateReported() && app.railway->accessory(1) &&
-                   app.railway->accessory(1)->isPositionReported() && orc &&
+            return app.railway() && app.railway()->isStateReported() && app.railway()->accessory(1) &&
+                   app.railway()->accessory(1)->isPositionReported() && orc &&
                    orc->deviceAt(0x0101); // a decoder has no query: its outputs are known once switched
         },
         WaitMs));
-    EXPECT_FALSE(app.railway->accessory(6)->isPositionReported());
-    QSignalSpy finished(app.railway.get(), &model::Railway::routeFinished);
-    QSignalSpy failed(app.railway.get(), &model::Railway::routeFailed);
-    ASSERT_TRUE(app.railway->runRoute(1));
+    EXPECT_FALSE(app.railway()->accessory(6)->isPositionReported());
+    QSignalSpy finished(app.railway(), &model::Railway::routeFinished);
+    QSignalSpy failed(app.railway(), &model::Railway::routeFailed);
+    ASSERT_TRUE(app.railway()->runRoute(1));
     ASSERT_TRUE(QTest::qWaitFor([&] { return finished.count() + failed.count() == 1; }, WaitMs));
     ASSERT_EQ(finished.count(), 1) << failed.at(0).at(1).toString().toStdString();
-    EXPECT_EQ(app.railway->accessory(1)->position(), 1);
-    EXPECT_EQ(app.railway->accessory(6)->position(), 1);
-    EXPECT_TRUE(app.railway->accessory(6)->isPositionReported());
-    EXPECT_TRUE(app.railway->isRouteSet(1));
+    EXPECT_EQ(app.railway()->accessory(1)->position(), 1);
+    EXPECT_EQ(app.railway()->accessory(6)->position(), 1);
+    EXPECT_TRUE(app.railway()->accessory(6)->isPositionReported());
+    EXPECT_TRUE(app.railway()->isRouteSet(1));
 }
 
 TEST(EmbeddedDemoDevices, TheEncodersFirstInputIsTheSidingsOccupancyFromTheStart) {
@@ -120,17 +106,18 @@ TEST(EmbeddedDemoDevices, TheSidingsContactIsLitByTheEncoderWhileTheKoefStandsTh
     const model::ContactKey moduleInput = model::contactKey(0, 20);
     ASSERT_TRUE(QTest::qWaitFor(
         [&] {
-            return app.railway && app.railway->contact(siding) && app.railway->contact(siding)->known() &&
-                   app.railway->contact(moduleInput) && app.railway->contact(moduleInput)->known();
+            return app.railway() && app.railway()->contact(siding) &&
+                   app.railway()->contact(siding)->known() && app.railway()->contact(moduleInput) &&
+                   app.railway()->contact(moduleInput)->known();
         },
         WaitMs));
-    EXPECT_TRUE(app.devices->lights(siding)) << "the encoder lights it, not the station's S88";
-    EXPECT_TRUE(app.railway->contact(siding)->occupied());
-    const bool moduleFirst = app.railway->contact(moduleInput)->occupied();
-    ASSERT_TRUE(
-        QTest::qWaitFor([&] { return app.railway->contact(moduleInput)->occupied() != moduleFirst; }, WaitMs))
+    EXPECT_TRUE(app.railways.devices()->lights(siding)) << "the encoder lights it, not the station's S88";
+    EXPECT_TRUE(app.railway()->contact(siding)->occupied());
+    const bool moduleFirst = app.railway()->contact(moduleInput)->occupied();
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return app.railway()->contact(moduleInput)->occupied() != moduleFirst; }, WaitMs))
         << "the demo's RO input still changes on its own";
-    EXPECT_TRUE(app.railway->contact(siding)->occupied()) << "no train came or went on the siding";
+    EXPECT_TRUE(app.railway()->contact(siding)->occupied()) << "no train came or went on the siding";
 }
 
 } // namespace

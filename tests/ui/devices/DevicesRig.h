@@ -6,6 +6,7 @@
 
 #include "DeviceBusPeer.h"
 #include "EventLoopWait.h"
+#include "binding/RailwayBinding.h"
 #include "common/StellwerkSettings.h"
 #include "connection/StationConnection.h"
 #include "devices/DeviceTableModel.h"
@@ -13,7 +14,6 @@
 #include "model/Railway.h"
 #include "model/RailwayDevices.h"
 #include "shell/MainWindow.h"
-#include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "shell/Workspace.h"
 #include "sim/SimulatedOrcDevices.h"
@@ -70,8 +70,8 @@ protected:
         ASSERT_TRUE(gateway.listen());
         ASSERT_TRUE(station.start());
         window = std::make_unique<MainWindow>(translations);
-        railways = std::make_unique<RailwayBinding>(connection);
-        QObject::connect(railways.get(), &RailwayBinding::railwayChanged, window.get(),
+        railways = std::make_unique<binding::RailwayBinding>(connection);
+        QObject::connect(railways.get(), &binding::RailwayBinding::railwayChanged, window.get(),
                          [this](model::Railway* railway) { bind(railway); });
         window->setConnection(&connection);
         window->resize(1366, 768);
@@ -129,7 +129,7 @@ protected:
     OtherProgram otherProgram;
     connection::StationConnection connection{deviceConnectionSettings()};
     std::unique_ptr<MainWindow> window;
-    std::unique_ptr<RailwayBinding> railways;
+    std::unique_ptr<binding::RailwayBinding> railways;
     DevicesPanel* panel = nullptr;
 };
 

@@ -6,12 +6,12 @@
 
 #include "EmbeddedStationSupport.h"
 #include "EventLoopWait.h"
+#include "binding/RailwayBinding.h"
 #include "handheldpanel/HandheldTableModel.h"
 #include "mcanhandhelds/HandheldBook.h"
 #include "mcanhandhelds/HandheldMaster.h"
 #include "model/Railway.h"
 #include "shell/MainWindow.h"
-#include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "sim/SimulatedBus.h"
 #include "sim/SimulatedMs1.h"
@@ -61,8 +61,8 @@ protected:
         clearSettings();
         ASSERT_TRUE(translations.select(Language::English));
         window = std::make_unique<MainWindow>(translations);
-        railways = std::make_unique<RailwayBinding>(connection);
-        QObject::connect(railways.get(), &RailwayBinding::railwayChanged, window.get(),
+        railways = std::make_unique<binding::RailwayBinding>(connection);
+        QObject::connect(railways.get(), &binding::RailwayBinding::railwayChanged, window.get(),
                          &MainWindow::setRailway);
         window->setConnection(&connection);
         window->resize(1366, 768);
@@ -93,7 +93,7 @@ protected:
     mcanhandhelds::SettingsHandheldBook book{QStringLiteral("Stellwerk"), QStringLiteral("Stellwerk")};
     connection::StationConnection connection{withBook(support::withEmbeddedStation(), book)};
     std::unique_ptr<MainWindow> window;
-    std::unique_ptr<RailwayBinding> railways;
+    std::unique_ptr<binding::RailwayBinding> railways;
     HandheldsPanel* panel = nullptr;
 };
 

@@ -31,7 +31,7 @@ protected:
     void SetUp() override {
         ASSERT_TRUE(demo.start());
         ASSERT_TRUE(controller.connect(demo.url()));
-        QObject::connect(&controller.railways, &RailwayBinding::railwayChanged, &panel,
+        QObject::connect(&controller.railways, &binding::RailwayBinding::railwayChanged, &panel,
                          &TurnoutPanel::setRailway);
         panel.setRailway(controller.railway());
         panel.resize(760, 700);

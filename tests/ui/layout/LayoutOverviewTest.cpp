@@ -1,12 +1,12 @@
 #include "layout/LayoutOverview.h"
 
 #include "EmbeddedStationSupport.h"
+#include "binding/RailwayBinding.h"
 #include "common/LocomotiveTableModel.h"
 #include "layout/ContactTableModel.h"
 #include "model/Railway.h"
 #include "monitor/BusMonitorPanel.h"
 #include "shell/MainWindow.h"
-#include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "shell/Workspace.h"
 #include "support/StationTestSupport.h"
@@ -35,7 +35,8 @@ class LayoutOverviewTest : public ::testing::Test {
 protected:
     void SetUp() override {
         ASSERT_TRUE(translations.select(Language::English));
-        QObject::connect(&railways, &RailwayBinding::railwayChanged, &overview, &LayoutOverview::setRailway);
+        QObject::connect(&railways, &binding::RailwayBinding::railwayChanged, &overview,
+                         &LayoutOverview::setRailway);
         station.connectToSimulator();
         ASSERT_TRUE(test::waitForState(station, State::Ready));
         ASSERT_NE(railways.railway(), nullptr);
@@ -61,7 +62,7 @@ protected:
 
     Translations translations;
     connection::StationConnection station{support::withEmbeddedStation()};
-    RailwayBinding railways{station};
+    binding::RailwayBinding railways{station};
     LayoutOverview overview;
 };
 

@@ -3,10 +3,10 @@
 #include "locomotives/LocomotivePanel.h"
 
 #include "EmbeddedStationSupport.h"
+#include "binding/RailwayBinding.h"
 #include "locomotives/LocomotiveFileModel.h"
 #include "locomotives/LocomotiveForm.h"
 #include "model/Railway.h"
-#include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "support/StationTestSupport.h"
 
@@ -39,7 +39,8 @@ class LocomotivePanelTest : public ::testing::Test {
 protected:
     void SetUp() override {
         ASSERT_TRUE(translations.select(Language::English));
-        QObject::connect(&railways, &RailwayBinding::railwayChanged, &panel, &LocomotivePanel::setRailway);
+        QObject::connect(&railways, &binding::RailwayBinding::railwayChanged, &panel,
+                         &LocomotivePanel::setRailway);
         station.connectToSimulator();
         ASSERT_TRUE(test::waitForState(station, State::Ready));
         ASSERT_NE(railways.railway(), nullptr);
@@ -53,7 +54,7 @@ protected:
 
     Translations translations;
     connection::StationConnection station{support::withEmbeddedStation()};
-    RailwayBinding railways{station};
+    binding::RailwayBinding railways{station};
     LocomotivePanel panel;
 };
 

@@ -1,10 +1,10 @@
 #include "EmbeddedStationSupport.h"
+#include "binding/RailwayBinding.h"
 #include "can/FrameText.h"
 #include "model/Railway.h"
 #include "monitor/BusMonitorModel.h"
 #include "monitor/BusMonitorPanel.h"
 #include "monitor/BusMonitorReplay.h"
-#include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "support/MonitorTestSupport.h"
 #include "support/StationTestSupport.h"
@@ -303,7 +303,7 @@ TEST(BusMonitorPanel, ShowsTheCommandsTheAppSendsAndTheAnswers) {
     test::TestStation simulated;
     ASSERT_TRUE(simulated.start());
     connection::StationConnection station{support::withEmbeddedStation()};
-    RailwayBinding railways{station};
+    binding::RailwayBinding railways{station};
     BusMonitorPanel panel;
     panel.setBuses(&station.buses());
     station.connectTo(simulated.url());

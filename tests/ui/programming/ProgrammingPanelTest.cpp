@@ -4,11 +4,11 @@
 #include "programming/ProgrammingPanel.h"
 
 #include "EmbeddedStationSupport.h"
+#include "binding/RailwayBinding.h"
 #include "common/LocomotivePictureBook.h"
 #include "locomotives/LocomotiveFileModel.h"
 #include "locomotives/LocomotivePanel.h"
 #include "model/Railway.h"
-#include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "support/StationTestSupport.h"
 
@@ -35,8 +35,9 @@ class ProgrammingPanelTest : public ::testing::Test {
 protected:
     void SetUp() override {
         ASSERT_TRUE(translations.select(Language::English));
-        QObject::connect(&railways, &RailwayBinding::railwayChanged, &panel, &ProgrammingPanel::setRailway);
-        QObject::connect(&railways, &RailwayBinding::railwayChanged, &locomotives,
+        QObject::connect(&railways, &binding::RailwayBinding::railwayChanged, &panel,
+                         &ProgrammingPanel::setRailway);
+        QObject::connect(&railways, &binding::RailwayBinding::railwayChanged, &locomotives,
                          &LocomotivePanel::setRailway);
         QObject::connect(&panel, &ProgrammingPanel::decoderBound, &locomotives,
                          &LocomotivePanel::addBoundDecoder);
@@ -58,7 +59,7 @@ protected:
 
     Translations translations;
     connection::StationConnection station{support::withEmbeddedStation()};
-    RailwayBinding railways{station};
+    binding::RailwayBinding railways{station};
     ProgrammingPanel panel;
     LocomotivePanel locomotives;
 };

@@ -2,6 +2,7 @@
 // and the keys that stop everything from anywhere, and the status bar's traffic, download and power.
 
 #include "EmbeddedStationSupport.h"
+#include "binding/RailwayBinding.h"
 #include "common/PowerStatus.h"
 #include "connect/ConnectionStatus.h"
 #include "connect/StartupProgress.h"
@@ -11,7 +12,6 @@
 #include "monitor/FrameDecoderPanel.h"
 #include "shell/MainWindow.h"
 #include "shell/PassingMessage.h"
-#include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "shell/Workspace.h"
 #include "status/StatusPanel.h"
@@ -59,8 +59,8 @@ protected:
     void SetUp() override {
         ControlDeskTest::SetUp();
         window = std::make_unique<MainWindow>(translations);
-        railways = std::make_unique<RailwayBinding>(station);
-        QObject::connect(railways.get(), &RailwayBinding::railwayChanged, window.get(),
+        railways = std::make_unique<binding::RailwayBinding>(station);
+        QObject::connect(railways.get(), &binding::RailwayBinding::railwayChanged, window.get(),
                          &MainWindow::setRailway);
         window->setConnection(&station);
         window->show();
@@ -91,7 +91,7 @@ protected:
     connection::StationConnection station{
         support::withEmbeddedStation()}; // outlives the railway and the window
     std::unique_ptr<MainWindow> window;
-    std::unique_ptr<RailwayBinding> railways;
+    std::unique_ptr<binding::RailwayBinding> railways;
 };
 
 } // namespace

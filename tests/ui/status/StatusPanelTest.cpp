@@ -1,10 +1,10 @@
 #include "status/StatusPanel.h"
 
 #include "EmbeddedStationSupport.h"
+#include "binding/RailwayBinding.h"
 #include "layout/LayoutOverview.h"
 #include "model/Railway.h"
 #include "shell/MainWindow.h"
-#include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "shell/Workspace.h"
 #include "status/GaugeWidget.h"
@@ -34,7 +34,8 @@ class StatusPanelTest : public ::testing::Test {
 protected:
     void SetUp() override {
         ASSERT_TRUE(translations.select(Language::English));
-        QObject::connect(&railways, &RailwayBinding::railwayChanged, &window, &MainWindow::setRailway);
+        QObject::connect(&railways, &binding::RailwayBinding::railwayChanged, &window,
+                         &MainWindow::setRailway);
         window.workspace()->showPanel(window.statusPanel());
         window.show();
         station.connectToSimulator();
@@ -64,7 +65,7 @@ protected:
 
     Translations translations;
     connection::StationConnection station{support::withEmbeddedStation()};
-    RailwayBinding railways{station};
+    binding::RailwayBinding railways{station};
     MainWindow window{translations};
 };
 

@@ -4,8 +4,8 @@
 // keyboard and settings tests can check what it did; and a connection with its railway bound to it.
 
 #include "EmbeddedStationSupport.h"
+#include "binding/RailwayBinding.h"
 #include "model/Railway.h"
-#include "shell/RailwayBinding.h"
 #include "support/StationTestSupport.h"
 
 #include <QTest>
@@ -28,7 +28,7 @@ public:
     model::Railway* railway() const { return railways.railway(); }
 
     connection::StationConnection connection{support::withEmbeddedStation()};
-    RailwayBinding railways{connection};
+    binding::RailwayBinding railways{connection};
 };
 
 } // namespace stellwerk::ui::test

@@ -4,11 +4,12 @@
 // a simulated CS2 on loopback that can fall silent and come back on the same port.
 
 #include "EmbeddedStationSupport.h"
+#include "binding/RailwayBinding.h"
 #include "common/StellwerkSettings.h"
 #include "cs2/Codec.h"
+#include "model/LayoutInUse.h"
 #include "model/Railway.h"
 #include "shell/MainWindow.h"
-#include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "sim/EmbeddedStation.h"
 #include "support/StationTestSupport.h"
@@ -62,8 +63,9 @@ protected:
         ASSERT_TRUE(translations.select(deskLanguage()));
         ASSERT_TRUE(server.start());
         window = std::make_unique<MainWindow>(translations);
-        railways = std::make_unique<RailwayBinding>(connection);
-        QObject::connect(railways.get(), &RailwayBinding::railwayChanged, window.get(),
+        railways = std::make_unique<binding::RailwayBinding>(connection, &layout);
+        window->setLayoutInUse(&layout);
+        QObject::connect(railways.get(), &binding::RailwayBinding::railwayChanged, window.get(),
                          &MainWindow::setRailway);
         window->setConnection(&connection);
         window->resize(deskSize());
@@ -103,8 +105,9 @@ protected:
     TestStation server{deskStation()};
     connection::StationConnection connection{
         support::withEmbeddedStation()}; // outlives the railway and the window
+    model::LayoutInUse layout;           // outlives the window
     std::unique_ptr<MainWindow> window;
-    std::unique_ptr<RailwayBinding> railways;
+    std::unique_ptr<binding::RailwayBinding> railways;
 };
 
 } // namespace stellwerk::ui::test

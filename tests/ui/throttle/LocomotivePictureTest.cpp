@@ -4,11 +4,11 @@
 
 #include "EmbeddedStationSupport.h"
 #include "FakeWebServer.h"
+#include "binding/RailwayBinding.h"
 #include "common/LocomotivePictureBook.h"
 #include "locomotives/LocomotiveFileModel.h"
 #include "locomotives/LocomotiveForm.h"
 #include "model/Railway.h"
-#include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "sim/StationLayout.h"
 #include "support/StationTestSupport.h"
@@ -68,7 +68,8 @@ class DeskPictures : public ::testing::Test {
 protected:
     void SetUp() override {
         ASSERT_TRUE(translations.select(Language::English));
-        QObject::connect(&railways, &RailwayBinding::railwayChanged, &throttle, &ThrottleWidget::setRailway);
+        QObject::connect(&railways, &binding::RailwayBinding::railwayChanged, &throttle,
+                         &ThrottleWidget::setRailway);
         connection.connectToSimulator();
         ASSERT_TRUE(test::waitForState(connection, State::Ready));
         throttle.show();
@@ -76,7 +77,7 @@ protected:
 
     Translations translations;
     connection::StationConnection connection{support::withEmbeddedStation()};
-    RailwayBinding railways{connection};
+    binding::RailwayBinding railways{connection};
     ThrottleWidget throttle;
 };
 

@@ -3,11 +3,11 @@
 // another controller does shows in the throttle; what the station does not acknowledge is marked.
 
 #include "EmbeddedStationSupport.h"
+#include "binding/RailwayBinding.h"
 #include "common/Contrast.h"
 #include "common/FunctionIcons.h"
 #include "common/LocomotivePictureBook.h"
 #include "model/Railway.h"
-#include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "stopkeys/StopGoButton.h"
 #include "support/StationTestSupport.h"
@@ -112,7 +112,8 @@ protected:
     void SetUp() override {
         ASSERT_TRUE(translations.select(Language::English));
         ASSERT_TRUE(testStation.start());
-        QObject::connect(&railways, &RailwayBinding::railwayChanged, &throttle, &ThrottleWidget::setRailway);
+        QObject::connect(&railways, &binding::RailwayBinding::railwayChanged, &throttle,
+                         &ThrottleWidget::setRailway);
         connection.connectTo(testStation.url());
         other.connectTo(testStation.url());
         ASSERT_TRUE(test::waitForState(connection, State::Ready));
@@ -133,8 +134,8 @@ protected:
     test::TestStation testStation;
     connection::StationConnection connection{support::withEmbeddedStation(impatient())};
     connection::StationConnection other{support::withEmbeddedStation()};
-    RailwayBinding railways{connection};
-    RailwayBinding otherRailways{other};
+    binding::RailwayBinding railways{connection};
+    binding::RailwayBinding otherRailways{other};
     ThrottleWidget throttle;
 };
 

@@ -2,10 +2,11 @@
 // a click on a block's track saying its contacts and ways, and the drawing's problems listed above the plan
 // and marked on their tiles, in English and German.
 #include "EmbeddedStationSupport.h"
+#include "binding/RailwayBinding.h"
 #include "common/ProblemBar.h"
 #include "cs2config/LayoutFolder.h"
+#include "model/LayoutInUse.h"
 #include "model/Railway.h"
-#include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "stopkeys/EmergencyStopKeys.h"
 #include "support/StationTestSupport.h"
@@ -46,9 +47,9 @@ protected:
         ASSERT_TRUE(translations.select(Language::English));
         ASSERT_TRUE(server.start());
         panel = std::make_unique<TrackPlanPanel>();
-        QObject::connect(&railways, &RailwayBinding::railwayChanged, panel.get(),
+        QObject::connect(&railways, &binding::RailwayBinding::railwayChanged, panel.get(),
                          &TrackPlanPanel::setRailway);
-        panel->setConnection(&station);
+        panel->setLayoutInUse(&layout);
         station.connectTo(server.url());
         ASSERT_TRUE(test::waitForState(station, State::Ready));
         ASSERT_NE(railways.railway(), nullptr);
@@ -100,7 +101,8 @@ protected:
     Translations translations;
     test::TestStation server;
     connection::StationConnection station{support::withEmbeddedStation()};
-    RailwayBinding railways{station};
+    model::LayoutInUse layout;
+    binding::RailwayBinding railways{station, &layout};
     std::unique_ptr<TrackPlanPanel> panel;
 };
 

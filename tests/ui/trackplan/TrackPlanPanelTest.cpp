@@ -1,11 +1,13 @@
 #include "trackplan/TrackPlanPanel.h"
 
 #include "EmbeddedStationSupport.h"
+#include "binding/RailwayBinding.h"
+#include "model/LayoutInUse.h"
 #include "model/Railway.h"
 #include "model/RoutePlan.h"
-#include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "support/StationTestSupport.h"
+#include "trackplan/PlanGraph.h"
 #include "trackplan/TileMenu.h"
 #include "trackplan/TileTag.h"
 #include "trackplan/TrackColors.h"
@@ -37,8 +39,9 @@ protected:
     void SetUp() override {
         ASSERT_TRUE(translations.select(Language::English));
         ASSERT_TRUE(server.start());
-        QObject::connect(&railways, &RailwayBinding::railwayChanged, &panel, &TrackPlanPanel::setRailway);
-        panel.setConnection(&station);
+        QObject::connect(&railways, &binding::RailwayBinding::railwayChanged, &panel,
+                         &TrackPlanPanel::setRailway);
+        panel.setLayoutInUse(&layout);
         station.connectTo(server.url());
         ASSERT_TRUE(test::waitForState(station, State::Ready));
         ASSERT_NE(railways.railway(), nullptr);
@@ -64,7 +67,8 @@ protected:
     Translations translations;
     test::TestStation server;
     connection::StationConnection station{support::withEmbeddedStation()};
-    RailwayBinding railways{station};
+    model::LayoutInUse layout;
+    binding::RailwayBinding railways{station, &layout};
     TrackPlanPanel panel;
 };
 
@@ -329,6 +333,35 @@ TEST(TrackPlanPanelFiles, AMissingFolderIsShownAsAProblemAndKeepsThePlan) {
     EXPECT_TRUE(panel.problemText().contains(QStringLiteral("/nonexistent/layout does not exist")))
         << panel.problemText().toStdString();
     EXPECT_EQ(panel.pageTabs()->count(), 1);
+}
+
+// Issue 33: the panel shows the layout in use it is given and opens folders into it, so that everything
+// reading the layout in use (the command line, the coming automation) sees what the plan shows.
+TEST(TrackPlanPanelFiles, OpensFoldersIntoTheLayoutInUseAndShowsItsGraph) {
+    model::LayoutInUse layout;
+    TrackPlanPanel panel;
+    panel.setLayoutInUse(&layout);
+    ASSERT_TRUE(panel.openFolder(QStringLiteral(STELLWERK_SOURCE_DIR "/resources/demo-layout")));
+    EXPECT_EQ(layout.origin(), model::LayoutInUse::Origin::Folder);
+    EXPECT_EQ(panel.layout(), layout.pages().get()) << "the pages of the layout in use, not a copy";
+    ASSERT_NE(panel.graph(), nullptr);
+    EXPECT_EQ(&panel.graph()->graph(), layout.graph().get()) << "derived once, in the layout in use";
+    EXPECT_FALSE(panel.openFolder(QStringLiteral("/nonexistent/layout")));
+    EXPECT_EQ(layout.folder().parent_path().filename(), "demo-layout") << "a bad folder changes nothing";
+
+    ASSERT_EQ(layout.open(gbertFolder()), ""); // opened by someone else
+    EXPECT_EQ(panel.layout(), layout.pages().get());
+    EXPECT_EQ(panel.pageTabs()->count(), 1);
+    EXPECT_EQ(panel.pageTabs()->tabText(0), QStringLiteral("karben"));
+}
+
+TEST_F(TrackPlanPanelTest, ShowsTheStationsDownloadAsTheLayoutInUseWithTheRailwaysStates) {
+    EXPECT_EQ(layout.origin(), model::LayoutInUse::Origin::Station);
+    EXPECT_EQ(panel.layout(), layout.pages().get());
+    ASSERT_NE(panel.graph(), nullptr);
+    EXPECT_EQ(&panel.graph()->graph(), layout.graph().get());
+    EXPECT_EQ(panel.findChild<QLabel*>(QStringLiteral("trackPlanSource"))->text(),
+              QStringLiteral("Live from the station"));
 }
 
 // Issue 32: a folder whose gleisbild.cs2 is missing was refused, although its pages were there.
