@@ -287,9 +287,12 @@ void Dispatcher::finish() {
     for (auto& [locId, train] : trains_) {
         if (train.mode != TrainMode::Automatic)
             continue;
-        command(DriveCommand::speedOf(locId, 0));
-        if (moving(train.state) || train.state == TrainState::SettingWay ||
-            train.state == TrainState::Waiting)
+        if (moving(train.state))
+            stopTrain(train, TrainState::Stopped, AutomationEvent::Kind::Stopped,
+                      train.name + " stopped: the run ends");
+        else
+            command(DriveCommand::speedOf(locId, 0));
+        if (train.state == TrainState::SettingWay || train.state == TrainState::Waiting)
             train.state = TrainState::Stopped;
         giveBackWay(locId);
         journeys_.erase(locId);
