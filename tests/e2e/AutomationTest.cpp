@@ -4,6 +4,7 @@
 // external switch of a reserved turnout, an overrun, the station falling silent.
 
 #include "AutomationRig.h"
+#include "cs2config/Diagnostics.h"
 #include "sim/TrainPlacement.h"
 
 #include <gtest/gtest.h>
@@ -117,6 +118,25 @@ TEST(Automation, AnOverrunSwitchesTheTrackPowerOff) {
     EXPECT_EQ(rig.count(Kind::Overrun, Br218), 1) << rig.eventLog();
     EXPECT_TRUE(waitFor([&] { return rig.rig.station.power() == sim::SimulatedStation::Power::Stopped; }));
     EXPECT_TRUE(rig.automation->dispatcher().paused());
+}
+
+// karben.cs2 of the corpus has three blocks and no way between them (turnouts and open ends only): the train
+// placed on 602 waits for a way, and nothing is switched, driven or derailed.
+TEST(Automation, OnKarbenWithoutAnyWayBetweenBlocksTheTrainWaitsAndNothingHappens) {
+    cs2config::Diagnostics diagnostics("karben");
+    AutomationRig rig(sim::StationLayout::load(std::string(STELLWERK_SHARED_DIR) +
+                                                   "/corpus/GBert__railroad/can2udp/files/maerklin/config",
+                                               diagnostics));
+    constexpr std::uint32_t Train602 = 0x000b;
+    ASSERT_TRUE(rig.start({{Train602, 102, End::A}}));
+    ASSERT_EQ(rig.graph->blocks().size(), 3u);
+    rig.startAutomation();
+    rig.run(std::chrono::seconds(30));
+    EXPECT_EQ(rig.count(Kind::Placed, Train602), 1);
+    EXPECT_EQ(rig.count(Kind::Reserved), 0) << rig.eventLog();
+    EXPECT_EQ(rig.automation->dispatcher().train(Train602)->state, TrainState::Waiting);
+    EXPECT_EQ(rig.rig.station.loco(Train602)->speed, 0);
+    EXPECT_EQ(rig.movement->accidents().total(), 0);
 }
 
 } // namespace
