@@ -120,6 +120,31 @@ TEST(Automation, AnOverrunSwitchesTheTrackPowerOff) {
     EXPECT_TRUE(rig.automation->dispatcher().paused());
 }
 
+// The demo without W2 in magnetartikel.cs2: the railway cannot switch turnout 2 (no such article on the
+// keyboard), so it is never confirmed. After three attempts the BR 218 has not moved, its way is given back
+// and the fault names the turnout.
+TEST(Automation, ATurnoutNeverConfirmedKeepsTheTrainAndGivesItsWayBack) {
+    sim::StationLayout::Files files = sim::StationLayout::demo().files();
+    std::string& accessories = files["magnetartikel.cs2"];
+    const std::size_t w2 = accessories.find("artikel\n .id=2\n");
+    ASSERT_NE(w2, std::string::npos);
+    accessories.erase(w2, accessories.find("artikel\n .id=3\n") - w2);
+    AutomationRig rig(sim::StationLayout::fromFiles(std::move(files)));
+    ASSERT_TRUE(rig.start({{Br218, 1, End::B}}));
+    rig.startAutomation();
+    for (int i = 0; i < 400 && rig.count(Kind::Fault, Br218) == 0; ++i)
+        rig.run(AutomationRig::Step);
+    EXPECT_EQ(rig.count(Kind::Fault, Br218), 1) << rig.eventLog();
+    EXPECT_EQ(rig.count(Kind::Departed, Br218), 0) << rig.eventLog();
+    EXPECT_NE(rig.events.back().text.find("turnout 2 was not confirmed"), std::string::npos)
+        << rig.eventLog();
+    const automation::Reservations& reservations = rig.automation->dispatcher().reservations();
+    EXPECT_EQ(reservations.blocksOf(Br218), std::vector<int>{rig.movement->position(Br218)->block});
+    EXPECT_TRUE(reservations.connectionsOf(Br218).empty());
+    EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 0);
+    EXPECT_EQ(rig.movement->accidents().total(), 0);
+}
+
 // karben.cs2 of the corpus has three blocks and no way between them (turnouts and open ends only): the train
 // placed on 602 waits for a way, and nothing is switched, driven or derailed.
 TEST(Automation, OnKarbenWithoutAnyWayBetweenBlocksTheTrainWaitsAndNothingHappens) {
