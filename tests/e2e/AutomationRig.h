@@ -59,6 +59,20 @@ public:
             }
         return true;
     }
+    // The start-up once more on the same railway, as a program does when the station is back.
+    bool readAgain() {
+        station::StartupOptions options;
+        options.readStatusData = false;
+        startup = std::make_unique<station::StartupSequence>(*rig.session, options);
+        bool ready = false;
+        QObject::connect(startup.get(), &station::StartupSequence::ready,
+                         [&](const station::StartupResult& result) {
+                             railway->load(result);
+                             ready = true;
+                         });
+        startup->start();
+        return waitFor([&] { return ready; }, 4 * WaitMs);
+    }
     // Hands the placed trains to the automation (its clock is the rig's: tick() per step).
     void startAutomation() {
         automation->start(std::chrono::milliseconds(0));
@@ -139,17 +153,7 @@ private:
                          [this] { --commandsInFlight; });
         QObject::connect(railway.get(), &model::Railway::locomotiveCommandFailed,
                          [this] { --commandsInFlight; });
-        station::StartupOptions options;
-        options.readStatusData = false;
-        startup = std::make_unique<station::StartupSequence>(*rig.session, options);
-        bool ready = false;
-        QObject::connect(startup.get(), &station::StartupSequence::ready,
-                         [&](const station::StartupResult& result) {
-                             railway->load(result);
-                             ready = true;
-                         });
-        startup->start();
-        return waitFor([&] { return ready; }, 4 * WaitMs);
+        return readAgain();
     }
 };
 

@@ -4,6 +4,8 @@
 // external switch of a reserved turnout, an overrun, the station falling silent.
 
 #include "AutomationRig.h"
+#include "can/FrameText.h"
+#include "cs2/Codec.h"
 #include "cs2config/Diagnostics.h"
 #include "sim/TrainPlacement.h"
 
@@ -143,6 +145,49 @@ TEST(Automation, ATurnoutNeverConfirmedKeepsTheTrainAndGivesItsWayBack) {
     EXPECT_TRUE(reservations.connectionsOf(Br218).empty());
     EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 0);
     EXPECT_EQ(rig.movement->accidents().total(), 0);
+}
+
+// The station goes away while the BR 218 runs: automation pauses and the train is stopped-unknown; when the
+// station is back and read again, nothing is sent by itself (the station keeps what it had: speed 500, as a
+// real one keeps its trains running) until the user resumes, which stops the train first. Then the run goes
+// on without accident.
+TEST(Automation, WhenTheStationFallsSilentNothingIsSentUntilTheUserResumes) {
+    AutomationRig rig;
+    ASSERT_TRUE(rig.start({{Br218, 1, End::B}, {Ice, 4, End::B}}));
+    rig.startAutomation();
+    for (int i = 0; i < 200 && rig.automation->dispatcher().train(Br218)->state != TrainState::Running; ++i)
+        rig.run(AutomationRig::Step);
+    ASSERT_EQ(rig.automation->dispatcher().train(Br218)->state, TrainState::Running) << rig.eventLog();
+    rig.rig.stopServer();
+    ASSERT_TRUE(waitFor([&] { return !rig.railway->isStateReported(); }));
+    EXPECT_EQ(rig.automation->dispatcher().train(Br218)->state, TrainState::Unknown);
+    EXPECT_TRUE(rig.automation->dispatcher().paused());
+    std::vector<std::string> received;
+    QObject::connect(&rig.rig.station, &sim::SimulatedStation::frameReceived,
+                     [&](const can::CanFrame& frame) {
+                         const cs2::DecodeResult decoded = cs2::decode(frame);
+                         const auto* speed = decoded ? std::get_if<cs2::LocoSpeed>(&decoded->body) : nullptr;
+                         if ((speed && speed->speed) ||
+                             (decoded && std::holds_alternative<cs2::AccessorySwitch>(decoded->body)))
+                             received.push_back(can::formatDocument(frame));
+                     });
+    ASSERT_TRUE(rig.rig.startServer());
+    ASSERT_TRUE(
+        waitFor([&] { return rig.rig.transport->state() == transport::Transport::State::Connected; }));
+    ASSERT_TRUE(rig.readAgain());
+    for (int i = 0; i < 20; ++i) {
+        rig.automation->tick();
+        rig.settle();
+    }
+    EXPECT_TRUE(received.empty()) << received.front();
+    EXPECT_EQ(rig.automation->dispatcher().train(Br218)->state, TrainState::Unknown);
+    EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 500);
+    rig.automation->resume();
+    rig.settle();
+    EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 0);
+    rig.run(std::chrono::seconds(60));
+    EXPECT_EQ(rig.movement->accidents().total(), 0) << rig.accidents.front();
+    EXPECT_GE(rig.count(Kind::Arrived, Br218), 1) << rig.eventLog();
 }
 
 // karben.cs2 of the corpus has three blocks and no way between them (turnouts and open ends only): the train
