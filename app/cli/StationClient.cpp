@@ -120,12 +120,16 @@ void StationClient::finish(int status) {
 }
 
 void StationClient::finishOnInterrupt(int status) {
+    whenInterrupted([this, status] { finish(status); });
+}
+
+void StationClient::whenInterrupted(std::function<void()> action) {
     interrupted = false;
     std::signal(SIGINT, onInterrupt);
     auto* poll = new QTimer(this);
-    connect(poll, &QTimer::timeout, this, [this, status] {
+    connect(poll, &QTimer::timeout, this, [action = std::move(action)] {
         if (interrupted.exchange(false))
-            finish(status);
+            action();
     });
     poll->start(100);
 }

@@ -52,6 +52,8 @@ public:
     void finish(int status);
     // Ctrl-C (SIGINT) ends the command with `status` instead of killing the process.
     void finishOnInterrupt(int status);
+    // Ctrl-C (SIGINT) runs `action` instead (which finishes the command when it is done).
+    void whenInterrupted(std::function<void()> action);
 
     station::StationSession& session() { return *session_; }
     bus::Bus& bus() { return *bus_; }

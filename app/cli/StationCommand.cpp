@@ -1,5 +1,6 @@
 #include "StationCommand.h"
 
+#include "AutoCommand.h"
 #include "DeviceCommands.h"
 #include "DriveCommands.h"
 #include "HandheldCommand.h"
@@ -30,6 +31,8 @@ ParsedJob parseCommand(const std::vector<std::string>& arguments, std::ostream& 
     if (auto job = parseRoCommand(command, rest, out, err))
         return std::move(*job);
     if (auto job = parseOrcCommand(command, rest, out, err))
+        return std::move(*job);
+    if (auto job = parseAutoCommand(command, rest, out, err))
         return std::move(*job);
     return "unknown station command '" + command + "'";
 }
@@ -82,7 +85,14 @@ const char* stationUsage() {
            "    orc [--json] [--seconds N] ACTION  Stellwerk as the OpenRailCAN central on the bus: find\n"
            "                                       (devices that answer within N s, default 1), switch\n"
            "                                       TARGET POS (dekoder schalten, waits for the ack), watch;\n"
-           "                                       exit 0 a device answered, 1 none did\n";
+           "                                       exit 0 a device answered, 1 none did\n"
+           "    auto run [--layout DIR] --place LOC=CONTACT[:END]... [--seconds N] [--json]\n"
+           "                                       run the placed trains automatically on the track graph "
+           "of\n"
+           "                                       the station's plan (or DIR's) for N s (default 60) or\n"
+           "                                       until Ctrl-C, one line per event, then stop them and "
+           "print\n"
+           "                                       a summary; exit 0 when no fault occurred, 1 otherwise\n";
 }
 
 int runStation(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {

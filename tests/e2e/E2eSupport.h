@@ -114,8 +114,9 @@ inline station::StationSettings sessionSettings() {
 // The simulated station behind its server on 127.0.0.1, and the app's transport and session.
 class Rig {
 public:
-    explicit Rig(Wire wire, station::StationSettings settings = sessionSettings())
-        : wire_(wire), settings_(settings) {
+    explicit Rig(Wire wire, station::StationSettings settings = sessionSettings(),
+                 sim::StationLayout layout = sim::StationLayout::demo())
+        : station(std::move(layout)), wire_(wire), settings_(settings) {
         if (wire_ == Wire::Udp)
             appUdpPort_ = freeUdpPort();
     }
@@ -187,7 +188,7 @@ public:
     Wire wire() const { return wire_; }
     std::uint16_t appUdpPort() const { return appUdpPort_; }
 
-    sim::SimulatedStation station{sim::StationLayout::demo()};
+    sim::SimulatedStation station;
     std::unique_ptr<sim::StationServer> server;
     std::unique_ptr<transport::Transport> transport;
     std::unique_ptr<bus::Bus> bus;

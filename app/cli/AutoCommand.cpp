@@ -1,0 +1,221 @@
+#include "AutoCommand.h"
+
+#include "automation/Automation.h"
+#include "automation/LayoutGraph.h"
+#include "automation/Placement.h"
+#include "model/Railway.h"
+#include "station/StartupSequence.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QObject>
+#include <QTimer>
+#include <memory>
+#include <ostream>
+
+namespace stellwerk::cli {
+namespace {
+
+struct AutoOptions {
+    std::vector<automation::Placement> placements;
+    std::string layoutFolder;
+    int seconds = 60;
+    bool json = false;
+};
+
+QString locText(std::uint32_t locId) {
+    return QStringLiteral("0x%1").arg(locId, 4, 16, QLatin1Char('0'));
+}
+
+// The station read, the railway, the graph and the automation, living as long as the command.
+class AutoRun final : public QObject {
+public:
+    AutoRun(StationClient& client, AutoOptions options, std::ostream& out, std::ostream& err)
+        : QObject(&client), client_(client), options_(std::move(options)), out_(out), err_(err) {
+        railway_ = std::make_unique<model::Railway>(client.session());
+        station::StartupOptions startupOptions;
+        startupOptions.readStatusData = false;
+        startup_ = std::make_unique<station::StartupSequence>(client.session(), startupOptions);
+        connect(startup_.get(), &station::StartupSequence::ready, this, &AutoRun::stationRead);
+        startup_->start();
+        client.whenInterrupted([this] { end(); });
+    }
+    ~AutoRun() override {
+        automation_.reset();
+        startup_.reset();
+        railway_.reset();
+    }
+
+private:
+    void stationRead(const station::StartupResult& result) {
+        railway_->load(result);
+        if (!options_.layoutFolder.empty()) {
+            auto folder = automation::graphOfFolder(options_.layoutFolder);
+            if (!folder)
+                return fail("--layout: " + folder.error());
+            graph_ = std::make_unique<trackgraph::TrackGraph>(std::move(*folder));
+        } else {
+            graph_ = std::make_unique<trackgraph::TrackGraph>(automation::graphOf(result));
+        }
+        if (graph_->blocks().empty())
+            return fail("the track plan has no block to run trains in");
+        railway_->go();
+        QTimer::singleShot(5000, this, [this] {
+            if (!automation_)
+                fail("the station did not switch the track power on");
+        });
+        connect(railway_.get(), &model::Railway::powerChanged, this, [this](station::PowerState state) {
+            if (state == station::PowerState::Running && !automation_)
+                startAutomation();
+        });
+        if (railway_->power() == station::PowerState::Running)
+            startAutomation();
+    }
+
+    void startAutomation() {
+        automation_ = std::make_unique<automation::Automation>(*railway_, *graph_);
+        connect(automation_.get(), &automation::Automation::happened, this, &AutoRun::print);
+        for (const automation::Placement& placement : options_.placements)
+            if (const auto problem =
+                    automation_->place(placement.locId, placement.contact, placement.towards))
+                return fail(*problem);
+        automation_->start();
+        QTimer::singleShot(options_.seconds * 1000, this, &AutoRun::end);
+    }
+
+    // Every train it drove stopped (and the station's answer waited for), everything given back.
+    void end() {
+        if (!automation_ || ending_)
+            return client_.finish(NotAcknowledged);
+        ending_ = true;
+        connect(railway_.get(), &model::Railway::locomotiveCommandSent, this, [this] { ++stopsAwaited_; });
+        connect(railway_.get(), &model::Railway::locomotiveCommandAcknowledged, this,
+                [this] { countAnswer(); });
+        connect(railway_.get(), &model::Railway::locomotiveCommandFailed, this, [this] { countAnswer(); });
+        automation_->finish();
+        if (stopsAwaited_ == 0)
+            return summarize();
+        QTimer::singleShot(5000, this, &AutoRun::summarize);
+    }
+
+    void countAnswer() {
+        if (--stopsAwaited_ == 0)
+            summarize();
+    }
+
+    void print(const automation::AutomationEvent& event) {
+        const QString name = trainName(event.locId);
+        if (!options_.json) {
+            out_ << eventKindName(event.kind) << ": " << event.text << std::endl;
+            return;
+        }
+        QJsonObject line{{"event", QString::fromStdString(std::string(eventKindName(event.kind)))},
+                         {"text", QString::fromStdString(event.text)}};
+        if (event.locId != 0) {
+            line["loc"] = locText(event.locId);
+            line["train"] = name;
+        }
+        if (event.block != 0) {
+            line["block"] = event.block;
+            line["blockName"] = QString::fromStdString(graph_->block(event.block).name);
+        }
+        out_ << QJsonDocument(line).toJson(QJsonDocument::Compact).toStdString() << std::endl;
+    }
+
+    void summarize() {
+        if (summarized_)
+            return;
+        summarized_ = true;
+        const automation::Dispatcher& dispatcher = automation_->dispatcher();
+        QJsonArray trains;
+        for (const auto& [locId, train] : dispatcher.trains()) {
+            const automation::TrainBody* body = dispatcher.tracking().body(locId);
+            trains.append(
+                QJsonObject{{"loc", locText(locId)},
+                            {"train", QString::fromStdString(train.name)},
+                            {"state", QString::fromStdString(std::string(trainStateName(train.state)))},
+                            {"block", body ? body->frontBlock : 0}});
+        }
+        const QJsonObject summary{{"event", "summary"},
+                                  {"blockMoves", dispatcher.blockMoves()},
+                                  {"faults", dispatcher.faults()},
+                                  {"trains", trains}};
+        out_ << QJsonDocument(summary).toJson(QJsonDocument::Compact).toStdString() << std::endl;
+        client_.finish(dispatcher.faults() == 0 ? Acknowledged : NotAcknowledged);
+    }
+
+    QString trainName(std::uint32_t locId) const {
+        const automation::Train* train = automation_ ? automation_->dispatcher().train(locId) : nullptr;
+        return train ? QString::fromStdString(train->name) : locText(locId);
+    }
+
+    void fail(const std::string& message) {
+        err_ << "stellwerk-cli auto run: " << message << '\n';
+        client_.finish(NotAcknowledged);
+    }
+
+    StationClient& client_;
+    AutoOptions options_;
+    std::ostream& out_;
+    std::ostream& err_;
+    std::unique_ptr<model::Railway> railway_;
+    std::unique_ptr<station::StartupSequence> startup_;
+    std::unique_ptr<trackgraph::TrackGraph> graph_;
+    std::unique_ptr<automation::Automation> automation_;
+    bool ending_ = false;
+    bool summarized_ = false;
+    int stopsAwaited_ = 0;
+};
+
+Expected<AutoOptions, std::string> parseOptions(const std::vector<std::string>& arguments) {
+    if (arguments.empty() || arguments[0] != "run")
+        return std::string("auto: the command is 'auto run'");
+    AutoOptions options;
+    for (std::size_t i = 1; i < arguments.size(); ++i) {
+        const std::string& word = arguments[i];
+        const bool hasValue = i + 1 < arguments.size();
+        if (word == "--json") {
+            options.json = true;
+        } else if ((word == "--place" || word == "--layout" || word == "--seconds") && !hasValue) {
+            return "auto run: " + word + " needs a value";
+        } else if (word == "--place") {
+            auto placement = automation::parsePlacement(arguments[++i]);
+            if (!placement)
+                return "auto run: --place: " + placement.error();
+            options.placements.push_back(*placement);
+        } else if (word == "--layout") {
+            options.layoutFolder = arguments[++i];
+        } else if (word == "--seconds") {
+            const std::string& text = arguments[++i];
+            options.seconds =
+                text.find_first_not_of("0123456789") == std::string::npos && !text.empty() && text.size() < 7
+                    ? std::stoi(text)
+                    : 0;
+            if (options.seconds < 1)
+                return "auto run: --seconds: '" + text + "' is not a number of seconds";
+        } else {
+            return "auto run: unknown argument '" + word + "'";
+        }
+    }
+    if (options.placements.empty())
+        return std::string("auto run: place at least one train with --place LOC=CONTACT[:END]");
+    return options;
+}
+
+} // namespace
+
+std::optional<ParsedJob> parseAutoCommand(const std::string& command,
+                                          const std::vector<std::string>& arguments, std::ostream& out,
+                                          std::ostream& err) {
+    if (command != "auto")
+        return std::nullopt;
+    auto options = parseOptions(arguments);
+    if (!options)
+        return ParsedJob(options.error());
+    return ParsedJob(StationJob{
+        [options = *options, &out, &err](StationClient& client) { new AutoRun(client, options, out, err); },
+        std::nullopt});
+}
+
+} // namespace stellwerk::cli

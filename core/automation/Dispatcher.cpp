@@ -1,0 +1,250 @@
+#include "automation/Dispatcher.h"
+
+#include <algorithm>
+
+namespace stellwerk::automation {
+
+using trackgraph::End;
+
+std::string_view trainStateName(TrainState state) {
+    switch (state) {
+    case TrainState::Waiting:
+        return "waiting";
+    case TrainState::SettingWay:
+        return "setting-way";
+    case TrainState::Running:
+        return "running";
+    case TrainState::Braking:
+        return "braking";
+    case TrainState::Stopped:
+        return "stopped";
+    case TrainState::Unknown:
+        return "stopped-unknown";
+    case TrainState::Fault:
+        return "fault";
+    case TrainState::Lost:
+        return "lost";
+    }
+    return "?";
+}
+
+std::string_view eventKindName(AutomationEvent::Kind kind) {
+    static constexpr std::string_view names[] = {"placed",  "reserved", "turnout-set", "departed", "entered",
+                                                 "braking", "stopped",  "arrived",     "released", "ghost",
+                                                 "lost",    "overrun",  "fault"};
+    return names[std::size_t(kind)];
+}
+
+Dispatcher::Dispatcher(const trackgraph::TrackGraph& graph, Options options)
+    : graph_(graph), options_(options), tracking_(graph), reservations_(graph), choice_(graph) {}
+
+std::optional<std::string> Dispatcher::place(std::uint32_t locId, const std::string& name, int lengthMm,
+                                             std::int64_t contact, End towards) {
+    int block = 0;
+    for (const trackgraph::Block& candidate : graph_.blocks())
+        for (const trackgraph::ContactOnBlock& on : candidate.contacts)
+            if (on.contact.number == contact && block == 0)
+                block = candidate.id;
+    if (block == 0)
+        return name + ": no block of the track plan holds contact " + std::to_string(contact);
+    if (const std::uint32_t other = tracking_.trainIn(block); other != 0 && other != locId)
+        return name + ": block \"" + blockName(block) + "\" holds " + trains_.at(other).name + " already";
+    giveBackWay(locId);
+    tracking_.place(locId, block, towards, lengthMm);
+    reservations_.holdBlock(locId, block);
+    Train& train = trains_[locId];
+    train = Train{locId, name, lengthMm, train.mode, TrainState::Stopped, std::nullopt};
+    event(AutomationEvent::Kind::Placed, locId, block,
+          name + " placed in \"" + blockName(block) + "\" facing end " +
+              std::string(trackgraph::endName(towards)));
+    return std::nullopt;
+}
+
+void Dispatcher::setMode(std::uint32_t locId, TrainMode mode, Millis now) {
+    const auto found = trains_.find(locId);
+    if (found == trains_.end())
+        return;
+    Train& train = found->second;
+    train.mode = mode;
+    journeys_.erase(locId);
+    if (mode == TrainMode::Automatic && train.state != TrainState::Lost) {
+        train.state = TrainState::Waiting;
+        journeys_[locId].dwellUntil = now;
+        command(DriveCommand::speedOf(locId, 0)); // it stands until its way is set
+    }
+}
+
+const Train* Dispatcher::train(std::uint32_t locId) const {
+    const auto found = trains_.find(locId);
+    return found == trains_.end() ? nullptr : &found->second;
+}
+
+void Dispatcher::occupancyRead(const std::set<trackgraph::ContactKey>& occupied) {
+    for (const int block : tracking_.reread(occupied))
+        event(AutomationEvent::Kind::Ghost, 0, block,
+              "an unknown occupant in \"" + blockName(block) + "\": no train can have reached it");
+    for (auto& [locId, train] : trains_)
+        if (train.state == TrainState::Unknown && !tracking_.blockOccupied(tracking_.body(locId)->frontBlock))
+            stopTrain(train, TrainState::Lost, AutomationEvent::Kind::Lost,
+                      train.name + " is no longer seen where it stood: place it again");
+}
+
+void Dispatcher::contactChanged(const trackgraph::ContactKey& contact, bool occupied, Millis now) {
+    if (occupied) {
+        sighted(tracking_.occupied(contact, [this](std::uint32_t locId) { return expectedNext(locId); }),
+                now);
+        return;
+    }
+    tracking_.freed(contact);
+    for (const auto& [locId, train] : trains_)
+        releaseBehind(locId);
+}
+
+// Where the train goes next: along its reserved way, or, for a manual train, where the turnouts lead.
+std::optional<NextBlock> Dispatcher::expectedNext(std::uint32_t locId) const {
+    const Train& train = trains_.at(locId);
+    if (train.mode == TrainMode::Manual)
+        return followedNext(locId);
+    const auto journey = journeys_.find(locId);
+    if (journey == journeys_.end() || journey->second.next >= journey->second.path.blocks.size())
+        return std::nullopt;
+    const Journey& on = journey->second;
+    return NextBlock{on.path.connections[on.next], on.path.blocks[on.next]};
+}
+
+std::optional<NextBlock> Dispatcher::followedNext(std::uint32_t locId) const {
+    const TrainBody* body = tracking_.body(locId);
+    const trackgraph::BlockEnd front{body->frontBlock, body->towards};
+    const trackgraph::Lead lead = graph_.follow(front, [this](std::int64_t article) -> std::optional<int> {
+        const auto found = positions_.find(article);
+        return found == positions_.end() ? std::nullopt : std::optional<int>(found->second);
+    });
+    if (lead.kind != trackgraph::LeadKind::Block)
+        return std::nullopt;
+    for (const int id : graph_.connectionsFrom(front))
+        if (graph_.connection(id).to == lead.reached)
+            return NextBlock{id, lead.reached.block};
+    return std::nullopt;
+}
+
+void Dispatcher::sighted(const Sighting& sighting, Millis now) {
+    switch (sighting.kind) {
+    case Sighting::Kind::None:
+        return;
+    case Sighting::Kind::Moved: {
+        Train& train = trains_.at(sighting.locId);
+        if (const auto journey = journeys_.find(sighting.locId); journey != journeys_.end())
+            frontMoved(train, journey->second, sighting.block, sighting.contactIndex, now);
+        return;
+    }
+    case Sighting::Kind::Entered:
+        entered(sighting, now);
+        return;
+    case Sighting::Kind::Ghost:
+        ghostSeen(sighting.block);
+        return;
+    }
+}
+
+void Dispatcher::entered(const Sighting& sighting, Millis now) {
+    Train& train = trains_.at(sighting.locId);
+    ++blockMoves_;
+    event(AutomationEvent::Kind::Entered, train.locId, sighting.block,
+          train.name + " entered \"" + blockName(sighting.block) + "\"");
+    const std::uint32_t owner = reservations_.blockOwner(sighting.block);
+    if (owner != 0 && owner != train.locId && trains_.at(owner).mode == TrainMode::Automatic)
+        stopTrain(trains_.at(owner), TrainState::Fault, AutomationEvent::Kind::Fault,
+                  train.name + " entered \"" + blockName(sighting.block) + "\" on the way of " +
+                      trains_.at(owner).name);
+    if (owner == 0)
+        reservations_.holdBlock(train.locId, sighting.block);
+    if (const auto journey = journeys_.find(train.locId); journey != journeys_.end()) {
+        ++journey->second.next;
+        frontMoved(train, journey->second, sighting.block, sighting.contactIndex, now);
+    }
+    releaseBehind(train.locId);
+}
+
+void Dispatcher::ghostSeen(int block) {
+    if (const std::optional<std::uint32_t> driver = overrunBy(block)) {
+        command(DriveCommand::powerOff());
+        Train& train = trains_.at(*driver);
+        stopTrain(train, TrainState::Fault, AutomationEvent::Kind::Overrun,
+                  train.name + " ran on into \"" + blockName(block) +
+                      "\", which was not reserved for it: track power off");
+        halt("overrun");
+        return;
+    }
+    event(AutomationEvent::Kind::Ghost, 0, block,
+          "an unknown occupant in \"" + blockName(block) + "\": no train can have reached it");
+    const std::uint32_t owner = reservations_.blockOwner(block);
+    if (owner != 0 && trains_.at(owner).mode == TrainMode::Automatic &&
+        trains_.at(owner).state != TrainState::Fault)
+        stopTrain(trains_.at(owner), TrainState::Fault, AutomationEvent::Kind::Fault,
+                  trains_.at(owner).name + " stopped: an unknown occupant in \"" + blockName(block) +
+                      "\" on its way");
+}
+
+// The automatic train whose front end leads into the block, which is not reserved for it: whether it runs or
+// stands, an occupant appearing right ahead of it is taken for the train running on.
+std::optional<std::uint32_t> Dispatcher::overrunBy(int block) const {
+    for (const auto& [locId, train] : trains_) {
+        if (train.mode != TrainMode::Automatic || reservations_.blockOwner(block) == locId ||
+            train.state == TrainState::Lost || train.state == TrainState::Unknown)
+            continue;
+        const TrainBody* body = tracking_.body(locId);
+        for (const int id : graph_.connectionsFrom({body->frontBlock, body->towards}))
+            if (graph_.connection(id).to.block == block)
+                return locId;
+    }
+    return std::nullopt;
+}
+
+void Dispatcher::releaseBehind(std::uint32_t locId) {
+    for (const BodySegment& segment : tracking_.left(locId)) {
+        if (!segment.isBlock) {
+            reservations_.releaseConnection(locId, segment.id);
+            continue;
+        }
+        if (reservations_.blockOwner(segment.id) != locId)
+            continue;
+        reservations_.releaseBlock(locId, segment.id);
+        event(AutomationEvent::Kind::Released, locId, segment.id,
+              trains_.at(locId).name + " left \"" + blockName(segment.id) + "\"");
+    }
+}
+
+TrackState Dispatcher::stateFor(std::uint32_t locId) const {
+    TrackState state;
+    state.blockFree = [this, locId](int block) {
+        const std::uint32_t in = tracking_.trainIn(block);
+        return reservations_.blockAvailable(block, locId) && !tracking_.isGhost(block) &&
+               (in == 0 || in == locId) && (in == locId || !tracking_.blockOccupied(block));
+    };
+    state.connectionFree = [this, locId](int id) { return reservations_.connectionAvailable(id, locId); };
+    state.trainFacing = [this, locId](int block) -> std::optional<End> {
+        const std::uint32_t in = tracking_.trainIn(block);
+        if (in == 0 || in == locId)
+            return std::nullopt;
+        return tracking_.body(in)->towards;
+    };
+    return state;
+}
+
+std::vector<DriveCommand> Dispatcher::takeCommands() {
+    return std::exchange(commands_, {});
+}
+
+std::vector<AutomationEvent> Dispatcher::takeEvents() {
+    return std::exchange(events_, {});
+}
+
+void Dispatcher::event(AutomationEvent::Kind kind, std::uint32_t locId, int block, std::string text) {
+    events_.push_back({kind, locId, block, std::move(text)});
+}
+
+std::string Dispatcher::blockName(int block) const {
+    return block > 0 && block <= int(graph_.blocks().size()) ? graph_.block(block).name : std::string("?");
+}
+
+} // namespace stellwerk::automation

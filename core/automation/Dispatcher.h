@@ -1,0 +1,133 @@
+#pragma once
+
+#include "automation/AutomationEvent.h"
+#include "automation/PathChoice.h"
+#include "automation/Reservations.h"
+#include "automation/SpeedProfile.h"
+#include "automation/Tracking.h"
+#include "automation/Train.h"
+#include "trackgraph/TrackGraph.h"
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace stellwerk::automation {
+
+// Milliseconds on the automation's clock (the driver's steady clock, or a test's simulated one).
+using Millis = std::int64_t;
+
+// The automation's decisions, in plain C++ on the track graph: trains placed and tracked, ways chosen and
+// reserved, turnouts set and confirmed before a train departs, travel, creep and stop, and every fault
+// stopping what it must. It is told what the railway reports and answers with commands and events; the
+// driver (Automation) carries the commands out on the model and runs the clock.
+class Dispatcher {
+public:
+    struct Options {
+        SpeedProfile speeds;
+        Millis dwell = 2000;         // standing at a stop before looking for the next way
+        Millis settle = 300;         // after the last turnout's confirmation, before departing (it moves)
+        Millis switchTimeout = 3000; // for one turnout command to be confirmed
+        int switchAttempts = 3;      // then the way is given back and the train is at fault
+        Millis retry = 500;          // looking again for a way when none was free
+        int creepMm = 120;           // a block with one contact: the last millimetres at creep speed
+        int stopMarginMm = 90;       // and the front stops this far before the block's far end
+    };
+
+    explicit Dispatcher(const trackgraph::TrackGraph& graph) : Dispatcher(graph, Options{}) {}
+    Dispatcher(const trackgraph::TrackGraph& graph, Options options);
+
+    // Puts a train in the block holding the contact (its number, of any feedback device), facing `towards`;
+    // the sentence says why not.
+    std::optional<std::string> place(std::uint32_t locId, const std::string& name, int lengthMm,
+                                     std::int64_t contact, trackgraph::End towards);
+    void setMode(std::uint32_t locId, TrainMode mode, Millis now);
+
+    // What the railway reports.
+    void occupancyRead(const std::set<trackgraph::ContactKey>& occupied);
+    void contactChanged(const trackgraph::ContactKey& contact, bool occupied, Millis now);
+    void turnoutSwitched(std::int64_t article, int position, bool acknowledged, Millis now);
+    void turnoutReported(std::int64_t article, int position, Millis now);
+    // Timers: departures, braking, stops, dwells, lost trains, turnouts not confirmed.
+    void tick(Millis now);
+
+    // STOP (or track power off): every automatic train stops, and nothing starts again until resume().
+    void halt(const std::string& why);
+    // The station went silent: nothing can be sent; every automatic train is stopped as far as anyone
+    // knows (Unknown). When it is back, occupancyRead() first; trains stay stopped until resume().
+    void stationLost();
+    void resume(Millis now);
+    // The end of a run: every automatic train stopped, every reservation but the track it stands on given
+    // back.
+    void finish();
+
+    bool paused() const { return paused_; }
+    const std::map<std::uint32_t, Train>& trains() const { return trains_; }
+    const Train* train(std::uint32_t locId) const;
+    const Tracking& tracking() const { return tracking_; }
+    const Reservations& reservations() const { return reservations_; }
+    const trackgraph::TrackGraph& graph() const { return graph_; }
+    const Options& options() const { return options_; }
+    int blockMoves() const { return blockMoves_; }
+    int faults() const { return faults_; }
+    // What the railway should do, and what happened, since the last call.
+    std::vector<DriveCommand> takeCommands();
+    std::vector<AutomationEvent> takeEvents();
+
+private:
+    // An automatic train's journey to its destination.
+    struct Journey {
+        Path path;
+        std::size_t next = 0;                 // index of the next block to enter
+        std::map<std::int64_t, int> pending;  // turnouts not confirmed yet: position
+        std::map<std::int64_t, int> attempts; // commands sent per turnout
+        Millis switchDeadline = 0, departAt = -1, brakeAt = -1, stopAt = -1, lostAt = -1;
+        Millis dwellUntil = 0, nextTry = 0;
+    };
+
+    // Tracking (Dispatcher.cpp).
+    std::optional<NextBlock> expectedNext(std::uint32_t locId) const;
+    std::optional<NextBlock> followedNext(std::uint32_t locId) const;
+    void sighted(const Sighting& sighting, Millis now);
+    void entered(const Sighting& sighting, Millis now);
+    void ghostSeen(int block);
+    std::optional<std::uint32_t> overrunBy(int block) const;
+    void releaseBehind(std::uint32_t locId);
+    TrackState stateFor(std::uint32_t locId) const;
+    // Driving (DispatcherDriving.cpp).
+    void driveTick(Train& train, Journey& journey, Millis now);
+    void lookForWay(Train& train, Journey& journey, Millis now);
+    void sendSwitching(Journey& journey, std::int64_t article, int position, Millis now);
+    void turnoutsTimedOut(Train& train, Journey& journey, Millis now);
+    void depart(Train& train, Journey& journey, Millis now);
+    void frontMoved(Train& train, Journey& journey, int block, int contactIndex, Millis now);
+    void approachStop(Train& train, Journey& journey, int block, Millis now);
+    void brake(Train& train);
+    void arrive(Train& train, Journey& journey, Millis now);
+    void stopTrain(Train& train, TrainState state, AutomationEvent::Kind kind, const std::string& why);
+    void giveBackWay(std::uint32_t locId);
+    Millis expectNextContact(const Train& train, const Journey& journey, Millis now) const;
+    // Output.
+    void command(DriveCommand command) { commands_.push_back(command); }
+    void event(AutomationEvent::Kind kind, std::uint32_t locId, int block, std::string text);
+    std::string blockName(int block) const;
+
+    const trackgraph::TrackGraph& graph_;
+    Options options_;
+    Tracking tracking_;
+    Reservations reservations_;
+    PathChoice choice_;
+    std::map<std::uint32_t, Train> trains_;
+    std::map<std::uint32_t, Journey> journeys_;
+    std::map<std::int64_t, int> positions_; // turnouts as the railway reports them
+    bool paused_ = false;
+    int blockMoves_ = 0;
+    int faults_ = 0;
+    std::vector<DriveCommand> commands_;
+    std::vector<AutomationEvent> events_;
+};
+
+} // namespace stellwerk::automation

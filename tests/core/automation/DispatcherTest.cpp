@@ -1,0 +1,184 @@
+// The Dispatcher on the demo's graph alone, told contacts and turnout answers as the railway would: a train
+// departs only when every turnout of its way is confirmed; a turnout never confirmed gives the way back; the
+// track behind is given back block by block; ghosts; STOP and the station's silence stop everything until
+// the user resumes.
+#include "automation/Dispatcher.h"
+
+#include "AutomationTestSupport.h"
+
+#include <algorithm>
+
+namespace stellwerk::automation {
+namespace {
+
+using namespace test;
+using Kind = AutomationEvent::Kind;
+using trackgraph::End;
+
+constexpr std::uint32_t Loco = 0x4001;
+
+// BR 218 on Gleis 1 (contact 1) facing b, automatic, with its first way reserved (turnouts 2 and 3 straight).
+class DispatcherTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        ASSERT_EQ(dispatcher.place(Loco, "BR 218", 200, 1, End::B), std::nullopt);
+        dispatcher.occupancyRead({contact(1)});
+        dispatcher.setMode(Loco, TrainMode::Automatic, 0);
+        dispatcher.tick(0);
+        remember();
+    }
+    void remember() {
+        for (const DriveCommand& command : dispatcher.takeCommands())
+            commands.push_back(command);
+        for (const AutomationEvent& event : dispatcher.takeEvents())
+            events.push_back(event);
+    }
+    bool sentSpeedAbove(int speed) const {
+        return std::any_of(commands.begin(), commands.end(), [speed](const DriveCommand& command) {
+            return command.kind == DriveCommand::Kind::Speed && command.speed > speed;
+        });
+    }
+    int count(Kind kind) const {
+        return int(std::count_if(events.begin(), events.end(),
+                                 [kind](const AutomationEvent& e) { return e.kind == kind; }));
+    }
+    void confirmTurnouts(Millis now) {
+        dispatcher.turnoutSwitched(2, 1, true, now);
+        dispatcher.turnoutSwitched(3, 1, true, now);
+        dispatcher.tick(now + dispatcher.options().settle);
+        remember();
+    }
+
+    Dispatcher dispatcher{demo()};
+    std::vector<DriveCommand> commands;
+    std::vector<AutomationEvent> events;
+};
+
+TEST_F(DispatcherTest, ATrainDepartsOnlyWhenEveryTurnoutOfItsWayIsConfirmed) {
+    EXPECT_EQ(commands,
+              (std::vector<DriveCommand>{DriveCommand::speedOf(Loco, 0), DriveCommand::switching(2, 1),
+                                         DriveCommand::switching(3, 1)}));
+    EXPECT_EQ(dispatcher.reservations().blockOwner(AusfahrtOst), Loco);
+    EXPECT_EQ(dispatcher.reservations().blockOwner(Block1), Loco);
+    dispatcher.turnoutSwitched(2, 1, true, 100);
+    dispatcher.tick(2000);
+    remember();
+    EXPECT_FALSE(sentSpeedAbove(0));
+    dispatcher.turnoutSwitched(3, 1, true, 2000);
+    dispatcher.tick(2000 + dispatcher.options().settle - 1);
+    remember();
+    EXPECT_FALSE(sentSpeedAbove(0)) << "the turnout still moves";
+    dispatcher.tick(2000 + dispatcher.options().settle);
+    remember();
+    EXPECT_EQ(commands.back(), DriveCommand::speedOf(Loco, dispatcher.options().speeds.travel));
+    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Running);
+}
+
+TEST_F(DispatcherTest, ATurnoutNeverConfirmedGivesTheWayBackWithoutDeparting) {
+    dispatcher.turnoutSwitched(3, 1, true, 100);
+    for (Millis now = 0; now <= 4 * dispatcher.options().switchTimeout; now += 500) {
+        dispatcher.turnoutSwitched(2, 1, false, now);
+        dispatcher.tick(now);
+        remember();
+        if (dispatcher.train(Loco)->state == TrainState::Fault)
+            break;
+    }
+    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Fault);
+    EXPECT_EQ(count(Kind::Fault), 1);
+    EXPECT_EQ(std::count(commands.begin(), commands.end(), DriveCommand::switching(2, 1)),
+              dispatcher.options().switchAttempts);
+    EXPECT_FALSE(sentSpeedAbove(0));
+    EXPECT_EQ(dispatcher.reservations().blocksOf(Loco), std::vector<int>{Gleis1});
+    EXPECT_TRUE(dispatcher.reservations().connectionsOf(Loco).empty());
+}
+
+TEST_F(DispatcherTest, TheTrackBehindIsGivenBackBlockByBlockOnceTheTrainHasLeftIt) {
+    confirmTurnouts(100);
+    dispatcher.contactChanged(contact(8), true, 1000); // the front in Ausfahrt Ost
+    remember();
+    EXPECT_EQ(count(Kind::Entered), 1);
+    EXPECT_EQ(dispatcher.reservations().blockOwner(Gleis1), Loco) << "its contact is still occupied";
+    dispatcher.contactChanged(contact(3), true, 2000); // the front in Block 1
+    dispatcher.contactChanged(contact(1), false, 2100);
+    remember();
+    EXPECT_EQ(dispatcher.reservations().blockOwner(Gleis1), 0u);
+    EXPECT_EQ(dispatcher.reservations().blockOwner(AusfahrtOst), Loco) << "contact 8 is still occupied";
+    dispatcher.contactChanged(contact(8), false, 2500);
+    remember();
+    EXPECT_EQ(dispatcher.reservations().blockOwner(AusfahrtOst), 0u);
+    EXPECT_EQ(dispatcher.reservations().blockOwner(Block1), Loco);
+    EXPECT_EQ(count(Kind::Released), 2);
+    EXPECT_EQ(dispatcher.blockMoves(), 2);
+}
+
+TEST_F(DispatcherTest, AGhostOnTheReservedWayStopsTheTrainAndAGhostElsewhereIsOnlyShown) {
+    confirmTurnouts(100);
+    dispatcher.contactChanged(contact(5), true, 1000); // Block 3: nobody can be there
+    remember();
+    EXPECT_EQ(count(Kind::Ghost), 1);
+    EXPECT_TRUE(dispatcher.tracking().isGhost(Block3));
+    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Running);
+    dispatcher.contactChanged(contact(3), true,
+                              1100); // Block 1, reserved for the BR 218, before it got there
+    remember();
+    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Fault);
+    EXPECT_EQ(commands.back(), DriveCommand::speedOf(Loco, 0));
+}
+
+TEST_F(DispatcherTest, AfterStopNothingStartsUntilTheUserResumes) {
+    dispatcher.halt("STOP");
+    remember();
+    EXPECT_EQ(commands.back(), DriveCommand::speedOf(Loco, 0));
+    commands.clear();
+    confirmTurnouts(100);
+    dispatcher.tick(60000);
+    remember();
+    EXPECT_TRUE(commands.empty());
+    dispatcher.resume(60000);
+    dispatcher.tick(60000);
+    remember();
+    EXPECT_EQ(commands,
+              (std::vector<DriveCommand>{DriveCommand::speedOf(Loco, 0), DriveCommand::switching(2, 1),
+                                         DriveCommand::switching(3, 1)}));
+}
+
+TEST_F(DispatcherTest, WhileTheStationIsSilentTheTrainIsUnknownAndStaysStoppedWhenItReturns) {
+    confirmTurnouts(100);
+    ASSERT_EQ(dispatcher.train(Loco)->state, TrainState::Running);
+    commands.clear();
+    dispatcher.stationLost();
+    dispatcher.tick(5000);
+    remember();
+    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Unknown);
+    EXPECT_TRUE(commands.empty()) << "nothing is sent to a silent station";
+    dispatcher.occupancyRead({contact(1)}); // back: still on Gleis 1
+    dispatcher.tick(6000);
+    remember();
+    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Unknown);
+    EXPECT_TRUE(commands.empty()) << "nothing is replayed";
+    dispatcher.resume(7000);
+    remember();
+    EXPECT_EQ(commands, std::vector<DriveCommand>{DriveCommand::speedOf(Loco, 0)});
+    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Waiting);
+    EXPECT_EQ(dispatcher.reservations().blocksOf(Loco), std::vector<int>{Gleis1});
+}
+
+TEST_F(DispatcherTest, ATrainNotSeenWhereItStoodWhenTheStationReturnsIsLost) {
+    dispatcher.stationLost();
+    dispatcher.occupancyRead({contact(5)});
+    remember();
+    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Lost);
+    EXPECT_EQ(count(Kind::Lost), 1);
+    EXPECT_EQ(count(Kind::Ghost), 1);
+}
+
+TEST_F(DispatcherTest, ATrainThatDoesNotArriveInTimeIsLost) {
+    confirmTurnouts(100);
+    dispatcher.tick(10 * 60 * 1000);
+    remember();
+    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Lost);
+    EXPECT_EQ(commands.back(), DriveCommand::speedOf(Loco, 0));
+}
+
+} // namespace
+} // namespace stellwerk::automation

@@ -1,0 +1,9 @@
+# automation tests (tests/core/automation): the decisions on the demo's track graph alone (reservations, the
+# way chosen, the dispatcher told contacts and turnout answers); the trains on the simulator are in tests/e2e.
+target_sources(stellwerk-core-tests PRIVATE
+    automation/AutomationTestSupport.h
+    automation/DispatcherTest.cpp
+    automation/PathChoiceTest.cpp
+    automation/ReservationsTest.cpp
+)
+target_link_libraries(stellwerk-core-tests PRIVATE stellwerk-automation)

@@ -1,0 +1,213 @@
+// Issue 34, proven on the simulator: automatic trains driven by the automation over a real TCP socket
+// against the simulated CS2, whose accident counters are the referee. Simulated minutes on the demo, the
+// same trains driven without automation for comparison, and the faults: a ghost on a reserved way, an
+// external switch of a reserved turnout, an overrun, the station falling silent.
+
+#include "AutomationRig.h"
+#include "can/FrameText.h"
+#include "cs2/Codec.h"
+#include "cs2config/Diagnostics.h"
+#include "sim/TrainPlacement.h"
+
+#include <gtest/gtest.h>
+
+namespace stellwerk::e2e {
+namespace {
+
+using automation::AutomationEvent;
+using automation::TrainState;
+using Kind = automation::AutomationEvent::Kind;
+using trackgraph::End;
+
+constexpr std::uint32_t Br218 = 0x4001, Ice = 0x4002, V100 = 0x0018;
+
+// BR 218 on Gleis 1, the ICE on Block 2 and the V 100 on Gleis 2, all round the loop; the Köf in the siding.
+std::vector<sim::TrainPlacement> demoTrains() {
+    return sim::demoPlacements();
+}
+
+void otherController(sim::SimulatedStation& station, cs2::MessageBody body) {
+    station.receive(cs2::encode(cs2::Message{0, false, 0x2F11, std::move(body)}));
+}
+
+TEST(Automation, ThreeTrainsRunThreeSimulatedMinutesOnTheDemoWithoutAccident) {
+    AutomationRig rig;
+    ASSERT_TRUE(rig.start(demoTrains()));
+    rig.startAutomation();
+    rig.run(std::chrono::minutes(3));
+    EXPECT_TRUE(rig.accidents.empty()) << rig.accidents.front() << "\n" << rig.eventLog();
+    EXPECT_EQ(rig.movement->accidents().total(), 0);
+    EXPECT_EQ(rig.automation->dispatcher().faults(), 0) << rig.eventLog();
+    EXPECT_GE(rig.automation->dispatcher().blockMoves(), 40) << rig.eventLog();
+    for (const std::uint32_t locId : {Br218, Ice, V100})
+        EXPECT_GE(rig.count(Kind::Arrived, locId), 5) << locId << "\n" << rig.eventLog();
+}
+
+// The referee can fail: the same trains at the same speed for the same time, without the automation.
+TEST(Automation, TheSameTrainsWithoutAutomationCollide) {
+    AutomationRig rig;
+    ASSERT_TRUE(rig.start(demoTrains()));
+    for (const std::uint32_t locId : {Br218, Ice, V100})
+        rig.railway->setSpeed(locId, automation::SpeedProfile{}.travel);
+    rig.settle();
+    rig.automation.reset();
+    rig.graph.reset();
+    for (int step = 0; step < 3 * 60 * 20 && rig.movement->accidents().total() == 0; ++step)
+        rig.movement->advance(AutomationRig::Step);
+    EXPECT_GT(rig.movement->accidents().total(), 0);
+}
+
+// An unknown occupant appears in the block a train has reserved: the train stops at once, nobody collides.
+TEST(Automation, AGhostOnTheReservedWayStopsTheTrain) {
+    AutomationRig rig;
+    ASSERT_TRUE(rig.start({{Br218, 1, End::B}}));
+    rig.startAutomation();
+    for (int i = 0; i < 40 && rig.count(Kind::Departed, Br218) == 0; ++i)
+        rig.run(AutomationRig::Step);
+    ASSERT_EQ(rig.count(Kind::Departed, Br218), 1) << rig.eventLog();
+    const trackgraph::Block& destination =
+        rig.graph->block(*rig.automation->dispatcher().train(Br218)->destination);
+    const trackgraph::ContactKey ghost = destination.contacts.front().contact;
+    rig.rig.station.setContact(std::uint16_t(ghost.device), std::uint16_t(ghost.number), true);
+    rig.run(std::chrono::milliseconds(500));
+    EXPECT_EQ(rig.count(Kind::Ghost), 1) << rig.eventLog();
+    EXPECT_EQ(rig.count(Kind::Fault, Br218), 1) << rig.eventLog();
+    EXPECT_EQ(rig.automation->dispatcher().train(Br218)->state, TrainState::Fault);
+    EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 0);
+    const int blockMoves = rig.automation->dispatcher().blockMoves();
+    rig.run(std::chrono::seconds(20));
+    EXPECT_EQ(rig.automation->dispatcher().blockMoves(), blockMoves) << rig.eventLog();
+    EXPECT_EQ(rig.movement->accidents().total(), 0);
+}
+
+// Another controller throws turnout 2 while the BR 218's way over it to Ausfahrt Ost is reserved.
+TEST(Automation, AnExternalSwitchOfAReservedTurnoutStopsTheTrain) {
+    AutomationRig rig;
+    ASSERT_TRUE(rig.start({{Br218, 1, End::B}}));
+    rig.startAutomation();
+    for (int i = 0; i < 40 && rig.count(Kind::Departed, Br218) == 0; ++i)
+        rig.run(AutomationRig::Step);
+    ASSERT_EQ(rig.count(Kind::Departed, Br218), 1) << rig.eventLog();
+    ASSERT_TRUE(rig.automation->dispatcher().reservations().turnoutOwner(2).has_value());
+    otherController(rig.rig.station, cs2::AccessorySwitch{cs2::LocId(0x3001), 0, 1, std::nullopt});
+    ASSERT_TRUE(waitFor([&] { return rig.railway->accessory(2)->position() == 0; }));
+    rig.run(std::chrono::milliseconds(500));
+    EXPECT_EQ(rig.count(Kind::Fault, Br218), 1) << rig.eventLog();
+    EXPECT_EQ(rig.automation->dispatcher().train(Br218)->state, TrainState::Fault);
+    EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 0);
+    rig.run(std::chrono::seconds(5));
+    EXPECT_EQ(rig.movement->accidents().total(), 0) << rig.accidents.front();
+}
+
+// Another controller drives the BR 218 on after the automation stopped it: it enters a block not reserved
+// for it, and the track power goes off at once.
+TEST(Automation, AnOverrunSwitchesTheTrackPowerOff) {
+    AutomationRig rig;
+    automation::Dispatcher::Options options = AutomationRig::fastOptions();
+    options.dwell = 60000; // it stands in Block 1 while the other controller drives it
+    ASSERT_TRUE(rig.start({{Br218, 1, End::B}}, options));
+    rig.startAutomation();
+    for (int i = 0; i < 1200 && rig.count(Kind::Arrived, Br218) == 0; ++i)
+        rig.run(AutomationRig::Step);
+    ASSERT_EQ(rig.count(Kind::Arrived, Br218), 1)
+        << rig.eventLog() << " block " << rig.movement->position(Br218)->block << " mm "
+        << rig.movement->position(Br218)->frontMm << " speed " << rig.rig.station.loco(Br218)->speed
+        << " acc " << rig.accidents.size() << " power " << int(rig.rig.station.power());
+    otherController(rig.rig.station, cs2::LocoSpeed{cs2::LocId(Br218), 500});
+    ASSERT_TRUE(waitFor([&] { return rig.railway->locomotive(Br218)->speed() == 500; }));
+    for (int i = 0; i < 400 && rig.count(Kind::Overrun, Br218) == 0; ++i)
+        rig.run(AutomationRig::Step);
+    EXPECT_EQ(rig.count(Kind::Overrun, Br218), 1) << rig.eventLog();
+    EXPECT_TRUE(waitFor([&] { return rig.rig.station.power() == sim::SimulatedStation::Power::Stopped; }));
+    EXPECT_TRUE(rig.automation->dispatcher().paused());
+}
+
+// The demo without W2 in magnetartikel.cs2: the railway cannot switch turnout 2 (no such article on the
+// keyboard), so it is never confirmed. After three attempts the BR 218 has not moved, its way is given back
+// and the fault names the turnout.
+TEST(Automation, ATurnoutNeverConfirmedKeepsTheTrainAndGivesItsWayBack) {
+    sim::StationLayout::Files files = sim::StationLayout::demo().files();
+    std::string& accessories = files["magnetartikel.cs2"];
+    const std::size_t w2 = accessories.find("artikel\n .id=2\n");
+    ASSERT_NE(w2, std::string::npos);
+    accessories.erase(w2, accessories.find("artikel\n .id=3\n") - w2);
+    AutomationRig rig(sim::StationLayout::fromFiles(std::move(files)));
+    ASSERT_TRUE(rig.start({{Br218, 1, End::B}}));
+    rig.startAutomation();
+    for (int i = 0; i < 400 && rig.count(Kind::Fault, Br218) == 0; ++i)
+        rig.run(AutomationRig::Step);
+    EXPECT_EQ(rig.count(Kind::Fault, Br218), 1) << rig.eventLog();
+    EXPECT_EQ(rig.count(Kind::Departed, Br218), 0) << rig.eventLog();
+    EXPECT_NE(rig.events.back().text.find("turnout 2 was not confirmed"), std::string::npos)
+        << rig.eventLog();
+    const automation::Reservations& reservations = rig.automation->dispatcher().reservations();
+    EXPECT_EQ(reservations.blocksOf(Br218), std::vector<int>{rig.movement->position(Br218)->block});
+    EXPECT_TRUE(reservations.connectionsOf(Br218).empty());
+    EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 0);
+    EXPECT_EQ(rig.movement->accidents().total(), 0);
+}
+
+// The station goes away while the BR 218 runs: automation pauses and the train is stopped-unknown; when the
+// station is back and read again, nothing is sent by itself (the station keeps what it had: speed 500, as a
+// real one keeps its trains running) until the user resumes, which stops the train first. Then the run goes
+// on without accident.
+TEST(Automation, WhenTheStationFallsSilentNothingIsSentUntilTheUserResumes) {
+    AutomationRig rig;
+    ASSERT_TRUE(rig.start({{Br218, 1, End::B}, {Ice, 4, End::B}}));
+    rig.startAutomation();
+    for (int i = 0; i < 200 && rig.automation->dispatcher().train(Br218)->state != TrainState::Running; ++i)
+        rig.run(AutomationRig::Step);
+    ASSERT_EQ(rig.automation->dispatcher().train(Br218)->state, TrainState::Running) << rig.eventLog();
+    rig.rig.stopServer();
+    ASSERT_TRUE(waitFor([&] { return !rig.railway->isStateReported(); }));
+    EXPECT_EQ(rig.automation->dispatcher().train(Br218)->state, TrainState::Unknown);
+    EXPECT_TRUE(rig.automation->dispatcher().paused());
+    std::vector<std::string> received;
+    QObject::connect(&rig.rig.station, &sim::SimulatedStation::frameReceived,
+                     [&](const can::CanFrame& frame) {
+                         const cs2::DecodeResult decoded = cs2::decode(frame);
+                         const auto* speed = decoded ? std::get_if<cs2::LocoSpeed>(&decoded->body) : nullptr;
+                         if ((speed && speed->speed) ||
+                             (decoded && std::holds_alternative<cs2::AccessorySwitch>(decoded->body)))
+                             received.push_back(can::formatDocument(frame));
+                     });
+    ASSERT_TRUE(rig.rig.startServer());
+    ASSERT_TRUE(
+        waitFor([&] { return rig.rig.transport->state() == transport::Transport::State::Connected; }));
+    ASSERT_TRUE(rig.readAgain());
+    for (int i = 0; i < 20; ++i) {
+        rig.automation->tick();
+        rig.settle();
+    }
+    EXPECT_TRUE(received.empty()) << received.front();
+    EXPECT_EQ(rig.automation->dispatcher().train(Br218)->state, TrainState::Unknown);
+    EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 500);
+    rig.automation->resume();
+    rig.settle();
+    EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 0);
+    rig.run(std::chrono::seconds(60));
+    EXPECT_EQ(rig.movement->accidents().total(), 0) << rig.accidents.front();
+    EXPECT_GE(rig.count(Kind::Arrived, Br218), 1) << rig.eventLog();
+}
+
+// karben.cs2 of the corpus has three blocks and no way between them (turnouts and open ends only): the train
+// placed on 602 waits for a way, and nothing is switched, driven or derailed.
+TEST(Automation, OnKarbenWithoutAnyWayBetweenBlocksTheTrainWaitsAndNothingHappens) {
+    cs2config::Diagnostics diagnostics("karben");
+    AutomationRig rig(sim::StationLayout::load(std::string(STELLWERK_SHARED_DIR) +
+                                                   "/corpus/GBert__railroad/can2udp/files/maerklin/config",
+                                               diagnostics));
+    constexpr std::uint32_t Train602 = 0x000b;
+    ASSERT_TRUE(rig.start({{Train602, 102, End::A}}));
+    ASSERT_EQ(rig.graph->blocks().size(), 3u);
+    rig.startAutomation();
+    rig.run(std::chrono::seconds(30));
+    EXPECT_EQ(rig.count(Kind::Placed, Train602), 1);
+    EXPECT_EQ(rig.count(Kind::Reserved), 0) << rig.eventLog();
+    EXPECT_EQ(rig.automation->dispatcher().train(Train602)->state, TrainState::Waiting);
+    EXPECT_EQ(rig.rig.station.loco(Train602)->speed, 0);
+    EXPECT_EQ(rig.movement->accidents().total(), 0);
+}
+
+} // namespace
+} // namespace stellwerk::e2e
