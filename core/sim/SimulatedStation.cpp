@@ -8,6 +8,7 @@
 #include "sim/DeviceService.h"
 #include "sim/FeedbackService.h"
 #include "sim/LocoCommands.h"
+#include "sim/MemoryFunctions.h"
 #include "sim/MfxRegistry.h"
 #include "sim/SystemCommands.h"
 
@@ -51,7 +52,7 @@ public:
         : layout(std::move(stationLayout)), identity(identityFrom(options)), hashGuard(options.uid),
           system(state, identity), locos(state), mfx(layout, state, options.newMfxDecoders),
           programming(layout, state, mfx), accessories(layout, state), feedback(state, identity),
-          devices(state, identity), configData(layout, state) {
+          devices(state, identity), configData(layout, state), memory(layout, state) {
         state.power = options.power;
         restoreLocomotives(layout, state);
     }
@@ -59,7 +60,8 @@ public:
     void dispatch(const cs2::Message& message, Outbox& out) {
         system.handle(message, out) || locos.handle(message, out) || mfx.handle(message, out) ||
             programming.handle(message, out) || accessories.handle(message, out) ||
-            feedback.handle(message, out) || devices.handle(message, out) || configData.handle(message, out);
+            feedback.handle(message, out) || devices.handle(message, out) ||
+            configData.handle(message, out) || memory.handle(message, out);
         devices.watchLoad(out); // GO onto a track that draws too much, or a lower limit
     }
 
@@ -87,6 +89,7 @@ public:
     FeedbackService feedback;
     DeviceService devices;
     ConfigDataService configData;
+    MemoryFunctions memory;
 };
 
 SimulatedStation::SimulatedStation(StationLayout layout, QObject* parent)
