@@ -6,6 +6,8 @@
 #include "cs2/Automation.h"
 #include "cs2config/AccessoryType.h"
 
+#include <QElapsedTimer>
+#include <QTest>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -39,7 +41,7 @@ artikel
 )";
 
 // Route 1 (A1): W1 straight, S5 green. Route 9 (B1): W2 to its third position, then route 1. Route 10 (B2)
-// runs itself.
+// runs itself. Route 11 (B3): W1 straight, after 0.2 s S5 green.
 const char* const MemoryRoutes = R"([fahrstrassen]
 version
  .minor=4
@@ -68,6 +70,18 @@ fahrstrasse
  .name=Kreis
  .item
  ..fsverweis=10
+fahrstrasse
+ .id=11
+ .name=Langsam
+ .item
+ ..typ=mag
+ ..magnetartikel=1
+ ..stellung=1
+ .item
+ ..typ=mag
+ ..magnetartikel=5
+ ..stellung=1
+ ..sekunde=0.2
 )";
 
 StationLayout memoryLayout() {
@@ -110,6 +124,24 @@ TEST_F(MemoryFunctionTest, B1RunsRouteNineWithTheRouteItReferences) {
     // The three-way turnout's third position is output 0 of its second address (0x3002).
     EXPECT_EQ(probe.station.accessoryPosition(0x3002), 0);
     EXPECT_EQ(probe.station.accessoryPosition(0x3000), 1);
+    EXPECT_EQ(probe.station.accessoryPosition(0x3004), 1);
+}
+
+TEST_F(MemoryFunctionTest, AStepsWaitIsKeptAndActivatedFollowsTheLastStep) {
+    QElapsedTimer clock;
+    clock.start();
+    const auto first = probe.send("00604711 6 00 00 42 33 01 00"); // B3
+    ASSERT_EQ(first.size(), 2u);
+    EXPECT_EQ(first.front(), probe.answer("00604711 6 00 00 42 33 02 00")); // running
+    EXPECT_EQ(first.back(), probe.answer("00164711 6 00 00 30 00 01 01"));  // W1 at once
+    EXPECT_EQ(probe.station.accessoryPosition(0x3004), 0) << "S5 waits 0.2 s";
+    const std::size_t before = probe.batches.size();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return probe.batches.size() > before; }, 3000));
+    EXPECT_GE(clock.elapsed(), 180);
+    const auto later = probe.batches.back();
+    ASSERT_EQ(later.size(), 2u);
+    EXPECT_EQ(later.front(), probe.answer("00164711 6 00 00 30 04 01 01")); // S5 green
+    EXPECT_EQ(later.back(), probe.answer("00604711 6 00 00 42 33 01 00"));  // activated
     EXPECT_EQ(probe.station.accessoryPosition(0x3004), 1);
 }
 
