@@ -680,6 +680,7 @@ void TrackPlanPanel::retranslate() {
                     : QString());
     m_source->setToolTip(QString::fromStdString(config.string()));
     m_blockPopup->hide(); // its words are in the language before
+    applyBlockStates();   // so are the states on the blocks' tabs
     if (m_layout)
         for (int i = 0; i < m_tabs->count(); ++i) {
             if (m_layout->pages()[std::size_t(i)].name.isEmpty())

@@ -126,11 +126,12 @@ TEST_F(TrackPlanBlockStatesTest, AnnouncedStatesStandBesideTheBlocksNamesAndUnkn
     EXPECT_TRUE(tipSaid);
     save(QStringLiteral("block-states.png"));
     selectGerman();
+    EXPECT_TRUE(tabNames(0).contains(QStringLiteral("Gleis 1 · besetzt"))) << "the language follows at once";
+    EXPECT_TRUE(tabNames(0).contains(QStringLiteral("Gleis 2 · unbekannt")));
     announce(gleis1, 6); // reserved
     ASSERT_TRUE(
         QTest::qWaitFor([&] { return tabNames(0).contains(QStringLiteral("Gleis 1 · reserviert")); }, 5000))
         << tabNames(0).join(QStringLiteral(", ")).toStdString();
-    EXPECT_TRUE(tabNames(0).contains(QStringLiteral("Gleis 2 · unbekannt")));
     save(QStringLiteral("block-states-de.png"));
 }
 
