@@ -44,6 +44,9 @@ DOCUMENT_FRAMES = {  # the protocol document's examples (tests/core/cs2/Document
     "system-status": frame(0x00, False, 0x4711, [0, 0, 0, 0, 0x0B, 1]),
     "mfx-bind": frame(0x02, False, 0x4711, [0xFF, 0xFF, 0xFF, 0xF0, 0x40, 0x05]),
     "config-read": frame(0x07, False, 0x4711, [0, 0, 0xC0, 0x03, 0, 1, 1]),
+    "automation-request": frame(0x30, False, 0x4711, [0, 0, 0x41, 0x31, 1, 0]),
+    "automation-status-unknown": frame(0x30, True, 0x4711, [0x53, 0x57, 0x42, 0x33, 7, 0]),
+    "automation-block-loco": frame(0x30, True, 0x4711, [0, 5, 0x41, 0x32, 0, 0, 0x40, 0x05]),
 }
 for name, data in DOCUMENT_FRAMES.items():
     write("frame_decode", name, data)

@@ -96,6 +96,41 @@
     </message>
 </context>
 <context>
+    <name>AnnouncedStateText</name>
+    <message>
+        <source>not active</source>
+        <translation>nicht aktiv</translation>
+    </message>
+    <message>
+        <source>active</source>
+        <translation>aktiv</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>läuft</translation>
+    </message>
+    <message>
+        <source>free</source>
+        <translation>frei</translation>
+    </message>
+    <message>
+        <source>occupied</source>
+        <translation>besetzt</translation>
+    </message>
+    <message>
+        <source>waiting</source>
+        <translation>wartet</translation>
+    </message>
+    <message>
+        <source>reserved</source>
+        <translation>reserviert</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+</context>
+<context>
     <name>BlockDescription</name>
     <message>
         <source>Block %1 &apos;%2&apos;</source>
@@ -486,6 +521,14 @@
     <message>
         <source>Not known</source>
         <translation>Nicht bekannt</translation>
+    </message>
+    <message>
+        <source>Run from Stellwerk</source>
+        <translation>Von Stellwerk stellen</translation>
+    </message>
+    <message>
+        <source>Run from the station&apos;s memory (%1)</source>
+        <translation>Aus dem Speicher der Zentrale stellen (%1)</translation>
     </message>
 </context>
 <context>
@@ -3526,6 +3569,18 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Outline each block with its name, and list and mark the problems of the drawing; then a click on a block&apos;s track says where it leads</source>
         <translation>Jeden Block mit seinem Namen umranden und die Probleme der Zeichnung auflisten und markieren; ein Klick auf das Gleis eines Blocks sagt dann, wohin es führt</translation>
+    </message>
+    <message>
+        <source>Station memory %1: %2</source>
+        <translation>Speicher der Zentrale %1: %2</translation>
+    </message>
+    <message>
+        <source>Station memory %1</source>
+        <translation>Speicher der Zentrale %1</translation>
+    </message>
+    <message>
+        <source>Announced on the station&apos;s bus: %1</source>
+        <translation>Auf dem Bus der Zentrale gemeldet: %1</translation>
     </message>
 </context>
 <context>

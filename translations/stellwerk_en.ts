@@ -96,6 +96,41 @@
     </message>
 </context>
 <context>
+    <name>AnnouncedStateText</name>
+    <message>
+        <source>not active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>free</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>occupied</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>waiting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reserved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>BlockDescription</name>
     <message>
         <source>Block %1 &apos;%2&apos;</source>
@@ -485,6 +520,14 @@
     </message>
     <message>
         <source>Not known</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run from Stellwerk</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run from the station&apos;s memory (%1)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3521,6 +3564,18 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Outline each block with its name, and list and mark the problems of the drawing; then a click on a block&apos;s track says where it leads</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Station memory %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Station memory %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Announced on the station&apos;s bus: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

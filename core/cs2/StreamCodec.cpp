@@ -1,6 +1,7 @@
 // GUI information transfer (document chapter 7): config data requests and streams, plus the
 // Connect 6021 stream; and automation (chapter 9) and unknown commands.
 
+#include "cs2/Automation.h"
 #include "cs2/CodecDetail.h"
 #include "cs2/Fields.h"
 
@@ -54,14 +55,6 @@ BodyResult decodeStream(const Reader& r) {
     m.length = r.u32(0);
     m.crc = r.u16(4);
     return MessageBody(m);
-}
-
-// Memory functions are named by a row letter and a column digit, "A1".."z8".
-std::string memoryName(std::uint16_t function) {
-    const char row = char(function >> 8), column = char(function & 0xFF);
-    const bool printable =
-        ((row >= 'A' && row <= 'Z') || (row >= 'a' && row <= 'z')) && column >= '1' && column <= '9';
-    return printable ? std::string{row, column} : std::string();
 }
 
 } // namespace
@@ -155,14 +148,16 @@ void Connect6021Stream::bind(FieldBinder& b) {
 void AutomationSwitch::bind(FieldBinder& b) {
     b.number("device", device, FieldFormat::Hex);
     b.number("function", function, FieldFormat::Hex);
-    if (const auto memory = memoryName(function); !memory.empty())
-        b.note("memory", memory);
+    if (const auto memory = MemoryFunction::fromWire(function))
+        b.note("memory", memory->text());
     b.loco("locId", loco);
     if (loco)
         return;
-    if (b.response())
+    if (b.response()) {
         b.named("status", position, AutomationStates);
-    else
+        if (!automationStateOf(position))
+            b.note("state", "unknown"); // 9.1: unknown states are shown as "status unknown"
+    } else
         b.number("position", position);
     b.number("parameter", parameter);
 }

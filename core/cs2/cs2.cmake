@@ -2,6 +2,7 @@
 stellwerk_core_library(cs2 PURE)
 target_sources(stellwerk-cs2 PRIVATE
     cs2/AccessoryCodec.cpp
+    cs2/Automation.cpp
     cs2/Codec.cpp
     cs2/Crc16.cpp
     cs2/DeviceCodec.cpp

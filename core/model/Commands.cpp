@@ -63,4 +63,13 @@ cs2::Message verifyMfx(std::uint32_t mfxUid, std::uint16_t sid) {
     return cs2::request(cs2::MfxVerify{mfxUid, sid, std::nullopt});
 }
 
+cs2::Message requestMemoryFunction(std::uint16_t device, std::uint16_t function, bool activate) {
+    return cs2::request(
+        cs2::AutomationSwitch{device, function, std::uint8_t(activate ? 1 : 0), 0, std::nullopt});
+}
+
+cs2::Message announceAutomationState(std::uint16_t device, std::uint16_t function, std::uint8_t state) {
+    return cs2::announcement(cs2::AutomationSwitch{device, function, state, 0, std::nullopt});
+}
+
 } // namespace stellwerk::model::commands

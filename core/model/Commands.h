@@ -41,4 +41,9 @@ cs2::Message discoverMfx(std::uint8_t range);
 cs2::Message bindMfx(std::uint32_t mfxUid, std::uint16_t sid);
 cs2::Message verifyMfx(std::uint32_t mfxUid, std::uint16_t sid);
 
+// Automation (9.1): ask a device to run (activate) or release a memory function; say a block's state on
+// the bus as a status answer on its address.
+cs2::Message requestMemoryFunction(std::uint16_t device, std::uint16_t function, bool activate);
+cs2::Message announceAutomationState(std::uint16_t device, std::uint16_t function, std::uint8_t state);
+
 } // namespace stellwerk::model::commands

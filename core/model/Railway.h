@@ -1,5 +1,6 @@
 #pragma once
 
+#include "model/BlockStates.h"
 #include "model/Programmer.h"
 #include "model/RailwayState.h"
 #include "model/ReadingPoller.h"
@@ -96,6 +97,9 @@ public:
     ReadingPoller& readings() { return *poller_; }
     // Decoder programming on this station: mfx discovery, bind, verify, CV read and write.
     Programmer& programmer() { return *programmer_; }
+    // The block and memory function states announced on the bus (CS2 chapter 9), and ours to announce.
+    BlockStates& blockStates() { return *blockStates_; }
+    const BlockStates& blockStates() const { return *blockStates_; }
     // lokomotive.cs2 as loaded (or last replaced); null when the station sent none.
     const cs2config::LocomotiveFile* locomotiveFile() const { return state_.locomotiveFile(); }
     // An edited lokomotive.cs2 (see cs2config::LocomotiveEditor): the locomotives follow it, and every view
@@ -221,6 +225,7 @@ private:
     RailwayState state_;
     ReadingPoller* poller_;
     Programmer* programmer_;
+    BlockStates* blockStates_;
     std::map<std::int64_t, RouteRunner*> runners_;
     DeviceAccessories* switcher_ = nullptr;
     bool stateReported_ = false;

@@ -2,6 +2,8 @@
 stellwerk_core_library(model)
 target_sources(stellwerk-model PRIVATE
     model/Accessory.cpp
+    model/BlockStates.cpp
+    model/BlockStates.h
     model/CommandProblem.cpp
     model/Commands.cpp
     model/Device.cpp

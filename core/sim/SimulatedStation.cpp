@@ -8,9 +8,11 @@
 #include "sim/DeviceService.h"
 #include "sim/FeedbackService.h"
 #include "sim/LocoCommands.h"
+#include "sim/MemoryFunctions.h"
 #include "sim/MfxRegistry.h"
 #include "sim/SystemCommands.h"
 
+#include <QTimer>
 #include <algorithm>
 
 namespace stellwerk::sim {
@@ -47,11 +49,11 @@ void restoreLocomotives(const StationLayout& layout, StationState& state) {
 // The state and the handlers of the command groups, in the order the dispatcher asks them.
 class SimulatedStation::Private {
 public:
-    Private(StationLayout stationLayout, const Options& options)
+    Private(StationLayout stationLayout, const Options& options, MemoryFunctions::Later later)
         : layout(std::move(stationLayout)), identity(identityFrom(options)), hashGuard(options.uid),
           system(state, identity), locos(state), mfx(layout, state, options.newMfxDecoders),
           programming(layout, state, mfx), accessories(layout, state), feedback(state, identity),
-          devices(state, identity), configData(layout, state) {
+          devices(state, identity), configData(layout, state), memory(layout, state, std::move(later)) {
         state.power = options.power;
         restoreLocomotives(layout, state);
     }
@@ -59,7 +61,8 @@ public:
     void dispatch(const cs2::Message& message, Outbox& out) {
         system.handle(message, out) || locos.handle(message, out) || mfx.handle(message, out) ||
             programming.handle(message, out) || accessories.handle(message, out) ||
-            feedback.handle(message, out) || devices.handle(message, out) || configData.handle(message, out);
+            feedback.handle(message, out) || devices.handle(message, out) ||
+            configData.handle(message, out) || memory.handle(message, out);
         devices.watchLoad(out); // GO onto a track that draws too much, or a lower limit
     }
 
@@ -87,13 +90,16 @@ public:
     FeedbackService feedback;
     DeviceService devices;
     ConfigDataService configData;
+    MemoryFunctions memory;
 };
 
 SimulatedStation::SimulatedStation(StationLayout layout, QObject* parent)
     : SimulatedStation(std::move(layout), Options{}, parent) {}
 
 SimulatedStation::SimulatedStation(StationLayout layout, Options options, QObject* parent)
-    : QObject(parent), d_(std::make_unique<Private>(std::move(layout), options)) {}
+    : QObject(parent),
+      d_(std::make_unique<Private>(std::move(layout), options,
+                                   [this](auto delay, auto work) { runLater(delay, std::move(work)); })) {}
 
 SimulatedStation::~SimulatedStation() = default;
 
@@ -139,6 +145,15 @@ void SimulatedStation::announcePower() {
         break;
     }
     emitAll(out.take());
+}
+
+// Work the station does on its own later (a route's steps after their waits), its frames sent then.
+void SimulatedStation::runLater(std::chrono::milliseconds delay, std::function<void(Outbox&)> work) {
+    QTimer::singleShot(delay, this, [this, work = std::move(work)] {
+        Outbox out(d_->identity.hash);
+        work(out);
+        emitAll(out.take());
+    });
 }
 
 void SimulatedStation::emitAll(std::vector<can::CanFrame> frames) {

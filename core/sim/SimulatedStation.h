@@ -5,7 +5,9 @@
 #include "sim/StationState.h"
 
 #include <QObject>
+#include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -78,6 +80,7 @@ signals:
 private:
     class Private;
     void emitAll(std::vector<can::CanFrame> frames);
+    void runLater(std::chrono::milliseconds delay, std::function<void(Outbox&)> work);
 
     std::unique_ptr<Private> d_;
 };

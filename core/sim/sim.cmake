@@ -10,6 +10,7 @@ target_sources(stellwerk-simulator PRIVATE
     sim/EmbeddedStation.h
     sim/FeedbackService.cpp
     sim/LocoCommands.cpp
+    sim/MemoryFunctions.cpp
     sim/MfxRegistry.cpp
     sim/Ms1Driver.cpp
     sim/Ms1Driver.h

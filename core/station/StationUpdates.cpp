@@ -19,7 +19,7 @@ cs2::Direction directionOf(std::uint8_t value) {
 bool StationUpdates::empty() const {
     return speeds.empty() && directions.empty() && functions.empty() && accessories.empty() &&
            contacts.empty() && power.empty() && overloads.empty() && readings.empty() && devices.empty() &&
-           discoveries.empty() && !configurationChanged;
+           automation.empty() && discoveries.empty() && !configurationChanged;
 }
 
 void StationUpdates::clear() {
@@ -32,6 +32,7 @@ void StationUpdates::clear() {
     overloads.clear();
     readings.clear();
     devices.clear();
+    automation.clear();
     discoveries.clear();
     configurationChanged = false;
 }
@@ -68,6 +69,14 @@ void StationEventCollector::observe(const cs2::Message& message) {
                    [&](const cs2::LocoDiscovery& m) {
                        if (answer)
                            u.discoveries.push_back(m);
+                   },
+                   [&](const cs2::AutomationSwitch& m) {
+                       if (!answer)
+                           return;
+                       AutomationAnnouncement a{m.device, m.function, std::nullopt, m.loco};
+                       if (!m.loco)
+                           a.state = m.position;
+                       u.automation.push_back(a);
                    },
                    [&](const cs2::ConfigDataStream& m) {
                        if (m.form == cs2::ConfigDataStream::Form::BroadcastHeader)

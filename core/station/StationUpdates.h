@@ -64,6 +64,15 @@ struct ReadingValue {
     std::uint16_t raw = 0;
 };
 
+// A state a device announced for one of its automation functions or blocks (9.1, a status answer): the
+// value as received (values the document does not define are kept), or the locomotive in the block (DLC 8).
+struct AutomationAnnouncement {
+    std::uint16_t device = 0;
+    std::uint16_t function = 0;
+    std::optional<std::uint8_t> state;
+    std::optional<cs2::LocId> loco;
+};
+
 // Everything one batch of frames changed, from any controller on the bus, so that the model updates
 // once per batch. Only confirmed state: answers (response bit) and S88 events.
 struct StationUpdates {
@@ -76,6 +85,7 @@ struct StationUpdates {
     std::vector<OverloadReport> overloads;
     std::vector<ReadingValue> readings;
     std::vector<cs2::DeviceIdentity> devices; // ping answers
+    std::vector<AutomationAnnouncement> automation;
     // Discovery answers (3.1): steps of an mfx search, a found decoder (range 32), or none (no UID).
     std::vector<cs2::LocoDiscovery> discoveries;
     bool configurationChanged = false; // a broadcast config stream (DLC 7 header) began

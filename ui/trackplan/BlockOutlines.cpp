@@ -81,7 +81,7 @@ private:
 
 BlockOutlines::BlockOutlines(std::vector<Block> blocks) : m_blocks(std::move(blocks)) {}
 
-BlockOutlines BlockOutlines::ofPage(const PlanGraph& graph, int page) {
+BlockOutlines BlockOutlines::ofPage(const PlanGraph& graph, int page, const StateOf& stateOf) {
     std::vector<Block> parts;
     const trackgraph::TrackGraph& g = graph.graph();
     const auto onPage = [&](trackgraph::TileId id) {
@@ -94,6 +94,8 @@ BlockOutlines BlockOutlines::ofPage(const PlanGraph& graph, int page) {
     };
     for (const trackgraph::Block& block : g.blocks()) {
         Block part{block.id, QString::fromStdString(block.name), {}, {}};
+        if (const QString state = stateOf ? stateOf(block.id) : QString(); !state.isEmpty())
+            part.name += QStringLiteral(" · ") + state;
         for (const trackgraph::TileId id : block.tiles)
             if (onPage(id))
                 part.cells.push_back(cellOf(id));

@@ -5,6 +5,7 @@
 #include <QPoint>
 #include <QRect>
 #include <QString>
+#include <functional>
 #include <vector>
 
 class QPainter;
@@ -31,8 +32,11 @@ public:
 
     BlockOutlines() = default;
     explicit BlockOutlines(std::vector<Block> blocks);
-    // The parts of the graph's blocks on one page of the plan (index into the layout's pages).
-    static BlockOutlines ofPage(const PlanGraph& graph, int page);
+    // What is said of a block beside its name (a state another program announced); empty for nothing.
+    using StateOf = std::function<QString(int block)>;
+    // The parts of the graph's blocks on one page of the plan (index into the layout's pages), each named
+    // "name · state" where `stateOf` says something.
+    static BlockOutlines ofPage(const PlanGraph& graph, int page, const StateOf& stateOf = {});
 
     bool isEmpty() const { return m_blocks.empty(); }
     const std::vector<Block>& blocks() const { return m_blocks; }

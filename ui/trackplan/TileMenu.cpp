@@ -29,12 +29,26 @@ void addChoice(QMenu& menu, QActionGroup& group, const QString& text, bool check
                      });
 }
 
+// An entry that calls `run` on the railway while it still exists.
+template <class Run>
+QAction* addAction(QMenu& menu, const QString& text, model::Railway& railway, Run run) {
+    QAction* action = menu.addAction(text);
+    QObject::connect(action, &QAction::triggered, &railway,
+                     [railway = QPointer<model::Railway>(&railway), run] {
+                         if (railway)
+                             run(*railway);
+                     });
+    return action;
+}
+
 } // namespace
 
 bool TileMenu::fill(QMenu& menu, const model::LayoutTile& tile, model::Railway& railway) {
     menu.setObjectName(QStringLiteral("trackTileMenu"));
     if (tile.accessory)
         return fillPositions(menu, tile, railway);
+    if (tile.route)
+        return fillRoute(menu, tile, railway);
     if (tile.contact)
         return fillOccupants(menu, tile, railway);
     return false;
@@ -50,6 +64,23 @@ bool TileMenu::fillPositions(QMenu& menu, const model::LayoutTile& tile, model::
         addChoice(menu, *group, TrackTileInfo::positionName(tile.type, tile.category, position),
                   position == accessory->position(), railway,
                   [id, position](model::Railway& r) { r.switchAccessory(id, position); });
+    return true;
+}
+
+// A route runs from Stellwerk (each accessory switched in turn) or, where it has a memory slot, from the
+// station's memory, which other programs on the station see as running and active.
+bool TileMenu::fillRoute(QMenu& menu, const model::LayoutTile& tile, model::Railway& railway) {
+    const model::Route* route = railway.route(*tile.route);
+    if (!route)
+        return false;
+    const std::int64_t id = route->id();
+    const QString slot = model::BlockStates::memorySlotOfRoute(id);
+    addAction(menu, tr("Run from Stellwerk"), railway, [id](model::Railway& r) { r.runRoute(id); });
+    if (slot.isEmpty())
+        return true;
+    QAction* ask = addAction(menu, tr("Run from the station's memory (%1)").arg(slot), railway,
+                             [id](model::Railway& r) { r.blockStates().requestRoute(id); });
+    ask->setObjectName(QStringLiteral("memoryEntry"));
     return true;
 }
 

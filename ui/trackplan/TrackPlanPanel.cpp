@@ -7,6 +7,7 @@
 #include "model/LayoutInUse.h"
 #include "model/Railway.h"
 #include "trackgraph/TrackGraph.h"
+#include "trackplan/AnnouncedStateText.h"
 #include "trackplan/BlockDescription.h"
 #include "trackplan/BlockOutlines.h"
 #include "trackplan/BlockPopup.h"
@@ -105,10 +106,14 @@ TrackPlanPanel::TrackPlanPanel(QWidget* parent) : QWidget(parent) {
 TrackPlanPanel::~TrackPlanPanel() = default;
 
 void TrackPlanPanel::setRailway(model::Railway* railway) {
-    if (m_railway)
+    if (m_railway) {
         disconnect(m_railway, nullptr, this, nullptr);
+        disconnect(&m_railway->blockStates(), nullptr, this, nullptr);
+    }
     m_railway = railway;
     if (m_railway) {
+        connect(&m_railway->blockStates(), &model::BlockStates::changed, this,
+                &TrackPlanPanel::applyBlockStates);
         connect(m_railway, &model::Railway::loaded, this, &TrackPlanPanel::railwayLoaded);
         connect(m_railway, &model::Railway::tilesChanged, this, &TrackPlanPanel::tilesChanged);
         connect(m_railway, &model::Railway::routeStarted, this, &TrackPlanPanel::routeChanged);
@@ -367,10 +372,23 @@ QString TrackPlanPanel::toolTipOn(const model::TrackLayout& layout, model::TileR
         if (const model::FeedbackContact* contact = m_railway->contact(*tile.contact); contact)
             if (const QString occupant = occupantName(*contact); !occupant.isEmpty())
                 tip += QStringLiteral("\n") + tr("Locomotive on it: %1").arg(occupant);
+    if (tile.route && isLive())
+        tip += memoryToolTip(*tile.route);
     const bool hasState = tile.accessory || tile.contact || tile.route;
     if (hasState && isLive() && !isReported())
         tip += QStringLiteral("\n") + NotReported::reason();
     return tip + graphToolTip(ref);
+}
+
+// A route's memory slot on the station, and what the station last announced for it.
+QString TrackPlanPanel::memoryToolTip(std::int64_t route) const {
+    const QString slot = model::BlockStates::memorySlotOfRoute(route);
+    if (slot.isEmpty())
+        return {};
+    const auto state = m_railway->blockStates().routeState(route);
+    return QStringLiteral("\n") +
+           (state ? tr("Station memory %1: %2").arg(slot, AnnouncedStateText::of(state->meaning()))
+                  : tr("Station memory %1").arg(slot));
 }
 
 // While the blocks are shown: the block a tile is in, and the drawing's problems there.
@@ -379,9 +397,12 @@ QString TrackPlanPanel::graphToolTip(model::TileRef tile) const {
         return {};
     QString tip;
     const trackgraph::TrackGraph& graph = m_graph->graph();
-    for (const int block : m_graph->blocksAt(tile))
+    for (const int block : m_graph->blocksAt(tile)) {
         tip += QStringLiteral("\n") +
                tr("Block %1 '%2'").arg(block).arg(QString::fromStdString(graph.block(block).name));
+        if (const QString state = announcedStateOf(block); !state.isEmpty())
+            tip += QStringLiteral("\n") + tr("Announced on the station's bus: %1").arg(state);
+    }
     for (const trackgraph::Problem* problem : m_graph->problemsAt(tile))
         tip += QStringLiteral("\n") + tr("Problem: %1").arg(GraphProblemText::sentence(graph, *problem));
     return tip;
@@ -524,7 +545,9 @@ void TrackPlanPanel::applyBlocks() {
     const bool shown = showsBlocks() && m_graph;
     for (int i = 0; i < int(m_views.size()); ++i)
         if (TrackPageView* view = m_views[std::size_t(i)]) {
-            view->setBlocks(shown ? BlockOutlines::ofPage(*m_graph, i) : BlockOutlines());
+            view->setBlocks(shown ? BlockOutlines::ofPage(
+                                        *m_graph, i, [this](int block) { return announcedStateOf(block); })
+                                  : BlockOutlines());
             view->setProblemTiles(shown ? m_graph->problemTilesOf(i) : std::vector<int>());
         }
     if (shown && !m_graph->graph().problems().empty())
@@ -533,6 +556,23 @@ void TrackPlanPanel::applyBlocks() {
         m_drawingProblems->clear();
     if (!shown)
         m_blockPopup->hide();
+}
+
+// Another program announced block states on the bus: the blocks' names say them.
+void TrackPlanPanel::applyBlockStates() {
+    if (!showsBlocks() || !m_graph)
+        return;
+    for (int i = 0; i < int(m_views.size()); ++i)
+        if (TrackPageView* view = m_views[std::size_t(i)])
+            view->setBlocks(
+                BlockOutlines::ofPage(*m_graph, i, [this](int block) { return announcedStateOf(block); }));
+}
+
+QString TrackPlanPanel::announcedStateOf(int block) const {
+    if (!isLive())
+        return {};
+    const auto state = m_railway->blockStates().blockState(block);
+    return state ? AnnouncedStateText::of(state->meaning()) : QString();
 }
 
 void TrackPlanPanel::goToPage(std::int64_t pageId) {
@@ -595,6 +635,7 @@ void TrackPlanPanel::retranslate() {
                       : QString());
     m_source->setToolTip(QString::fromStdString(config.string()));
     m_blockPopup->hide(); // its words are in the language before
+    applyBlockStates();   // so are the states on the blocks' tabs
     if (m_layout)
         for (int i = 0; i < m_tabs->count(); ++i) {
             if (m_layout->pages()[std::size_t(i)].name.isEmpty())

@@ -142,6 +142,10 @@ private:
     QString accessoryName(std::int64_t id) const;
     QString routeName(std::int64_t id) const;
     void applyBlocks();
+    void applyBlockStates();
+    // What another program announced for a block on the bus, in words; empty when nothing.
+    QString announcedStateOf(int block) const;
+    QString memoryToolTip(std::int64_t route) const;
     void showBlock(model::TileRef tile, int block);
     QString graphToolTip(model::TileRef tile) const;
     void showProblem(std::function<QString()> describe);

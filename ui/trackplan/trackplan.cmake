@@ -1,6 +1,7 @@
 # The track plan tab: pages of the CS2 gleisbild drawn as vector tiles, live states, switching by click, and
 # the track graph's blocks and problems drawn over them.
 target_sources(stellwerk-ui PRIVATE
+    trackplan/AnnouncedStateText.cpp trackplan/AnnouncedStateText.h
     trackplan/BlockDescription.cpp trackplan/BlockDescription.h
     trackplan/BlockOutlines.cpp trackplan/BlockOutlines.h
     trackplan/BlockPopup.cpp trackplan/BlockPopup.h

@@ -8,6 +8,7 @@
 
 #include "DocumentExamplesSupport.h"
 #include "can/FrameText.h"
+#include "cs2/Automation.h"
 #include "cs2/Codec.h"
 #include "cs2/Crc16.h"
 #include "cs2/Fields.h"
@@ -380,6 +381,66 @@ TEST(Document_9_1_AutomationSwitch, BroadcastDevice) {
     // "Sonderfall Broadcastadresse: Die Funktion wird NUR vom Master ausgeführt."
     EXPECT_EQ(decodeAs<AutomationSwitch>("00604711 6 00 00 41 31 01 00").device, 0x0000);
     expectRoundTrip("00604711 6 00 00 41 31 01 00");
+}
+
+TEST(Document_9_1_AutomationSwitch, UnknownStatusIsShownAsUnknown) {
+    // "ein Endgerät [muss] unbekannte Stati ... als 'Automatikfunktion Ablauffehler' mit Darstellung 'Status
+    // unbekannt' interpretieren": the value is kept, and the description says it is unknown.
+    EXPECT_EQ(described("00614711 6 00 05 41 31 07 00", "state"), "unknown");
+    EXPECT_EQ(described("00614711 6 00 05 41 31 FD 00", "state"), "unknown");
+    EXPECT_EQ(described("00614711 6 00 05 41 31 04 00", "state"), "<none>");
+    EXPECT_EQ(described("00614711 6 00 05 41 31 FF 00", "state"), "<none>"); // error is a known state
+    EXPECT_FALSE(automationStateOf(7).has_value());
+    EXPECT_FALSE(automationStateOf(253).has_value());
+}
+
+TEST(Document_9_1_AutomationSwitch, StatusValuesAreTheDocumentsStates) {
+    EXPECT_EQ(automationStateOf(0), AutomationState::Deactivated);
+    EXPECT_EQ(automationStateOf(1), AutomationState::Activated);
+    EXPECT_EQ(automationStateOf(2), AutomationState::Running);
+    EXPECT_EQ(automationStateOf(3), AutomationState::BlockFree);
+    EXPECT_EQ(automationStateOf(4), AutomationState::BlockOccupied);
+    EXPECT_EQ(automationStateOf(5), AutomationState::Suspended);
+    EXPECT_EQ(automationStateOf(6), AutomationState::Reserved);
+    EXPECT_EQ(automationStateOf(254), AutomationState::Waiting);
+    EXPECT_EQ(automationStateOf(255), AutomationState::Error);
+    EXPECT_EQ(automationStateName(AutomationState::BlockOccupied), "block-occupied");
+}
+
+TEST(Document_9_1_AutomationSwitch, RequestEncodesAsTheFormatTable) {
+    // Built from the typed message: DLC 6, device high/low, function high/low, position, parameter.
+    const Message request{
+        0, false, 0x4711,
+        AutomationSwitch{0x0005, MemoryFunction::fromText("B3")->wire(), 1, 0, std::nullopt}};
+    EXPECT_EQ(formatDocument(encode(request)), "00604711 6 00 05 42 33 01 00");
+    const Message status{0, true, 0x4711, AutomationSwitch{0x0005, 0x4233, 4, 0, std::nullopt}};
+    EXPECT_EQ(formatDocument(encode(status)), "00614711 6 00 05 42 33 04 00");
+}
+
+TEST(Document_1_3_2_2_MemoryFunctions, RowsAToZThenAToZColumnsOneToEight) {
+    // "Im Highbyte der Zeilen-Index (Wertebereich: A-Z, a-z) und im Lowbyte der Spaltenindex (1-8)".
+    EXPECT_EQ(MemoryFunction::fromWire(0x4131)->text(), "A1");
+    EXPECT_EQ(MemoryFunction::fromWire(0x4131)->number(), 1);
+    EXPECT_EQ(MemoryFunction::fromWire(0x4138)->number(), 8);
+    EXPECT_EQ(MemoryFunction::fromWire(0x4231)->number(), 9);
+    EXPECT_EQ(MemoryFunction::fromWire(0x5A38)->number(), 208); // Z8
+    EXPECT_EQ(MemoryFunction::fromWire(0x6131)->number(), 209); // a1
+    EXPECT_EQ(MemoryFunction::fromWire(0x7A38)->number(), 416); // z8
+    EXPECT_EQ(MemoryFunction::fromNumber(209)->text(), "a1");
+    EXPECT_EQ(MemoryFunction::fromNumber(416)->wire(), 0x7A38);
+    EXPECT_EQ(MemoryFunction::fromText("c5")->row(), 'c');
+    EXPECT_EQ(MemoryFunction::fromText("c5")->column(), 5);
+    for (int n = 1; n <= MemoryFunction::Count; ++n)
+        ASSERT_EQ(MemoryFunction::fromWire(MemoryFunction::fromNumber(n)->wire())->number(), n);
+    // Outside A1..z8: the reserved gap ("A0"), a ninth column, S88 contacts, and numbers beyond the memory.
+    EXPECT_FALSE(MemoryFunction::fromWire(0x4130).has_value());
+    EXPECT_FALSE(MemoryFunction::fromWire(0x4139).has_value());
+    EXPECT_FALSE(MemoryFunction::fromWire(0x5B31).has_value());
+    EXPECT_FALSE(MemoryFunction::fromWire(0x0005).has_value());
+    EXPECT_FALSE(MemoryFunction::fromNumber(0).has_value());
+    EXPECT_FALSE(MemoryFunction::fromNumber(417).has_value());
+    EXPECT_FALSE(MemoryFunction::fromText("A").has_value());
+    EXPECT_EQ(described("00604711 6 00 05 41 39 01 00", "memory"), "<none>");
 }
 
 } // namespace

@@ -5,6 +5,7 @@ target_sources(stellwerk-ui-tests PRIVATE
     trackplan/PageZoomTest.cpp
     trackplan/PaintBandsTest.cpp
     trackplan/TileTagTest.cpp
+    trackplan/TrackPlanBlockStatesTest.cpp
     trackplan/TrackPlanBlocksTest.cpp
     trackplan/TrackGraphDrawingTest.cpp
     trackplan/TrackPlanPanelTest.cpp
