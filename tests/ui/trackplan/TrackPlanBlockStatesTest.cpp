@@ -3,10 +3,11 @@
 // tooltips, and the route buttons' menu asking the station to run a route from its memory; English and
 // German.
 #include "EmbeddedStationSupport.h"
+#include "binding/RailwayBinding.h"
 #include "cs2/Codec.h"
 #include "model/BlockStates.h"
+#include "model/LayoutInUse.h"
 #include "model/Railway.h"
-#include "shell/RailwayBinding.h"
 #include "shell/Translations.h"
 #include "support/StationTestSupport.h"
 #include "trackgraph/TrackGraph.h"
@@ -37,9 +38,9 @@ protected:
         ASSERT_TRUE(translations.select(Language::English));
         ASSERT_TRUE(server.start());
         panel = std::make_unique<TrackPlanPanel>();
-        QObject::connect(&railways, &RailwayBinding::railwayChanged, panel.get(),
+        QObject::connect(&railways, &binding::RailwayBinding::railwayChanged, panel.get(),
                          &TrackPlanPanel::setRailway);
-        panel->setConnection(&station);
+        panel->setLayoutInUse(&layout);
         station.connectTo(server.url());
         ASSERT_TRUE(test::waitForState(station, State::Ready));
         ASSERT_NE(railways.railway(), nullptr);
@@ -101,7 +102,8 @@ protected:
     Translations translations;
     test::TestStation server;
     connection::StationConnection station{support::withEmbeddedStation()};
-    RailwayBinding railways{station};
+    model::LayoutInUse layout;
+    binding::RailwayBinding railways{station, &layout};
     std::unique_ptr<TrackPlanPanel> panel;
     QTcpSocket other;
 };
