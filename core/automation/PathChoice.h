@@ -41,6 +41,13 @@ public:
     std::optional<Path> choose(const trackgraph::BlockEnd& front, int trainLengthMm,
                                const TrackState& state) const;
 
+    // The way to one block (a schedule's next stop): the same rules for the blocks passed; the target must
+    // be free and no shorter than the train. When no way is free all the way, the way as far along the
+    // shortest route as is free, to a block the train may stop in (it goes on from there). nullopt when it
+    // cannot go anywhere towards the target now.
+    std::optional<Path> chooseTo(const trackgraph::BlockEnd& front, int target, int trainLengthMm,
+                                 const TrackState& state) const;
+
     // Whether a train running towards `towards` would stop gladly in the block (see above).
     bool isStation(int block, trackgraph::End towards) const;
 
@@ -48,6 +55,7 @@ private:
     bool canStop(int block, trackgraph::End towards, int trainLengthMm, const TrackState& state) const;
     bool hasWayOn(int block, trackgraph::End towards, const TrackState& state) const;
     bool usable(const trackgraph::Connection& connection, const TrackState& state) const;
+    std::optional<Path> routeTo(const trackgraph::BlockEnd& front, int target, const TrackState* state) const;
 
     const trackgraph::TrackGraph& graph_;
 };
