@@ -274,6 +274,22 @@ TrackState Dispatcher::stateFor(std::uint32_t locId) const {
             return std::nullopt;
         return tracking_.body(in)->towards;
     };
+    state.travelling = [this, locId](int block) -> std::optional<End> {
+        for (const auto& [other, body] : trains_) {
+            if (other == locId)
+                continue;
+            if (tracking_.body(other)->frontBlock == block)
+                return tracking_.body(other)->towards;
+            const auto journey = journeys_.find(other);
+            if (journey == journeys_.end())
+                continue;
+            const Path& path = journey->second.path;
+            for (std::size_t i = journey->second.next; i < path.blocks.size(); ++i)
+                if (path.blocks[i] == block)
+                    return trackgraph::otherEnd(graph_.connection(path.connections[i]).to.end);
+        }
+        return std::nullopt;
+    };
     return state;
 }
 

@@ -132,7 +132,35 @@ bool PathChoice::usable(const trackgraph::Connection& connection, const TrackSta
 }
 
 bool PathChoice::canStop(int block, End towards, int trainLengthMm, const TrackState& state) const {
-    return graph_.block(block).lengthMm >= trainLengthMm && hasWayOn(block, towards, state);
+    return graph_.block(block).lengthMm >= trainLengthMm && hasWayOn(block, towards, state) &&
+           clearAhead({block, towards}, state);
+}
+
+// Along the single line ahead (ways into sidings that end at buffer stops do not count) up to the next
+// place where trains can pass: no train standing there or bound there the other way.
+bool PathChoice::clearAhead(const BlockEnd& from, const TrackState& state) const {
+    if (!state.travelling)
+        return true;
+    BlockEnd at = from;
+    for (std::size_t steps = 0; steps < graph_.blocks().size(); ++steps) {
+        std::vector<int> onward;
+        for (const int id : graph_.connectionsFrom(at)) {
+            const trackgraph::Connection& connection = graph_.connection(id);
+            if (!graph_.connectionsFrom({connection.to.block, trackgraph::otherEnd(connection.to.end)})
+                     .empty())
+                onward.push_back(id);
+        }
+        if (onward.size() != 1)
+            return true; // a place to pass, or the end of the line
+        const trackgraph::Connection& line = graph_.connection(onward.front());
+        const End travel = trackgraph::otherEnd(line.to.end);
+        if (const std::optional<End> other = state.travelling(line.to.block); other && *other != travel)
+            return false;
+        at = {line.to.block, travel};
+        if (at == from)
+            return true; // round a loop without a place to pass
+    }
+    return true;
 }
 
 bool PathChoice::hasWayOn(int block, End towards, const TrackState& state) const {

@@ -82,8 +82,8 @@ TEST(AutoRunCommand, ThreeTrainsRunOnTheDemoWithoutAccidentAndASummaryEndsTheRun
         EXPECT_EQ(train["state"].toString(), "stopped");
 }
 
-// --schedule: the BR 218 runs from Gleis 1 to its one stop, Ausfahrt Ost, and stays; the file then says it has
-// run its schedule (next 1 of 1), so a run started again does not send it anywhere.
+// --schedule: the BR 218 runs from Gleis 1 to its one stop, Ausfahrt Ost, and stays; the file then says it
+// has run its schedule (next 1 of 1), so a run started again does not send it anywhere.
 TEST(AutoRunCommand, AScheduleFileSendsTheTrainToItsStopAndRecordsWhereItIs) {
     ensureApplication();
     QTemporaryDir folder;

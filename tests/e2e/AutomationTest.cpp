@@ -221,6 +221,24 @@ TEST(Automation, APushPullTrainTurnsAtTheSidingAndOnGleis1WithoutAccident) {
     EXPECT_EQ(rig.movement->accidents().total(), 0) << rig.accidents.front();
 }
 
+// Opposing trains: the demo's single line (Block 1 to Block 4, with Ausfahrt Ost and Einfahrt West) has one
+// place to pass, the station's Gleis 1 and Gleis 2. The BR 218 runs round it one way, the ICE the other way.
+// Five simulated minutes: no accident, no fault, and both keep moving in every minute (no deadlock).
+TEST(Automation, TwoTrainsRunOppositeWaysOverTheSingleLineAndPassInTheStation) {
+    AutomationRig rig;
+    ASSERT_TRUE(rig.start({{Br218, 1, End::B}, {Ice, 2, End::A}}));
+    rig.startAutomation();
+    for (int minute = 0; minute < 5; ++minute) {
+        const int br218 = rig.count(Kind::Entered, Br218), ice = rig.count(Kind::Entered, Ice);
+        rig.run(std::chrono::minutes(1));
+        EXPECT_GT(rig.count(Kind::Entered, Br218), br218) << "minute " << minute << "\n" << rig.eventLog();
+        EXPECT_GT(rig.count(Kind::Entered, Ice), ice) << "minute " << minute << "\n" << rig.eventLog();
+    }
+    EXPECT_GE(rig.automation->dispatcher().blockMoves(), 40);
+    EXPECT_EQ(rig.automation->dispatcher().faults(), 0) << rig.eventLog();
+    EXPECT_EQ(rig.movement->accidents().total(), 0) << rig.accidents.front();
+}
+
 // The demo without W2 in magnetartikel.cs2: the railway cannot switch turnout 2 (no such article on the
 // keyboard), so it is never confirmed. After three attempts the BR 218 has not moved, its way is given back
 // and the fault names the turnout.
