@@ -129,10 +129,15 @@ void Dispatcher::occupancyRead(const std::set<trackgraph::ContactKey>& occupied)
     for (const int block : tracking_.reread(occupied))
         event(AutomationEvent::Kind::Ghost, 0, block,
               "an unknown occupant in \"" + blockName(block) + "\": no train can have reached it");
+    // A train seen in its block when the station fell silent must be seen there now; one that was not
+    // (past the block's only contact) is taken to be where it was: had it run on, the next block would show
+    // an unknown occupant.
     for (auto& [locId, train] : trains_)
-        if (train.state == TrainState::Unknown && !tracking_.blockOccupied(tracking_.body(locId)->frontBlock))
+        if (train.state == TrainState::Unknown && mustBeSeen_.contains(locId) &&
+            !tracking_.blockOccupied(tracking_.body(locId)->frontBlock))
             stopTrain(train, TrainState::Lost, AutomationEvent::Kind::Lost,
                       train.name + " is no longer seen where it stood: place it again");
+    mustBeSeen_.clear();
 }
 
 void Dispatcher::contactChanged(const trackgraph::ContactKey& contact, bool occupied, Millis now) {

@@ -153,6 +153,7 @@ private:
     std::map<std::uint32_t, Train> trains_;
     std::map<std::uint32_t, Journey> journeys_;
     std::map<std::int64_t, int> positions_; // turnouts as the railway reports them
+    std::set<std::uint32_t> mustBeSeen_;    // ran or were seen when the station fell silent
     bool paused_ = false;
     int blockMoves_ = 0;
     int faults_ = 0;

@@ -339,10 +339,14 @@ void Dispatcher::halt(const std::string& why) {
 
 void Dispatcher::stationLost() {
     paused_ = true;
-    for (auto& [locId, train] : trains_)
-        if (train.mode == TrainMode::Automatic && train.state != TrainState::Fault &&
-            train.state != TrainState::Lost)
-            train.state = TrainState::Unknown;
+    for (auto& [locId, train] : trains_) {
+        if (train.mode != TrainMode::Automatic || train.state == TrainState::Fault ||
+            train.state == TrainState::Lost || train.state == TrainState::Unknown)
+            continue;
+        if (tracking_.blockOccupied(tracking_.body(locId)->frontBlock))
+            mustBeSeen_.insert(locId);
+        train.state = TrainState::Unknown;
+    }
     for (auto& [locId, journey] : journeys_)
         journey.pending.clear();
 }

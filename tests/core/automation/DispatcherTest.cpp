@@ -163,6 +163,26 @@ TEST_F(DispatcherTest, WhileTheStationIsSilentTheTrainIsUnknownAndStaysStoppedWh
     EXPECT_EQ(dispatcher.reservations().blocksOf(Loco), std::vector<int>{Gleis1});
 }
 
+// The BR 218 stands in Block 1 past its only contact (it stopped by the distance), unseen: when the station
+// returns, it is still where it stood.
+TEST_F(DispatcherTest, ATrainThatStoodUnseenIsWhereItStoodWhenTheStationReturns) {
+    confirmTurnouts(100);
+    dispatcher.contactChanged(contact(8), true, 1000);
+    dispatcher.contactChanged(contact(3), true, 2000);
+    dispatcher.contactChanged(contact(1), false, 2100);
+    dispatcher.contactChanged(contact(8), false, 2200);
+    dispatcher.tick(60000);                              // stopped by the distance in Block 1
+    dispatcher.contactChanged(contact(3), false, 61000); // its contact behind it
+    remember();
+    ASSERT_EQ(dispatcher.tracking().body(Loco)->frontBlock, Block1);
+    ASSERT_EQ(dispatcher.train(Loco)->state, TrainState::Waiting) << events.back().text;
+    dispatcher.stationLost();
+    dispatcher.occupancyRead({});
+    remember();
+    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Unknown);
+    EXPECT_EQ(count(Kind::Lost), 0);
+}
+
 TEST_F(DispatcherTest, ATrainNotSeenWhereItStoodWhenTheStationReturnsIsLost) {
     dispatcher.stationLost();
     dispatcher.occupancyRead({contact(5)});
