@@ -66,8 +66,10 @@ bool waitFor(const std::function<bool()>& condition, int timeoutMs = 10000) {
 }
 
 constexpr const char* Schedules = R"({"trains": [
-    {"loc": "mfx:1", "loop": true, "stops": [{"block": "Gleis 1", "dwell": 8}, {"block": "Block 3", "dwell": 5}]},
-    {"loc": "mfx:2", "loop": true, "stops": [{"block": "Block 1", "dwell": 4}, {"block": "Gleis 2", "dwell": 6}]}]})";
+    {"loc": "mfx:1", "loop": true,
+     "stops": [{"block": "Gleis 1", "dwell": 8}, {"block": "Block 3", "dwell": 5}]},
+    {"loc": "mfx:2", "loop": true,
+     "stops": [{"block": "Block 1", "dwell": 4}, {"block": "Gleis 2", "dwell": 6}]}]})";
 
 // The station with its moving trains behind a TCP server on a fixed loopback port; the app's session,
 // railway and automation on the graph of the station's own plan.

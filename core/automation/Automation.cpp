@@ -65,7 +65,7 @@ void Automation::start(std::chrono::milliseconds interval) {
     dispatcher_.occupancyRead(occupiedContacts());
     for (const auto& [locId, train] : dispatcher_.trains()) {
         if (const model::Locomotive* loco = railway_.locomotive(locId))
-            told_[locId] = Told{{}, loco->speed(), loco->direction(), std::nullopt};
+            told_[locId] = Told{{}, loco->speed(), loco->speed(), loco->direction(), std::nullopt};
         dispatcher_.setMode(locId, TrainMode::Automatic, clock_());
     }
     carryOut();
@@ -85,7 +85,7 @@ void Automation::resume() {
 
 void Automation::handBack(std::uint32_t locId) {
     if (const model::Locomotive* loco = railway_.locomotive(locId))
-        told_[locId] = Told{{}, loco->speed(), loco->direction(), std::nullopt};
+        told_[locId] = Told{{}, loco->speed(), loco->speed(), loco->direction(), std::nullopt};
     dispatcher_.handBack(locId, clock_());
     carryOut();
 }
@@ -165,8 +165,9 @@ bool Automation::heardOwnCommand(std::uint32_t locId, const model::Locomotive& l
         return true;
     const auto heard = std::find(told.unheard.begin(), told.unheard.end(), int(loco.speed()));
     if (heard == told.unheard.end())
-        return loco.speed() == told.speed;
+        return loco.speed() == told.speed || loco.speed() == told.heard; // or a command of ours failed
     told.unheard.erase(told.unheard.begin(), heard + 1);
+    told.heard = loco.speed();
     return true;
 }
 

@@ -78,11 +78,13 @@ private:
     QTimer timer_;
     std::map<quint32, bool> occupied_; // as last told to the dispatcher
     int switchings_ = 0;
-    // What this automation told a locomotive: speeds sent and not heard back yet, the last one, the
-    // direction. A change heard on the bus that is none of them is another controller's.
+    // What this automation told a locomotive: speeds sent and not heard back yet, the last one sent and
+    // the last one heard, the direction. A change heard on the bus that is none of them is another
+    // controller's.
     struct Told {
         std::deque<int> unheard;
         int speed = 0;
+        int heard = 0; // the last of them the station confirmed
         std::optional<cs2::Direction> direction;
         std::optional<cs2::Direction> turnedFrom; // until the direction it was turned to is heard
     };

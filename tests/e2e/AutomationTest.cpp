@@ -207,7 +207,8 @@ TEST(Automation, APushPullTrainTurnsAtTheSidingAndOnGleis1WithoutAccident) {
     AutomationRig rig;
     ASSERT_TRUE(rig.start({{Br218, 1, End::B}}));
     const auto schedules = automation::parseSchedules(R"({"trains": [{"loc": "mfx:1", "loop": true,
-        "pushPull": true, "stops": [{"block": "Abstellgleis", "dwell": 2}, {"block": "Gleis 1", "dwell": 2}]}]})");
+        "pushPull": true,
+        "stops": [{"block": "Abstellgleis", "dwell": 2}, {"block": "Gleis 1", "dwell": 2}]}]})");
     ASSERT_TRUE(bool(schedules)) << schedules.error();
     ASSERT_EQ(rig.automation->setSchedule(Br218, schedules->at(Br218)), std::nullopt);
     rig.startAutomation();
