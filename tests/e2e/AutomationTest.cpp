@@ -1,7 +1,9 @@
 // Issue 34, proven on the simulator: automatic trains driven by the automation over a real TCP socket
 // against the simulated CS2, whose accident counters are the referee. Simulated minutes on the demo, the
 // same trains driven without automation for comparison, and the faults: a ghost on a reserved way, an
-// external switch of a reserved turnout, an overrun, the station falling silent.
+// external switch of a reserved turnout, an overrun, the station falling silent. Then mixed operation
+// (another controller or this program's throttle takes a train), schedules, turning round, and two trains
+// running opposite ways over the single line.
 
 #include "AutomationRig.h"
 #include "automation/Schedule.h"
