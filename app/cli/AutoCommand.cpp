@@ -3,13 +3,16 @@
 #include "automation/Automation.h"
 #include "automation/LayoutGraph.h"
 #include "automation/Placement.h"
+#include "automation/Schedule.h"
 #include "model/Railway.h"
 #include "station/StartupSequence.h"
 
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QObject>
+#include <QSaveFile>
 #include <QTimer>
 #include <memory>
 #include <ostream>
@@ -20,6 +23,7 @@ namespace {
 struct AutoOptions {
     std::vector<automation::Placement> placements;
     std::string layoutFolder;
+    std::string scheduleFile;
     int seconds = 60;
     bool json = false;
 };
@@ -80,8 +84,40 @@ private:
             if (const auto problem =
                     automation_->place(placement.locId, placement.contact, placement.towards))
                 return fail(*problem);
+        if (!options_.scheduleFile.empty() && !giveSchedules())
+            return;
         automation_->start();
         QTimer::singleShot(options_.seconds * 1000, this, &AutoRun::end);
+    }
+
+    // The schedule file's schedules to the placed trains; false (and the run fails) when it cannot be.
+    bool giveSchedules() {
+        QFile file(QString::fromStdString(options_.scheduleFile));
+        if (!file.open(QIODevice::ReadOnly))
+            return refuse("--schedule: cannot read " + options_.scheduleFile);
+        const QByteArray text = file.readAll();
+        const auto schedules =
+            automation::parseSchedules(std::string_view(text.data(), std::size_t(text.size())));
+        if (!schedules)
+            return refuse("--schedule: " + schedules.error());
+        for (const auto& [locId, schedule] : *schedules)
+            if (const auto problem = automation_->setSchedule(locId, schedule))
+                return refuse("--schedule: " + *problem);
+        return true;
+    }
+
+    // Where every scheduled train is in its schedule, written back to the file, so that the next run goes on
+    // from there.
+    void saveSchedules() {
+        std::map<std::uint32_t, automation::Schedule> schedules;
+        for (const auto& [locId, train] : automation_->dispatcher().trains())
+            if (train.schedule)
+                schedules[locId] = *train.schedule;
+        QSaveFile file(QString::fromStdString(options_.scheduleFile));
+        const std::string text = automation::schedulesJson(schedules);
+        if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), qint64(text.size())) < 0 ||
+            !file.commit())
+            err_ << "stellwerk-cli auto run: cannot write " << options_.scheduleFile << '\n';
     }
 
     // Every train it drove stopped (and the station's answer waited for), everything given back.
@@ -105,6 +141,8 @@ private:
     }
 
     void print(const automation::AutomationEvent& event) {
+        if (event.kind == automation::AutomationEvent::Kind::Arrived && !options_.scheduleFile.empty())
+            saveSchedules();
         const QString name = trainName(event.locId);
         if (!options_.json) {
             out_ << eventKindName(event.kind) << ": " << event.text << std::endl;
@@ -155,6 +193,11 @@ private:
         client_.finish(NotAcknowledged);
     }
 
+    bool refuse(const std::string& message) {
+        fail(message);
+        return false;
+    }
+
     StationClient& client_;
     AutoOptions options_;
     std::ostream& out_;
@@ -177,7 +220,8 @@ Expected<AutoOptions, std::string> parseOptions(const std::vector<std::string>& 
         const bool hasValue = i + 1 < arguments.size();
         if (word == "--json") {
             options.json = true;
-        } else if ((word == "--place" || word == "--layout" || word == "--seconds") && !hasValue) {
+        } else if ((word == "--place" || word == "--layout" || word == "--schedule" || word == "--seconds") &&
+                   !hasValue) {
             return "auto run: " + word + " needs a value";
         } else if (word == "--place") {
             auto placement = automation::parsePlacement(arguments[++i]);
@@ -186,6 +230,8 @@ Expected<AutoOptions, std::string> parseOptions(const std::vector<std::string>& 
             options.placements.push_back(*placement);
         } else if (word == "--layout") {
             options.layoutFolder = arguments[++i];
+        } else if (word == "--schedule") {
+            options.scheduleFile = arguments[++i];
         } else if (word == "--seconds") {
             const std::string& text = arguments[++i];
             options.seconds =

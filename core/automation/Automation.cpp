@@ -42,6 +42,11 @@ Automation::Automation(model::Railway& railway, const trackgraph::TrackGraph& gr
         }
     });
     connect(&railway_, &model::Railway::stateReportedChanged, this, &Automation::stateReportedChanged);
+    connect(&railway_, &model::Railway::locomotiveCommandSent, this,
+            [this](quint32 loco, model::Railway::LocomotiveControl control, int) {
+                commandSent(loco, int(control));
+            });
+    connect(&railway_, &model::Railway::locomotivesChanged, this, &Automation::locomotivesChanged);
 }
 
 Automation::~Automation() = default;
@@ -58,8 +63,11 @@ std::optional<std::string> Automation::place(std::uint32_t locId, std::int64_t c
 
 void Automation::start(std::chrono::milliseconds interval) {
     dispatcher_.occupancyRead(occupiedContacts());
-    for (const auto& [locId, train] : dispatcher_.trains())
+    for (const auto& [locId, train] : dispatcher_.trains()) {
+        if (const model::Locomotive* loco = railway_.locomotive(locId))
+            told_[locId] = Told{{}, loco->speed(), loco->speed(), loco->direction(), std::nullopt};
         dispatcher_.setMode(locId, TrainMode::Automatic, clock_());
+    }
     carryOut();
     if (interval.count() > 0)
         timer_.start(interval);
@@ -72,6 +80,13 @@ void Automation::tick() {
 
 void Automation::resume() {
     dispatcher_.resume(clock_());
+    carryOut();
+}
+
+void Automation::handBack(std::uint32_t locId) {
+    if (const model::Locomotive* loco = railway_.locomotive(locId))
+        told_[locId] = Told{{}, loco->speed(), loco->speed(), loco->direction(), std::nullopt};
+    dispatcher_.handBack(locId, clock_());
     carryOut();
 }
 
@@ -112,6 +127,67 @@ void Automation::stateReportedChanged(bool reported) {
     carryOut();
 }
 
+// A speed or direction command of this program (the desk, an MS1, an OpenRailCAN throttle) that is not
+// the automation's own.
+void Automation::commandSent(quint32 loco, int control) {
+    using Control = model::Railway::LocomotiveControl;
+    if (commanding_ || control == int(Control::Function))
+        return;
+    const Train* train = dispatcher_.train(loco);
+    if (!train || train->mode != TrainMode::Automatic)
+        return;
+    dispatcher_.takenByHand(loco, "a throttle");
+    carryOut();
+}
+
+// A speed or direction the station confirmed that the automation did not send: another controller on the
+// bus drives the locomotive.
+void Automation::locomotivesChanged(const QList<quint32>& ids) {
+    for (const quint32 id : ids) {
+        const Train* train = dispatcher_.train(id);
+        const model::Locomotive* loco = railway_.locomotive(id);
+        if (!train || !loco || train->mode != TrainMode::Automatic || heardOwnCommand(id, *loco))
+            continue;
+        dispatcher_.takenByHand(id, "another controller");
+    }
+    carryOut();
+}
+
+bool Automation::heardOwnCommand(std::uint32_t locId, const model::Locomotive& loco) {
+    Told& told = told_[locId];
+    if (loco.isDirectionReported() && told.direction) {
+        if (loco.direction() == *told.direction)
+            told.turnedFrom.reset();
+        else if (loco.direction() != told.turnedFrom)
+            return false;
+    }
+    if (!loco.isSpeedReported())
+        return true;
+    const auto heard = std::find(told.unheard.begin(), told.unheard.end(), int(loco.speed()));
+    if (heard == told.unheard.end())
+        return loco.speed() == told.speed || loco.speed() == told.heard; // or a command of ours failed
+    told.unheard.erase(told.unheard.begin(), heard + 1);
+    told.heard = loco.speed();
+    return true;
+}
+
+// The locomotive turned the other way, as the automation tells it: the station stops it as well, so the
+// speed to hear is 0.
+void Automation::reverse(std::uint32_t locId) {
+    const model::Locomotive* loco = railway_.locomotive(locId);
+    if (!loco)
+        return;
+    Told& told = told_[locId];
+    told.turnedFrom = loco->direction();
+    told.direction =
+        loco->direction() == cs2::Direction::Forward ? cs2::Direction::Backward : cs2::Direction::Forward;
+    told.speed = 0;
+    told.unheard.push_back(0);
+    commanding_ = true;
+    railway_.setDirection(locId, *told.direction);
+    commanding_ = false;
+}
+
 std::set<trackgraph::ContactKey> Automation::occupiedContacts() {
     std::set<trackgraph::ContactKey> occupied;
     occupied_.clear();
@@ -129,8 +205,19 @@ std::set<trackgraph::ContactKey> Automation::occupiedContacts() {
 void Automation::carryOut() {
     for (const DriveCommand& command : dispatcher_.takeCommands()) {
         switch (command.kind) {
-        case DriveCommand::Kind::Speed:
+        case DriveCommand::Kind::Speed: {
+            Told& told = told_[command.locId];
+            told.speed = command.speed;
+            told.unheard.push_back(command.speed);
+            if (told.unheard.size() > 8)
+                told.unheard.pop_front();
+            commanding_ = true;
             railway_.setSpeed(command.locId, command.speed);
+            commanding_ = false;
+            break;
+        }
+        case DriveCommand::Kind::Reverse:
+            reverse(command.locId);
             break;
         case DriveCommand::Kind::Switch:
             ++switchings_;

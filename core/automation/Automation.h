@@ -1,19 +1,22 @@
 #pragma once
 
 #include "automation/Dispatcher.h"
+#include "cs2/Messages.h"
 #include "trackgraph/TrackGraph.h"
 
 #include <QObject>
 #include <QTimer>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <map>
 #include <optional>
 #include <string>
 
 namespace stellwerk::model {
+class Locomotive;
 class Railway;
-}
+} // namespace stellwerk::model
 
 namespace stellwerk::automation {
 
@@ -36,12 +39,18 @@ public:
     // Puts a locomotive of the railway in the block holding the contact; the sentence says why not.
     std::optional<std::string> place(std::uint32_t locId, std::int64_t contact, trackgraph::End towards,
                                      int lengthMm = 200);
+    // The placed train's schedule; the sentence says why not.
+    std::optional<std::string> setSchedule(std::uint32_t locId, Schedule schedule) {
+        return dispatcher_.setSchedule(locId, std::move(schedule));
+    }
     // Reads the occupancy, hands every placed train to the automation and starts the clock (tick every
     // `interval`; 0: the caller calls tick()).
     void start(std::chrono::milliseconds interval = std::chrono::milliseconds(20));
     void tick();
     // The user resumes after STOP, a fault or the station's return.
     void resume();
+    // A manual train (a throttle took it) handed back to the automation where it stands.
+    void handBack(std::uint32_t locId);
     // Stops every train it drove and gives back every reservation but the track they stand on.
     void finish();
 
@@ -56,6 +65,10 @@ private:
     void contactsChanged(const QList<quint32>& keys);
     void accessoriesChanged(const QList<qint64>& ids);
     void stateReportedChanged(bool reported);
+    void commandSent(quint32 loco, int control);
+    void locomotivesChanged(const QList<quint32>& ids);
+    bool heardOwnCommand(std::uint32_t locId, const model::Locomotive& loco);
+    void reverse(std::uint32_t locId);
     std::set<trackgraph::ContactKey> occupiedContacts();
     void carryOut();
 
@@ -65,6 +78,18 @@ private:
     QTimer timer_;
     std::map<quint32, bool> occupied_; // as last told to the dispatcher
     int switchings_ = 0;
+    // What this automation told a locomotive: speeds sent and not heard back yet, the last one sent and
+    // the last one heard, the direction. A change heard on the bus that is none of them is another
+    // controller's.
+    struct Told {
+        std::deque<int> unheard;
+        int speed = 0;
+        int heard = 0; // the last of them the station confirmed
+        std::optional<cs2::Direction> direction;
+        std::optional<cs2::Direction> turnedFrom; // until the direction it was turned to is heard
+    };
+    std::map<std::uint32_t, Told> told_;
+    bool commanding_ = false; // the railway's locomotive commands now are this automation's
 };
 
 } // namespace stellwerk::automation

@@ -8,7 +8,7 @@ namespace stellwerk::automation {
 
 // What the automation tells the railway to do; the driver carries it out on the model.
 struct DriveCommand {
-    enum class Kind : std::uint8_t { Speed, Switch, PowerOff };
+    enum class Kind : std::uint8_t { Speed, Switch, PowerOff, Reverse };
     Kind kind = Kind::Speed;
     std::uint32_t locId = 0;  // Speed
     int speed = 0;            // Speed: 0..1000
@@ -20,6 +20,8 @@ struct DriveCommand {
         return {Kind::Switch, 0, 0, article, position};
     }
     static DriveCommand powerOff() { return {Kind::PowerOff, 0, 0, 0, 0}; }
+    // The locomotive's direction changed (it stands; the station keeps it standing).
+    static DriveCommand reverse(std::uint32_t locId) { return {Kind::Reverse, locId, 0, 0, 0}; }
 
     friend bool operator==(const DriveCommand&, const DriveCommand&) = default;
 };
@@ -40,6 +42,9 @@ struct AutomationEvent {
         Lost,
         Overrun,
         Fault,
+        Manual,    // a throttle took the train: the automation leaves it, its blocks stay reserved
+        Automatic, // handed back to the automation where it stands
+        Reversed,  // changed direction in its block (push-pull, or at a terminus)
     };
     Kind kind = Kind::Placed;
     std::uint32_t locId = 0; // 0: no train (a ghost)

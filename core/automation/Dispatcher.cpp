@@ -29,9 +29,9 @@ std::string_view trainStateName(TrainState state) {
 }
 
 std::string_view eventKindName(AutomationEvent::Kind kind) {
-    static constexpr std::string_view names[] = {"placed",  "reserved", "turnout-set", "departed", "entered",
-                                                 "braking", "stopped",  "arrived",     "released", "ghost",
-                                                 "lost",    "overrun",  "fault"};
+    static constexpr std::string_view names[] = {
+        "placed",   "reserved", "turnout-set", "departed", "entered", "braking", "stopped",   "arrived",
+        "released", "ghost",    "lost",        "overrun",  "fault",   "manual",  "automatic", "reversed"};
     return names[std::size_t(kind)];
 }
 
@@ -53,7 +53,8 @@ std::optional<std::string> Dispatcher::place(std::uint32_t locId, const std::str
     tracking_.place(locId, block, towards, lengthMm);
     reservations_.holdBlock(locId, block);
     Train& train = trains_[locId];
-    train = Train{locId, name, lengthMm, train.mode, TrainState::Stopped, std::nullopt};
+    train = Train{locId,        name,           lengthMm,      train.mode, TrainState::Stopped,
+                  std::nullopt, train.schedule, train.pushPull};
     event(AutomationEvent::Kind::Placed, locId, block,
           name + " placed in \"" + blockName(block) + "\" facing end " +
               std::string(trackgraph::endName(towards)));
@@ -74,6 +75,51 @@ void Dispatcher::setMode(std::uint32_t locId, TrainMode mode, Millis now) {
     }
 }
 
+std::optional<std::string> Dispatcher::setSchedule(std::uint32_t locId, Schedule schedule) {
+    const auto found = trains_.find(locId);
+    if (found == trains_.end())
+        return "0x" + std::to_string(locId) + " has a schedule but is not placed";
+    for (ScheduleStop& stop : schedule.stops) {
+        const auto block = std::find_if(graph_.blocks().begin(), graph_.blocks().end(),
+                                        [&](const trackgraph::Block& b) { return b.name == stop.block; });
+        if (block == graph_.blocks().end())
+            return found->second.name + ": no block of the track plan is named \"" + stop.block + "\"";
+        stop.blockId = block->id;
+    }
+    found->second.pushPull = schedule.pushPull;
+    found->second.schedule = std::move(schedule);
+    return std::nullopt;
+}
+
+void Dispatcher::setPushPull(std::uint32_t locId, bool pushPull) {
+    if (const auto found = trains_.find(locId); found != trains_.end())
+        found->second.pushPull = pushPull;
+}
+
+void Dispatcher::takenByHand(std::uint32_t locId, const std::string& by) {
+    const auto found = trains_.find(locId);
+    if (found == trains_.end() || found->second.mode != TrainMode::Automatic)
+        return;
+    Train& train = found->second;
+    train.mode = TrainMode::Manual;
+    train.state = TrainState::Stopped;
+    journeys_.erase(locId);
+    event(AutomationEvent::Kind::Manual, locId, tracking_.body(locId)->frontBlock,
+          train.name + " is driven by " + by + ": automation leaves it, its blocks stay reserved");
+}
+
+void Dispatcher::handBack(std::uint32_t locId, Millis now) {
+    const auto found = trains_.find(locId);
+    if (found == trains_.end() || found->second.mode != TrainMode::Manual)
+        return;
+    giveBackWay(locId);
+    found->second.destination.reset();
+    setMode(locId, TrainMode::Automatic, now);
+    const int block = tracking_.body(locId)->frontBlock;
+    event(AutomationEvent::Kind::Automatic, locId, block,
+          found->second.name + " is driven by the automation again, from \"" + blockName(block) + "\"");
+}
+
 const Train* Dispatcher::train(std::uint32_t locId) const {
     const auto found = trains_.find(locId);
     return found == trains_.end() ? nullptr : &found->second;
@@ -83,10 +129,15 @@ void Dispatcher::occupancyRead(const std::set<trackgraph::ContactKey>& occupied)
     for (const int block : tracking_.reread(occupied))
         event(AutomationEvent::Kind::Ghost, 0, block,
               "an unknown occupant in \"" + blockName(block) + "\": no train can have reached it");
+    // A train seen in its block when the station fell silent must be seen there now; one that was not
+    // (past the block's only contact) is taken to be where it was: had it run on, the next block would show
+    // an unknown occupant.
     for (auto& [locId, train] : trains_)
-        if (train.state == TrainState::Unknown && !tracking_.blockOccupied(tracking_.body(locId)->frontBlock))
+        if (train.state == TrainState::Unknown && mustBeSeen_.contains(locId) &&
+            !tracking_.blockOccupied(tracking_.body(locId)->frontBlock))
             stopTrain(train, TrainState::Lost, AutomationEvent::Kind::Lost,
                       train.name + " is no longer seen where it stood: place it again");
+    mustBeSeen_.clear();
 }
 
 void Dispatcher::contactChanged(const trackgraph::ContactKey& contact, bool occupied, Millis now) {
@@ -227,6 +278,22 @@ TrackState Dispatcher::stateFor(std::uint32_t locId) const {
         if (in == 0 || in == locId)
             return std::nullopt;
         return tracking_.body(in)->towards;
+    };
+    state.travelling = [this, locId](int block) -> std::optional<End> {
+        for (const auto& [other, body] : trains_) {
+            if (other == locId)
+                continue;
+            if (tracking_.body(other)->frontBlock == block)
+                return tracking_.body(other)->towards;
+            const auto journey = journeys_.find(other);
+            if (journey == journeys_.end())
+                continue;
+            const Path& path = journey->second.path;
+            for (std::size_t i = journey->second.next; i < path.blocks.size(); ++i)
+                if (path.blocks[i] == block)
+                    return trackgraph::otherEnd(graph_.connection(path.connections[i]).to.end);
+        }
+        return std::nullopt;
     };
     return state;
 }

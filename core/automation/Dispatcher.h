@@ -35,6 +35,7 @@ public:
         Millis retry = 500;          // looking again for a way when none was free
         int creepMm = 120;           // a block with one contact: the last millimetres at creep speed
         int stopMarginMm = 90;       // and the front stops this far before the block's far end
+        Millis prepare = 1500;       // at a schedule's stop: the next way is set this long before it departs
     };
 
     explicit Dispatcher(const trackgraph::TrackGraph& graph) : Dispatcher(graph, Options{}) {}
@@ -45,6 +46,19 @@ public:
     std::optional<std::string> place(std::uint32_t locId, const std::string& name, int lengthMm,
                                      std::int64_t contact, trackgraph::End towards);
     void setMode(std::uint32_t locId, TrainMode mode, Millis now);
+    // The train runs to the schedule's stops in turn (from its `next`), standing at each for its dwell; the
+    // sentence says why not (a block no track plan block is named).
+    std::optional<std::string> setSchedule(std::uint32_t locId, Schedule schedule);
+    // A push-pull train may change direction in any block when it finds no way on forwards; any other
+    // train only at a terminus (no way leads on from the end it faces: buffer stops), and only when a
+    // schedule sends it on.
+    void setPushPull(std::uint32_t locId, bool pushPull);
+    // Somebody else commanded the automatic train's speed or direction (`by` says who): it is manual at
+    // once, nothing more is sent to it, and every block and way it holds stays reserved for it.
+    void takenByHand(std::uint32_t locId, const std::string& by);
+    // A manual train handed back where it stands: the way it held ahead is given back, it stops and looks
+    // for a new one.
+    void handBack(std::uint32_t locId, Millis now);
 
     // What the railway reports.
     void occupancyRead(const std::set<trackgraph::ContactKey>& occupied);
@@ -73,6 +87,9 @@ public:
     const Options& options() const { return options_; }
     int blockMoves() const { return blockMoves_; }
     int faults() const { return faults_; }
+    // The worst departure from a schedule's stop later or earlier than its dwell says, of those whose way
+    // was free in time (a train waiting for a free way is not late by the dwell).
+    Millis worstDwellError() const { return worstDwellError_; }
     // What the railway should do, and what happened, since the last call.
     std::vector<DriveCommand> takeCommands();
     std::vector<AutomationEvent> takeEvents();
@@ -86,6 +103,9 @@ private:
         std::map<std::int64_t, int> attempts; // commands sent per turnout
         Millis switchDeadline = 0, departAt = -1, brakeAt = -1, stopAt = -1, lostAt = -1;
         Millis dwellUntil = 0, nextTry = 0;
+        int stopFrontMm = 0;    // a stop by the distance: where the front stops in its block
+        Millis dwellFrom = -1;  // standing at a schedule's stop since then
+        bool wayInTime = false; // its way was set before the dwell ended
     };
 
     // Tracking (Dispatcher.cpp).
@@ -107,6 +127,16 @@ private:
     void approachStop(Train& train, Journey& journey, int block, Millis now);
     void brake(Train& train);
     void arrive(Train& train, Journey& journey, Millis now);
+    void reachedStop(Train& train, Journey& journey, int block, Millis now);
+    // A way on, and whether the train must change direction first.
+    struct Way {
+        Path path;
+        bool turn = false;
+    };
+    std::optional<Way> wayFor(Train& train, Journey& journey, Millis now);
+    std::optional<Path> wayFrom(const Train& train, const trackgraph::BlockEnd& front) const;
+    bool mayTurn(const Train& train, const trackgraph::BlockEnd& front) const;
+    void turn(Train& train);
     void stopTrain(Train& train, TrainState state, AutomationEvent::Kind kind, const std::string& why);
     void giveBackWay(std::uint32_t locId);
     Millis expectNextContact(const Train& train, const Journey& journey, Millis now) const;
@@ -123,9 +153,11 @@ private:
     std::map<std::uint32_t, Train> trains_;
     std::map<std::uint32_t, Journey> journeys_;
     std::map<std::int64_t, int> positions_; // turnouts as the railway reports them
+    std::set<std::uint32_t> mustBeSeen_;    // ran or were seen when the station fell silent
     bool paused_ = false;
     int blockMoves_ = 0;
     int faults_ = 0;
+    Millis worstDwellError_ = 0;
     std::vector<DriveCommand> commands_;
     std::vector<AutomationEvent> events_;
 };

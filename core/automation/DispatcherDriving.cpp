@@ -31,11 +31,12 @@ void Dispatcher::tick(Millis now) {
 void Dispatcher::driveTick(Train& train, Journey& journey, Millis now) {
     switch (train.state) {
     case TrainState::Waiting:
-        if (now >= journey.dwellUntil && now >= journey.nextTry)
+        if (now + (journey.dwellFrom >= 0 ? options_.prepare : 0) >= journey.dwellUntil &&
+            now >= journey.nextTry)
             lookForWay(train, journey, now);
         return;
     case TrainState::SettingWay:
-        if (journey.pending.empty() && due(journey.departAt, now))
+        if (journey.pending.empty() && due(journey.departAt, now) && now >= journey.dwellUntil)
             depart(train, journey, now);
         else if (!journey.pending.empty() && now >= journey.switchDeadline)
             turnoutsTimedOut(train, journey, now);
@@ -59,14 +60,21 @@ void Dispatcher::driveTick(Train& train, Journey& journey, Millis now) {
 }
 
 void Dispatcher::lookForWay(Train& train, Journey& journey, Millis now) {
-    const TrainBody* body = tracking_.body(train.locId);
-    const std::optional<Path> path =
-        choice_.choose({body->frontBlock, body->towards}, train.lengthMm, stateFor(train.locId));
-    if (!path || !reservations_.reserve(train.locId, *path)) {
+    const std::optional<Way> way = wayFor(train, journey, now);
+    if (train.state != TrainState::Waiting)
+        return;
+    if (!way || !reservations_.reserve(train.locId, way->path)) {
         journey.nextTry = now + options_.retry;
         return;
     }
+    if (way->turn)
+        turn(train);
+    const Path* path = &way->path;
+    const Journey dwelling = journey;
     journey = Journey{};
+    journey.dwellUntil = dwelling.dwellUntil;
+    journey.dwellFrom = dwelling.dwellFrom;
+    journey.wayInTime = now <= dwelling.dwellUntil;
     journey.path = *path;
     train.destination = path->destination();
     std::string over;
@@ -79,6 +87,55 @@ void Dispatcher::lookForWay(Train& train, Journey& journey, Millis now) {
     for (const auto& [article, position] : path->turnouts)
         if (!journey.pending.contains(article))
             sendSwitching(journey, article, position, now);
+}
+
+// The way to the schedule's next stop, or to any block the train may stop in; turned round when it may
+// and finds none forwards. A train at the end of its schedule stops for good; one already in its next
+// stop's block stands its dwell there.
+std::optional<Dispatcher::Way> Dispatcher::wayFor(Train& train, Journey& journey, Millis now) {
+    const TrainBody* body = tracking_.body(train.locId);
+    const trackgraph::BlockEnd front{body->frontBlock, body->towards};
+    if (train.schedule && train.schedule->done()) {
+        stopTrain(train, TrainState::Stopped, AutomationEvent::Kind::Stopped,
+                  train.name + " has run its schedule: it stays in \"" + blockName(body->frontBlock) + "\"");
+        return std::nullopt;
+    }
+    if (train.schedule && train.schedule->stops[train.schedule->next].blockId == body->frontBlock &&
+        journey.dwellFrom < 0) {
+        reachedStop(train, journey, body->frontBlock, now);
+        return std::nullopt;
+    }
+    if (std::optional<Path> ahead = wayFrom(train, front))
+        return Way{std::move(*ahead), false};
+    if (!mayTurn(train, front) || !body->behind.empty())
+        return std::nullopt;
+    if (std::optional<Path> back = wayFrom(train, {front.block, trackgraph::otherEnd(front.end)}))
+        return Way{std::move(*back), true};
+    return std::nullopt;
+}
+
+std::optional<Path> Dispatcher::wayFrom(const Train& train, const trackgraph::BlockEnd& front) const {
+    if (!train.schedule)
+        return choice_.choose(front, train.lengthMm, stateFor(train.locId));
+    return choice_.chooseTo(front, train.schedule->stops[train.schedule->next].blockId, train.lengthMm,
+                            stateFor(train.locId));
+}
+
+// A push-pull train anywhere; a train with a schedule at a terminus: no way leads from the end it faces to
+// another block, whatever the turnouts (the track ends at buffer stops). A train without a schedule stays
+// at a terminus: it would only turn to stand in the way of others in the station's throat.
+bool Dispatcher::mayTurn(const Train& train, const trackgraph::BlockEnd& front) const {
+    return train.pushPull || (train.schedule && graph_.connectionsFrom(front).empty());
+}
+
+void Dispatcher::turn(Train& train) {
+    if (!tracking_.reverse(train.locId))
+        return;
+    command(DriveCommand::reverse(train.locId));
+    const TrainBody* body = tracking_.body(train.locId);
+    event(AutomationEvent::Kind::Reversed, train.locId, body->frontBlock,
+          train.name + " changes direction in \"" + blockName(body->frontBlock) + "\": it faces end " +
+              std::string(trackgraph::endName(body->towards)) + " now");
 }
 
 void Dispatcher::sendSwitching(Journey& journey, std::int64_t article, int position, Millis now) {
@@ -134,7 +191,8 @@ void Dispatcher::turnoutReported(std::int64_t article, int position, Millis /*no
     const auto journey = journeys_.find(owner->first);
     if (journey != journeys_.end() && journey->second.pending.contains(article))
         return; // ours, not confirmed yet
-    if (train.state == TrainState::Fault || train.state == TrainState::Lost)
+    if (train.mode != TrainMode::Automatic || train.state == TrainState::Fault ||
+        train.state == TrainState::Lost)
         return;
     stopTrain(train, TrainState::Fault, AutomationEvent::Kind::Fault,
               "turnout " + std::to_string(article) + " was switched to position " + std::to_string(position) +
@@ -142,6 +200,8 @@ void Dispatcher::turnoutReported(std::int64_t article, int position, Millis /*no
 }
 
 void Dispatcher::depart(Train& train, Journey& journey, Millis now) {
+    if (journey.dwellFrom >= 0 && journey.wayInTime)
+        worstDwellError_ = std::max(worstDwellError_, now - journey.dwellUntil);
     train.state = TrainState::Running;
     journey.lostAt = expectNextContact(train, journey, now);
     command(DriveCommand::speedOf(train.locId, options_.speeds.travel));
@@ -191,6 +251,7 @@ void Dispatcher::approachStop(Train& train, Journey& journey, int block, Millis 
     const int length = graph_.block(block).lengthMm;
     const int target = length - std::min(options_.stopMarginMm, std::max(0, (length - train.lengthMm) / 2));
     const int remaining = target - tracking_.body(train.locId)->frontMm;
+    journey.stopFrontMm = target;
     const double travel = options_.speeds.mmPerSecond(options_.speeds.travel);
     const double creep = options_.speeds.mmPerSecond(options_.speeds.creep);
     if (remaining <= 0) {
@@ -215,12 +276,31 @@ void Dispatcher::brake(Train& train) {
 
 void Dispatcher::arrive(Train& train, Journey& journey, Millis now) {
     const int block = tracking_.body(train.locId)->frontBlock;
+    tracking_.advanced(train.locId, journey.stopFrontMm);
+    releaseBehind(train.locId);
     stopTrain(train, TrainState::Waiting, AutomationEvent::Kind::Stopped, train.name + " stopped");
+    journey = Journey{};
+    train.destination.reset();
+    if (train.schedule && !train.schedule->done() &&
+        train.schedule->stops[train.schedule->next].blockId == block)
+        return reachedStop(train, journey, block, now);
     event(AutomationEvent::Kind::Arrived, train.locId, block,
           train.name + " arrived in \"" + blockName(block) + "\"");
-    journey = Journey{};
-    journey.dwellUntil = now + options_.dwell;
-    train.destination.reset();
+    // On its way to a schedule's stop it goes on as soon as the way is free.
+    journey.dwellUntil = now + (train.schedule ? 0 : options_.dwell);
+}
+
+// At the schedule's next stop: it stands there for the stop's dwell, and the schedule moves on.
+void Dispatcher::reachedStop(Train& train, Journey& journey, int block, Millis now) {
+    Schedule& schedule = *train.schedule;
+    const ScheduleStop& stop = schedule.stops[schedule.next];
+    journey.dwellFrom = now;
+    journey.dwellUntil = now + stop.dwellMs;
+    event(AutomationEvent::Kind::Arrived, train.locId, block,
+          train.name + " arrived in \"" + blockName(block) + "\", stop " + std::to_string(schedule.next + 1) +
+              " of " + std::to_string(schedule.stops.size()) + ", for " +
+              std::to_string(stop.dwellMs / 1000) + " s");
+    schedule.advance();
 }
 
 void Dispatcher::stopTrain(Train& train, TrainState state, AutomationEvent::Kind kind,
@@ -259,10 +339,14 @@ void Dispatcher::halt(const std::string& why) {
 
 void Dispatcher::stationLost() {
     paused_ = true;
-    for (auto& [locId, train] : trains_)
-        if (train.mode == TrainMode::Automatic && train.state != TrainState::Fault &&
-            train.state != TrainState::Lost)
-            train.state = TrainState::Unknown;
+    for (auto& [locId, train] : trains_) {
+        if (train.mode != TrainMode::Automatic || train.state == TrainState::Fault ||
+            train.state == TrainState::Lost || train.state == TrainState::Unknown)
+            continue;
+        if (tracking_.blockOccupied(tracking_.body(locId)->frontBlock))
+            mustBeSeen_.insert(locId);
+        train.state = TrainState::Unknown;
+    }
     for (auto& [locId, journey] : journeys_)
         journey.pending.clear();
 }

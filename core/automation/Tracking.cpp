@@ -20,6 +20,23 @@ void Tracking::place(std::uint32_t locId, int block, End towards, int lengthMm) 
     ghosts_.erase(block);
 }
 
+void Tracking::advanced(std::uint32_t locId, int frontMm) {
+    if (const auto found = bodies_.find(locId); found != bodies_.end())
+        found->second.frontMm = std::max(found->second.frontMm, frontMm);
+}
+
+bool Tracking::reverse(std::uint32_t locId) {
+    const auto found = bodies_.find(locId);
+    if (found == bodies_.end() || !found->second.behind.empty())
+        return false;
+    TrainBody& body = found->second;
+    const int length = graph_.block(body.frontBlock).lengthMm;
+    const int rear = std::max(0, body.frontMm - body.lengthMm);
+    body.towards = trackgraph::otherEnd(body.towards);
+    body.frontMm = std::clamp(length - rear, std::min(body.lengthMm, length), length);
+    return true;
+}
+
 void Tracking::remove(std::uint32_t locId) {
     bodies_.erase(locId);
 }

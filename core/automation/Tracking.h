@@ -63,6 +63,11 @@ public:
     // on when the train would not fit behind it), as the simulator places it.
     void place(std::uint32_t locId, int block, trackgraph::End towards, int lengthMm);
     void remove(std::uint32_t locId);
+    // The front has gone on to at least `frontMm` in its block (a stop by the distance, with no contact).
+    void advanced(std::uint32_t locId, int frontMm);
+    // The train changes direction where it stands: its rear becomes its front, facing the other end. Only a
+    // train whole inside its front block can (false, nothing changed, otherwise).
+    bool reverse(std::uint32_t locId);
 
     Sighting occupied(const trackgraph::ContactKey& contact, const ExpectedNext& expected);
     // A contact turned free; the ghost block that is free now, if any.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "automation/Schedule.h"
 #include "trackgraph/TrackGraph.h"
 
 #include <cstdint>
@@ -33,7 +34,9 @@ struct Train {
     int lengthMm = 200; // lokomotive.cs2 has no length: the simulator's default
     TrainMode mode = TrainMode::Manual;
     TrainState state = TrainState::Stopped;
-    std::optional<int> destination; // the block it runs to
+    std::optional<int> destination;   // the block it runs to
+    std::optional<Schedule> schedule; // without one it runs to any free block it may stop in
+    bool pushPull = false;            // it may change direction in any block, not only at a terminus
 };
 
 } // namespace stellwerk::automation

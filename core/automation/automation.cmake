@@ -18,6 +18,8 @@ target_sources(stellwerk-automation PRIVATE
     automation/Placement.h
     automation/Reservations.cpp
     automation/Reservations.h
+    automation/Schedule.cpp
+    automation/Schedule.h
     automation/SpeedProfile.h
     automation/Tracking.cpp
     automation/Tracking.h

@@ -124,6 +124,9 @@ void StationServer::readDatagrams() {
 
 void StationServer::acceptClients() {
     while (QTcpSocket* socket = tcp_->nextPendingConnection()) {
+        // A frame goes out at once, as the station sends it (without this, an S88 event right after an
+        // answer waited up to 40 ms for the client's delayed acknowledgement).
+        socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
         clients_.emplace(socket, transport::FrameAssembler{});
         ++counters_.tcpConnections;
         connect(socket, &QTcpSocket::readyRead, this, [this, socket] { readClient(socket); });

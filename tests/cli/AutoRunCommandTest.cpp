@@ -12,6 +12,7 @@
 #include <QProcess>
 #include <QTcpServer>
 #include <QTcpSocket>
+#include <QTemporaryDir>
 #include <gtest/gtest.h>
 
 namespace stellwerk::cli {
@@ -79,6 +80,37 @@ TEST(AutoRunCommand, ThreeTrainsRunOnTheDemoWithoutAccidentAndASummaryEndsTheRun
     EXPECT_EQ(accidents["total"].toInt(-1), 0) << sim.output().toStdString();
     for (const QJsonValue train : summary["trains"].toArray())
         EXPECT_EQ(train["state"].toString(), "stopped");
+}
+
+// --schedule: the BR 218 runs from Gleis 1 to its one stop, Ausfahrt Ost, and stays; the file then says it
+// has run its schedule (next 1 of 1), so a run started again does not send it anywhere.
+TEST(AutoRunCommand, AScheduleFileSendsTheTrainToItsStopAndRecordsWhereItIs) {
+    ensureApplication();
+    QTemporaryDir folder;
+    const QString path = folder.filePath("schedules.json");
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(R"({"trains": [{"loc": "mfx:1", "stops": [{"block": "Ausfahrt Ost", "dwell": 1}]}]})");
+    file.close();
+    support::SimProgram sim(QStringList{"--listen", "127.0.0.1", "--udp-port", "0", "--udp-reply-host",
+                                        "127.0.0.1", "--tcp-port", "0", "--http-port", "0", "--tick", "20",
+                                        "--place", "mfx:1=1"});
+    ASSERT_NE(sim.tcpPort(), 0) << sim.output().toStdString();
+    QProcess cli;
+    cli.start(STELLWERK_CLI,
+              QStringList{"--station", QStringLiteral("tcp://127.0.0.1:%1").arg(sim.tcpPort()), "auto", "run",
+                          "--place", "mfx:1=1", "--schedule", path, "--seconds", "12"});
+    support::runEventsUntil([&] { return cli.state() == QProcess::NotRunning; }, 30000);
+    const std::string out = cli.readAllStandardOutput().toStdString();
+    EXPECT_EQ(cli.exitCode(), 0) << out << cli.readAllStandardError().toStdString();
+    EXPECT_NE(out.find("arrived in \"Ausfahrt Ost\", stop 1 of 1, for 1 s"), std::string::npos) << out;
+    EXPECT_NE(out.find("has run its schedule"), std::string::npos) << out;
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QJsonObject train =
+        QJsonDocument::fromJson(file.readAll()).object()["trains"].toArray()[0].toObject();
+    EXPECT_EQ(train["loc"].toString(), "0x4001");
+    EXPECT_EQ(train["next"].toInt(-1), 1);
+    EXPECT_EQ(train["stops"].toArray()[0].toObject()["block"].toString(), "Ausfahrt Ost");
 }
 
 TEST(AutoRunCommand, APlacementTheCommandCannotReadIsAUsageError) {

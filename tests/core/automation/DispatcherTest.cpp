@@ -163,6 +163,26 @@ TEST_F(DispatcherTest, WhileTheStationIsSilentTheTrainIsUnknownAndStaysStoppedWh
     EXPECT_EQ(dispatcher.reservations().blocksOf(Loco), std::vector<int>{Gleis1});
 }
 
+// The BR 218 stands in Block 1 past its only contact (it stopped by the distance), unseen: when the station
+// returns, it is still where it stood.
+TEST_F(DispatcherTest, ATrainThatStoodUnseenIsWhereItStoodWhenTheStationReturns) {
+    confirmTurnouts(100);
+    dispatcher.contactChanged(contact(8), true, 1000);
+    dispatcher.contactChanged(contact(3), true, 2000);
+    dispatcher.contactChanged(contact(1), false, 2100);
+    dispatcher.contactChanged(contact(8), false, 2200);
+    dispatcher.tick(60000);                              // stopped by the distance in Block 1
+    dispatcher.contactChanged(contact(3), false, 61000); // its contact behind it
+    remember();
+    ASSERT_EQ(dispatcher.tracking().body(Loco)->frontBlock, Block1);
+    ASSERT_EQ(dispatcher.train(Loco)->state, TrainState::Waiting) << events.back().text;
+    dispatcher.stationLost();
+    dispatcher.occupancyRead({});
+    remember();
+    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Unknown);
+    EXPECT_EQ(count(Kind::Lost), 0);
+}
+
 TEST_F(DispatcherTest, ATrainNotSeenWhereItStoodWhenTheStationReturnsIsLost) {
     dispatcher.stationLost();
     dispatcher.occupancyRead({contact(5)});
@@ -178,6 +198,39 @@ TEST_F(DispatcherTest, ATrainThatDoesNotArriveInTimeIsLost) {
     remember();
     EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Lost);
     EXPECT_EQ(commands.back(), DriveCommand::speedOf(Loco, 0));
+}
+
+// Mixed operation: a throttle takes the running BR 218; the automation sends it nothing more, its way stays
+// reserved (a turnout switched on it no longer stops anything), and handed back in Block 1 it gives back the
+// way it held ahead and sets out anew from there.
+TEST_F(DispatcherTest, ATrainTakenByHandKeepsItsWayAndHandedBackSetsOutFromWhereItStands) {
+    confirmTurnouts(100);
+    ASSERT_EQ(dispatcher.train(Loco)->state, TrainState::Running);
+    commands.clear();
+    dispatcher.takenByHand(Loco, "a throttle");
+    dispatcher.contactChanged(contact(8), true, 2000);
+    ASSERT_TRUE(dispatcher.reservations().turnoutOwner(2).has_value());
+    dispatcher.turnoutReported(2, 0, 2500);            // behind its front, under its body
+    dispatcher.contactChanged(contact(3), true, 3000); // the person drives it into Block 1
+    dispatcher.contactChanged(contact(1), false, 3100);
+    dispatcher.contactChanged(contact(8), false, 3200);
+    dispatcher.tick(60000);
+    remember();
+    EXPECT_EQ(dispatcher.train(Loco)->mode, TrainMode::Manual);
+    EXPECT_EQ(count(Kind::Manual), 1);
+    EXPECT_EQ(count(Kind::Fault), 0);
+    EXPECT_TRUE(commands.empty()) << "nothing is sent to a train driven by hand";
+    EXPECT_EQ(dispatcher.reservations().blockOwner(Block1), Loco);
+    dispatcher.handBack(Loco, 60000);
+    dispatcher.tick(60000);
+    remember();
+    EXPECT_EQ(dispatcher.train(Loco)->mode, TrainMode::Automatic);
+    EXPECT_EQ(count(Kind::Automatic), 1);
+    ASSERT_FALSE(commands.empty());
+    EXPECT_EQ(commands.front(), DriveCommand::speedOf(Loco, 0));
+    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::SettingWay);
+    EXPECT_EQ(dispatcher.reservations().blockOwner(Block2), Loco) << "its new way, on from Block 1";
+    EXPECT_EQ(dispatcher.reservations().blockOwner(Gleis1), 0u);
 }
 
 } // namespace

@@ -63,5 +63,30 @@ TEST(PathChoice, TwoTrainsFacingEachOtherOnTheSingleLineAreNotLetIn) {
     EXPECT_EQ(behind->blocks, std::vector<int>{Block2});
 }
 
+// The single line from Ausfahrt Ost to Einfahrt West has its place to pass only in the station (the siding
+// off Ausfahrt Ost does not count: it ends at buffer stops). A train from Gleis 1 runs it clockwise: towards
+// end b in Block 3, towards end a in Block 4. A train in Block 4 facing b comes the other way: the train on
+// Gleis 1 is kept out of the whole line, not even into Ausfahrt Ost, or both would wait for ever.
+TEST(PathChoice, NoTrainEntersTheSingleLineWhileAnotherComesTheOtherWay) {
+    const PathChoice choice(demo());
+    TrackState state = stateWith({Block4}, {{Block4, End::B}});
+    state.travelling = [](int block) -> std::optional<End> {
+        return block == Block4 ? std::optional<End>(End::B) : std::nullopt;
+    };
+    EXPECT_FALSE(choice.choose({Gleis1, End::B}, 200, state).has_value());
+    // A way reserved the same way through Block 3 (towards b) is no obstacle; the other way it is.
+    state = stateWith({Block3});
+    state.travelling = [](int block) -> std::optional<End> {
+        return block == Block3 ? std::optional<End>(End::B) : std::nullopt;
+    };
+    const std::optional<Path> following = choice.choose({Gleis1, End::B}, 200, state);
+    ASSERT_TRUE(following.has_value());
+    EXPECT_EQ(following->destination(), Block1);
+    state.travelling = [](int block) -> std::optional<End> {
+        return block == Block3 ? std::optional<End>(End::A) : std::nullopt;
+    };
+    EXPECT_FALSE(choice.choose({Gleis1, End::B}, 200, state).has_value());
+}
+
 } // namespace
 } // namespace stellwerk::automation

@@ -5,5 +5,7 @@ target_sources(stellwerk-core-tests PRIVATE
     automation/DispatcherTest.cpp
     automation/PathChoiceTest.cpp
     automation/ReservationsTest.cpp
+    automation/ScheduleTest.cpp
+    automation/TurnTest.cpp
 )
 target_link_libraries(stellwerk-core-tests PRIVATE stellwerk-automation)
