@@ -22,7 +22,7 @@ RailwayBinding::RailwayBinding(connection::StationConnection& connection, model:
 RailwayBinding::~RailwayBinding() {
     if (layout_)
         layout_->forgetStation();
-    delete railway_;
+    retire(railway_);
 }
 
 // The connection's session as it is now, and from now on what happens to it.
@@ -110,7 +110,18 @@ void RailwayBinding::replace(model::Railway* railway) {
     model::Railway* previous = railway_;
     railway_ = railway;
     emit railwayChanged(railway_);
-    delete previous;
+    retire(previous);
+}
+
+// What the binding hung on a railway lets go of it first: their destructors still talk to the railway,
+// which must not be half destroyed by then (as it is while ~QObject deletes its children).
+void RailwayBinding::retire(model::Railway* railway) {
+    if (!railway)
+        return;
+    qDeleteAll(railway->findChildren<model::RailwayDevices*>(Qt::FindDirectChildrenOnly));
+    qDeleteAll(railway->findChildren<model::RailwayThrottles*>(Qt::FindDirectChildrenOnly));
+    qDeleteAll(railway->findChildren<model::RailwayHandhelds*>(Qt::FindDirectChildrenOnly));
+    delete railway;
 }
 
 } // namespace stellwerk::binding

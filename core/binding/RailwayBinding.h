@@ -78,6 +78,7 @@ private:
     void followDevices();
     void bindDevicesOf(model::Railway& railway);
     void replace(model::Railway* railway);
+    static void retire(model::Railway* railway);
 
     connection::StationConnection* connection_ = nullptr;
     model::LayoutInUse* layout_ = nullptr;
