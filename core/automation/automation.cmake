@@ -14,7 +14,6 @@ target_sources(stellwerk-automation PRIVATE
     automation/Path.h
     automation/PathChoice.cpp
     automation/PathChoice.h
-    automation/Placement.cpp
     automation/Placement.h
     automation/Reservations.cpp
     automation/Reservations.h

@@ -17,6 +17,7 @@ target_sources(stellwerk-trackgraph PRIVATE
     trackgraph/TrackGraph.cpp
     trackgraph/TrackJoints.cpp
     trackgraph/TrackTiles.cpp
+    trackgraph/TrainPlacement.cpp
     trackgraph/WaySearch.cpp
 )
 target_link_libraries(stellwerk-trackgraph PUBLIC stellwerk-cs2config)
