@@ -304,3 +304,69 @@ write("track_graph", "loop-and-signals", page(
 write("track_graph", "routes", (page(line(0, [1]) + [(3, 0, "fahrstrasse", 0, 1, "")]) +
                                 "[fahrstrassen]\nfahrstrasse\n .id=1\n .name=R\n .item\n ..magnetartikel=5\n"
                                 " ..stellung=2\n").encode())
+
+
+# z21_datagram: the first byte chooses requests (0) or replies (1); the rest is one UDP datagram. The
+# examples of Roco's Z21 LAN protocol specification (tests/core/z21/DocumentExamplesTest.cpp).
+def xbus(*body):
+    data = bytes(body)
+    checksum = 0
+    for byte in data:
+        checksum ^= byte
+    return struct.pack("<HH", len(data) + 5, 0x40) + data + bytes([checksum])
+
+
+def lan(header, data=b""):
+    return struct.pack("<HH", len(data) + 4, header) + data
+
+
+Z21_REQUESTS = {
+    "serial-code-hwinfo": lan(0x10) + lan(0x18) + lan(0x1A),
+    "broadcast-flags": lan(0x50, struct.pack("<I", 0x00010101)) + lan(0x51) + lan(0x85),
+    "modes": lan(0x60, b"\x00\x03") + lan(0x61, b"\x00\x03\x01") + lan(0x70, b"\x00\x02") + lan(0x71, b"\x00\x02\x00"),
+    "x-version-status-power": xbus(0x21, 0x21) + xbus(0x21, 0x24) + xbus(0x21, 0x80) + xbus(0x21, 0x81) + xbus(0x80),
+    "firmware-logoff": xbus(0xF1, 0x0A) + lan(0x30),
+    "loco-info-and-drive": xbus(0xE3, 0xF0, 0xC4, 0xD2) + xbus(0xE4, 0x13, 0x00, 0x03, 0x82) + xbus(0xE4, 0x12, 0x00, 0x05, 0x12)
+    + xbus(0xE4, 0x10, 0x00, 0x05, 0x8F),
+    "loco-function-estop": xbus(0xE4, 0xF8, 0x00, 0x03, 0x40) + xbus(0xE4, 0xF8, 0x00, 0x03, 0x9F) + xbus(0x92, 0x00, 0x03),
+    "turnout-figure": xbus(0x43, 0x00, 0x04) + xbus(0x53, 0x00, 0x04, 0x89) + xbus(0x53, 0x00, 0x04, 0x81) + xbus(0x53, 0x01, 0x00, 0xA8),
+    "combined-1-3": xbus(0x43, 0x00, 0x04) + xbus(0x43, 0x00, 0x05) + lan(0x81, b"\x00"),
+    "wrong-xor": bytes([0x07, 0x00, 0x40, 0x00, 0x21, 0x81, 0x00]),
+    "wrong-length-then-logoff": lan(0x10, b"\x00") + bytes([0x09, 0x00, 0x40, 0x00, 0xE4, 0x13, 0x00, 0x03, 0x76]) + lan(0x30),
+    "truncated": bytes([0x0A, 0x00, 0x40, 0x00, 0xE4, 0x13, 0x00]),
+    "length-below-four": lan(0x10) + bytes([0x02, 0x00, 0x10, 0x00]),
+    "unknown-x": xbus(0xE4, 0x20, 0x00, 0x03, 0x10) + xbus(0x23, 0x11, 0x00, 0x1C),
+}
+for name, data in Z21_REQUESTS.items():
+    write("z21_datagram", "request-" + name, b"\x00" + data)
+
+Z21_REPLIES = {
+    "serial-code-hwinfo": lan(0x10, struct.pack("<I", 0x12345678)) + lan(0x18, b"\x00")
+    + bytes([0x0C, 0x00, 0x1A, 0x00, 0x00, 0x02, 0x00, 0x00, 0x20, 0x01, 0x00, 0x00]),
+    "x-version-firmware": xbus(0x63, 0x21, 0x30, 0x12) + bytes([0x09, 0x00, 0x40, 0x00, 0xF3, 0x0A, 0x01, 0x23, 0xDB]),
+    "broadcasts": xbus(0x61, 0x00) + xbus(0x61, 0x01) + xbus(0x61, 0x02) + xbus(0x61, 0x08) + xbus(0x61, 0x82)
+    + xbus(0x81, 0x00) + xbus(0x62, 0x22, 0x03),
+    "system-state": lan(0x84, struct.pack("<hhhhHHBBBB", -5, 20, 300, 35, 18000, 16000, 2, 2, 0, 0x13)),
+    "loco-info": xbus(0xEF, 0x00, 0x03, 0x0C, 0x82, 0x11, 0x80, 0x00, 0x00, 0x01) + xbus(0xEF, 0xC4, 0xD2, 0x02, 0x0F, 0x10, 0, 0, 0),
+    "turnout-info-modes": xbus(0x43, 0x00, 0x04, 0x02) + lan(0x60, b"\x01\x02\x01") + lan(0x70, b"\x00\x02\x00") + lan(0x51, b"\x01\x01\x00\x00"),
+}
+for name, data in Z21_REPLIES.items():
+    write("z21_datagram", "reply-" + name, b"\x01" + data)
+
+# withrottle_lines: the line cap byte, the cut byte, then the stream. The lines of JMRI's WiThrottle protocol
+# page (tests/core/withrottle), both directions, with every line end.
+WITHROTTLE_CLIENT = "\n".join([
+    "NJohn's Throttle", "HU3f2a9b", "VN2.0", "*+", "*", "MT+L341<;>ED&RGW 341", "MT+S3<;>ED&RGW 341",
+    "MTSL341<;>L341", "MTA*<;>qR", "MTAL341<;>qV", "MTA*<;>F112", "MTA*<;>F012", "MTAL341<;>f10", "MTA*<;>R0",
+    "MTA*<;>V30", "MTA*<;>X", "MTA*<;>I", "MTAL41<;>s8", "MT-L341<;>d", "MT-*<;>r", "PPA1", "PTA2LT12",
+    "PTATLT324", "PRA2IR:AUTO:0001", "RC+<;>S74<;>My consist<:>L341<;>true", "*-", "Q"]) + "\n"
+WITHROTTLE_SERVER = "\r\n".join([
+    "VN2.0", "RL2]\\[RGS 41}|{41}|{L]\\[Test Loco}|{1234}|{L", "PPA2", "PTT]\\[Turnouts}|{Turnout]\\[Closed}|{2]\\[Thrown}|{4",
+    "PTL]\\[LT12}|{Rico Station N}|{1]\\[LT324}|{Rico Station S}|{2", "PRT]\\[Routes}|{Route]\\[Active}|{2]\\[Inactive}|{4",
+    "PRL]\\[IR:AUTO:0001}|{Rico Main}|{", "RCC0", "PW12080", "*10", "MT+L41<;>",
+    "MTLL41<;>]\\[Headlight]\\[Bell]\\[Whistle]\\[]\\[", "MTAL41<;>F00", "MTAL41<;>V0", "MTAL41<;>R1", "MTAL41<;>s1",
+    "MTAL341<;>F10", "MT-L341<;>", "HTDigitrax", "HtDigitrax LnWi 1.0 Unit=7,Wifi Chnl= 1,Command Station= DCS100",
+    "HM error - long address < 127 S23", "PTA4LT12"]) + "\r\n"
+write("withrottle_lines", "client-lines", bytes([248, 17]) + WITHROTTLE_CLIENT.encode())
+write("withrottle_lines", "server-lines", bytes([248, 200]) + WITHROTTLE_SERVER.encode())
+write("withrottle_lines", "cr-only-and-overlong", bytes([2, 5]) + b"NPhone\r*+\rMTA*<;>V30\r" + b"x" * 40 + b"\r*\r")

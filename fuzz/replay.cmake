@@ -8,7 +8,7 @@ foreach(target IN LISTS STELLWERK_FUZZ_TARGETS)
     add_executable(fuzz-replay-${target} ${CMAKE_CURRENT_LIST_DIR}/${target}.cpp ${CMAKE_CURRENT_LIST_DIR}/ReplayMain.cpp)
     target_include_directories(fuzz-replay-${target} PRIVATE ${CMAKE_CURRENT_LIST_DIR})
     target_link_libraries(fuzz-replay-${target} PRIVATE stellwerk-cli-commands stellwerk-core stellwerk-orc
-        stellwerk-trackgraph stellwerk-warnings)
+        stellwerk-trackgraph stellwerk-z21 stellwerk-withrottle stellwerk-warnings)
     add_test(NAME fuzz-replay-${target}
              COMMAND fuzz-replay-${target} ${CMAKE_CURRENT_LIST_DIR}/seeds/${target})
 endforeach()

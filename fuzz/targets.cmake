@@ -13,6 +13,8 @@ set(STELLWERK_FUZZ_TARGETS
     ro_frame        # RO module payloads (requests and answers, 11/29-bit) -> decode, encode, FrameReport, describe
     orc_frame       # 13-byte OpenRailCAN frames -> decode, encode, FrameReport, the bus description
     track_graph     # track plan pages (and accessories, routes) as .cs2 text -> TrackGraph, its invariants
+    z21_datagram    # a Z21 client's (or server's) UDP datagram -> packets, requests (replies), written back
+    withrottle_lines # a WiThrottle TCP stream -> lines (cut anywhere), client messages and server lines
 )
 
 file(GLOB STELLWERK_FUZZED_SOURCES CONFIGURE_DEPENDS
@@ -23,7 +25,9 @@ file(GLOB STELLWERK_FUZZED_SOURCES CONFIGURE_DEPENDS
     ${STELLWERK_ROOT}/core/ro/*.cpp
     ${STELLWERK_ROOT}/core/orc/*.cpp
     ${STELLWERK_ROOT}/core/cs2config/*.cpp
-    ${STELLWERK_ROOT}/core/trackgraph/*.cpp)
+    ${STELLWERK_ROOT}/core/trackgraph/*.cpp
+    ${STELLWERK_ROOT}/core/z21/*.cpp
+    ${STELLWERK_ROOT}/core/withrottle/*.cpp)
 list(APPEND STELLWERK_FUZZED_SOURCES
     ${STELLWERK_ROOT}/core/transport/FrameAssembler.cpp
     ${STELLWERK_ROOT}/core/transport/NetworkFraming.cpp
