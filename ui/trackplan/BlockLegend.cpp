@@ -62,28 +62,34 @@ void BlockLegend::redraw() {
     }
 }
 
+// Short words, so that the line fits a narrow window; the pattern is in the swatch, the sentence in the
+// tooltip.
 void BlockLegend::retranslate() {
     m_title->setText(tr("Blocks:"));
     for (const Entry& entry : m_entries)
         switch (entry.shade) {
         case BlockShade::Free:
-            entry.text->setText(tr("free (shown with Blocks)"));
+            entry.text->setText(tr("free"));
             break;
         case BlockShade::Reserved:
-            entry.text->setText(tr("reserved, hatched"));
+            entry.text->setText(tr("reserved"));
             break;
         case BlockShade::Occupied:
-            entry.text->setText(tr("train in it, solid"));
+            entry.text->setText(tr("train in it"));
             break;
         case BlockShade::Ghost:
-            entry.text->setText(tr("unknown occupant, cross-hatched"));
+            entry.text->setText(tr("unknown occupant"));
             break;
         case BlockShade::Fault:
-            entry.text->setText(tr("fault, dotted"));
+            entry.text->setText(tr("fault"));
             break;
         case BlockShade::Plain:
             break;
         }
+    setToolTip(
+        tr("A train's blocks are solid and named with it; the blocks and turnouts reserved for its way "
+           "hatched; a block occupied by something no train can have reached cross-hatched; a train "
+           "stopped by a fault dotted. Free blocks are outlined while \"Blocks\" is on."));
 }
 
 void BlockLegend::changeEvent(QEvent* event) {

@@ -227,8 +227,14 @@ QRect BlockOutlines::placeName(const Block& block, const TakenAreas& taken) cons
             return above;
     }
     const QRect middle = cellRect(block.nameCells.empty() ? block.cells.front() : block.nameCells.front());
-    return QRect(QPoint(middle.center().x() - size.width() / 2, middle.bottom() - inset() - size.height()),
+    QRect inside(QPoint(middle.center().x() - size.width() / 2, middle.bottom() - inset() - size.height()),
                  size);
+    // Kept on the page: a block at its edge would have its name cut off there.
+    if (inside.right() > m_layout.room.right())
+        inside.moveRight(m_layout.room.right());
+    if (inside.left() < m_layout.room.left())
+        inside.moveLeft(m_layout.room.left());
+    return inside;
 }
 
 // The name in the tab's text colour on a rounded tab of the block's colour, drawn once per zoom.

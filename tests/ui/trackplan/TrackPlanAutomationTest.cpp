@@ -245,8 +245,15 @@ TEST_F(TrackPlanAutomationTest, AnUnknownOccupantIsCrossHatchedAndAGhostOnAWaySh
     ASSERT_TRUE(QTest::qWaitFor([&] { return shadeShown(Gleis1) == BlockShade::Fault; }, 3000));
     EXPECT_EQ(nameShown(Gleis1), QStringLiteral("Gleis 1 · BR 218 Ost · fault"));
     EXPECT_EQ(shadeShown(Block1), BlockShade::Ghost);
+    painted();
+    const TrackPageView* view = panel->pageView(0);
+    const QRect room(TrackPageView::Margin, TrackPageView::Margin,
+                     view->gridSize().width() * view->tileSize(),
+                     view->gridSize().height() * view->tileSize());
+    EXPECT_TRUE(room.contains(view->blocks().nameRect(Block1))) << "the name at the page's edge stays on it";
     selectGerman();
     EXPECT_EQ(nameShown(Block1), QStringLiteral("Block 1 · unbekannt belegt"));
+    save(QStringLiteral("autoplan-fault-de.png"));
 }
 
 TEST_F(TrackPlanAutomationTest, TheBlocksMenuPlacesATrainThroughTheAutomationAndRemovesIt) {
@@ -261,6 +268,8 @@ TEST_F(TrackPlanAutomationTest, TheBlocksMenuPlacesATrainThroughTheAutomationAnd
     auto* dialog = panel->findChild<PlaceTrainDialog*>();
     ASSERT_NE(dialog, nullptr);
     EXPECT_TRUE(dialog->isVisible());
+    if (const QString folder = qEnvironmentVariable("STELLWERK_SCREENSHOT_DIR"); !folder.isEmpty())
+        dialog->grab().save(folder + QStringLiteral("/autoplan-place-dialog.png"));
     ASSERT_TRUE(dialog->chooseLocomotive(V100));
     dialog->setTowards(End::A);
     dialog->setLengthMm(300);
@@ -348,7 +357,7 @@ TEST_F(TrackPlanAutomationTest, TheLegendSaysEveryShadeInWords) {
     panel->setShowBlocks(true);
     EXPECT_EQ(shadeShown(Gleis2), BlockShade::Free) << "with Blocks on, free blocks are outlined as free";
     selectGerman();
-    EXPECT_EQ(panel->blockLegend()->texts().at(2), QStringLiteral("Zug darin, gefüllt"));
+    EXPECT_EQ(panel->blockLegend()->texts().at(2), QStringLiteral("Zug darin"));
 }
 
 // Three trains of the demo run automatically on the simulated station (the test runs the clock): the plan
