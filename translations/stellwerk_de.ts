@@ -887,6 +887,37 @@
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::BlockLegend</name>
+    <message>
+        <source>Blocks:</source>
+        <translation>Blöcke:</translation>
+    </message>
+    <message>
+        <source>free</source>
+        <translation>frei</translation>
+    </message>
+    <message>
+        <source>reserved</source>
+        <translation>reserviert</translation>
+    </message>
+    <message>
+        <source>train in it</source>
+        <translation>Zug darin</translation>
+    </message>
+    <message>
+        <source>unknown occupant</source>
+        <translation>unbekannt belegt</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>A train&apos;s blocks are solid and named with it; the blocks and turnouts reserved for its way hatched; a block occupied by something no train can have reached cross-hatched; a train stopped by a fault dotted. Free blocks are outlined while &quot;Blocks&quot; is on.</source>
+        <translation>Die Blöcke eines Zuges sind gefüllt und mit seinem Namen beschriftet, die für seinen Fahrweg reservierten Blöcke und Weichen schraffiert, ein Block, den etwas belegt, das kein Zug erreicht haben kann, kreuzschraffiert, ein durch eine Störung angehaltener Zug gepunktet. Freie Blöcke werden umrandet, solange „Blöcke“ eingeschaltet ist.</translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::BusMonitorFilterBar</name>
     <message>
         <source>the Loc-ID is not understood; write e.g. 0xC003, 49155 or dcc 3</source>
@@ -2721,6 +2752,110 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::PlaceTrainDialog</name>
+    <message>
+        <source>Place a train in %1</source>
+        <translation>Zug in %1 aufgleisen</translation>
+    </message>
+    <message>
+        <source>End %1, %2</source>
+        <translation>Ende %1, %2</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Locomotive:</source>
+        <translation>Lok:</translation>
+    </message>
+    <message>
+        <source>Facing:</source>
+        <translation>Fährt zu:</translation>
+    </message>
+    <message>
+        <source>Length:</source>
+        <translation>Länge:</translation>
+    </message>
+    <message>
+        <source>Place</source>
+        <translation>Aufgleisen</translation>
+    </message>
+    <message>
+        <source>The train is tracked from here on: put it on the track in %1 first.</source>
+        <translation>Der Zug wird ab hier verfolgt: stellen Sie ihn zuerst in %1 auf das Gleis.</translation>
+    </message>
+    <message>
+        <source>towards %1</source>
+        <translation>Richtung %1</translation>
+    </message>
+    <message>
+        <source> or </source>
+        <translation> oder </translation>
+    </message>
+    <message>
+        <source>towards a buffer stop</source>
+        <translation>Richtung Prellbock</translation>
+    </message>
+    <message>
+        <source>towards a turntable</source>
+        <translation>Richtung Drehscheibe</translation>
+    </message>
+    <message>
+        <source>towards the end of the track</source>
+        <translation>Richtung Gleisende</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::PlanAutomation</name>
+    <message>
+        <source>for %1</source>
+        <comment>a block reserved for a train</comment>
+        <translation>für %1</translation>
+    </message>
+    <message>
+        <source>unknown occupant</source>
+        <translation>unbekannt belegt</translation>
+    </message>
+    <message>
+        <source>%1 · fault</source>
+        <comment>a train stopped by a fault</comment>
+        <translation>%1 · Störung</translation>
+    </message>
+    <message>
+        <source>Automation: free</source>
+        <translation>Automatik: frei</translation>
+    </message>
+    <message>
+        <source>Automation: reserved for %1 (hatched)</source>
+        <translation>Automatik: reserviert für %1 (schraffiert)</translation>
+    </message>
+    <message>
+        <source>Automation: %1 is in this block (solid)</source>
+        <translation>Automatik: %1 steht in diesem Block (gefüllt)</translation>
+    </message>
+    <message>
+        <source>Automation: an unknown occupant, no train can have reached it (cross-hatched); no automatic train enters it</source>
+        <translation>Automatik: unbekannt belegt, kein Zug kann ihn erreicht haben (kreuzschraffiert); kein automatischer Zug fährt hinein</translation>
+    </message>
+    <message>
+        <source>Automation: %1 stopped by a fault (dotted); see the Automatic panel</source>
+        <translation>Automatik: %1 wegen einer Störung angehalten (gepunktet); siehe Seite „Automatik“</translation>
+    </message>
+    <message>
+        <source>No automation runs on this layout.</source>
+        <translation>Auf dieser Anlage läuft keine Automatik.</translation>
+    </message>
+    <message>
+        <source>The block is reserved for %1: choose another block.</source>
+        <translation>Der Block ist für %1 reserviert: wählen Sie einen anderen Block.</translation>
+    </message>
+    <message>
+        <source>%1 is in this block already: remove it first.</source>
+        <translation>%1 steht schon in diesem Block: nehmen Sie ihn zuerst heraus.</translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::PowerStatus</name>
     <message>
         <source>No station connected</source>
@@ -3581,6 +3716,18 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Announced on the station&apos;s bus: %1</source>
         <translation>Auf dem Bus der Zentrale gemeldet: %1</translation>
+    </message>
+    <message>
+        <source>Place a train in %1...</source>
+        <translation>Zug in %1 aufgleisen ...</translation>
+    </message>
+    <message>
+        <source>Remove %1 from %2</source>
+        <translation>%1 aus %2 herausnehmen</translation>
+    </message>
+    <message>
+        <source>Drop the locomotive on a block&apos;s track to place it there.</source>
+        <translation>Lassen Sie die Lok auf dem Gleis eines Blocks los, um sie dort aufzugleisen.</translation>
     </message>
 </context>
 <context>

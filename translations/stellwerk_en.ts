@@ -887,6 +887,37 @@
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::BlockLegend</name>
+    <message>
+        <source>Blocks:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>free</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reserved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>train in it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown occupant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A train&apos;s blocks are solid and named with it; the blocks and turnouts reserved for its way hatched; a block occupied by something no train can have reached cross-hatched; a train stopped by a fault dotted. Free blocks are outlined while &quot;Blocks&quot; is on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::BusMonitorFilterBar</name>
     <message>
         <source>the Loc-ID is not understood; write e.g. 0xC003, 49155 or dcc 3</source>
@@ -2717,6 +2748,110 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
 </context>
 <context>
+    <name>stellwerk::ui::PlaceTrainDialog</name>
+    <message>
+        <source>Place a train in %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>End %1, %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Locomotive:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Facing:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Length:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Place</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The train is tracked from here on: put it on the track in %1 first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>towards %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> or </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>towards a buffer stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>towards a turntable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>towards the end of the track</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::PlanAutomation</name>
+    <message>
+        <source>for %1</source>
+        <comment>a block reserved for a train</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown occupant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 · fault</source>
+        <comment>a train stopped by a fault</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automation: free</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automation: reserved for %1 (hatched)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automation: %1 is in this block (solid)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automation: an unknown occupant, no train can have reached it (cross-hatched); no automatic train enters it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automation: %1 stopped by a fault (dotted); see the Automatic panel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No automation runs on this layout.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The block is reserved for %1: choose another block.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is in this block already: remove it first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::PowerStatus</name>
     <message>
         <source>No station connected</source>
@@ -3576,6 +3711,18 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Announced on the station&apos;s bus: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Place a train in %1...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove %1 from %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drop the locomotive on a block&apos;s track to place it there.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

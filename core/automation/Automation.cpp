@@ -53,12 +53,31 @@ Automation::~Automation() = default;
 
 std::optional<std::string> Automation::place(std::uint32_t locId, std::int64_t contact,
                                              trackgraph::End towards, int lengthMm) {
-    const model::Locomotive* loco = railway_.locomotive(locId);
-    const std::string name = loco ? loco->displayName().toStdString()
-                                  : QStringLiteral("0x%1").arg(locId, 4, 16, QLatin1Char('0')).toStdString();
-    std::optional<std::string> problem = dispatcher_.place(locId, name, lengthMm, contact, towards);
+    std::optional<std::string> problem =
+        dispatcher_.place(locId, trainName(locId), lengthMm, contact, towards);
     carryOut();
     return problem;
+}
+
+std::optional<std::string> Automation::placeInBlock(std::uint32_t locId, int block, trackgraph::End towards,
+                                                    int lengthMm) {
+    std::optional<std::string> problem =
+        dispatcher_.placeInBlock(locId, trainName(locId), lengthMm, block, towards);
+    carryOut();
+    return problem;
+}
+
+bool Automation::remove(std::uint32_t locId) {
+    const bool removed = dispatcher_.remove(locId);
+    carryOut();
+    told_.erase(locId);
+    return removed;
+}
+
+std::string Automation::trainName(std::uint32_t locId) const {
+    const model::Locomotive* loco = railway_.locomotive(locId);
+    return loco ? loco->displayName().toStdString()
+                : QStringLiteral("0x%1").arg(locId, 4, 16, QLatin1Char('0')).toStdString();
 }
 
 void Automation::start(std::chrono::milliseconds interval) {

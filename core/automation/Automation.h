@@ -39,6 +39,11 @@ public:
     // Puts a locomotive of the railway in the block holding the contact; the sentence says why not.
     std::optional<std::string> place(std::uint32_t locId, std::int64_t contact, trackgraph::End towards,
                                      int lengthMm = 200);
+    // The same by the track graph's block id (the plan places by block); a train placed before is moved.
+    std::optional<std::string> placeInBlock(std::uint32_t locId, int block, trackgraph::End towards,
+                                            int lengthMm = 200);
+    // Takes the train off the railway (stopped if the automation drove it); false when it was not placed.
+    bool remove(std::uint32_t locId);
     // The placed train's schedule; the sentence says why not.
     std::optional<std::string> setSchedule(std::uint32_t locId, Schedule schedule) {
         return dispatcher_.setSchedule(locId, std::move(schedule));
@@ -70,6 +75,7 @@ private:
     bool heardOwnCommand(std::uint32_t locId, const model::Locomotive& loco);
     void reverse(std::uint32_t locId);
     std::set<trackgraph::ContactKey> occupiedContacts();
+    std::string trainName(std::uint32_t locId) const;
     void carryOut();
 
     model::Railway& railway_;

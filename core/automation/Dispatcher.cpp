@@ -47,9 +47,21 @@ std::optional<std::string> Dispatcher::place(std::uint32_t locId, const std::str
                 block = candidate.id;
     if (block == 0)
         return name + ": no block of the track plan holds contact " + std::to_string(contact);
+    return placeInBlock(locId, name, lengthMm, block, towards);
+}
+
+std::optional<std::string> Dispatcher::placeInBlock(std::uint32_t locId, const std::string& name,
+                                                    int lengthMm, int block, End towards) {
+    if (block <= 0 || block > int(graph_.blocks().size()))
+        return name + ": the track plan has no block " + std::to_string(block);
     if (const std::uint32_t other = tracking_.trainIn(block); other != 0 && other != locId)
         return name + ": block \"" + blockName(block) + "\" holds " + trains_.at(other).name + " already";
+    if (const std::uint32_t owner = reservations_.blockOwner(block); owner != 0 && owner != locId)
+        return name + ": block \"" + blockName(block) + "\" is reserved for " + trains_.at(owner).name;
+    if (tracking_.body(locId) && tracking_.body(locId)->frontBlock != block) // moved by hand elsewhere
+        reservations_.releaseAllBut(locId, {}, {});
     giveBackWay(locId);
+    journeys_.erase(locId); // its way led from where it stood; it stands until resumed
     tracking_.place(locId, block, towards, lengthMm);
     reservations_.holdBlock(locId, block);
     Train& train = trains_[locId];
@@ -59,6 +71,24 @@ std::optional<std::string> Dispatcher::place(std::uint32_t locId, const std::str
           name + " placed in \"" + blockName(block) + "\" facing end " +
               std::string(trackgraph::endName(towards)));
     return std::nullopt;
+}
+
+bool Dispatcher::remove(std::uint32_t locId) {
+    const auto found = trains_.find(locId);
+    if (found == trains_.end())
+        return false;
+    const int block = tracking_.body(locId)->frontBlock;
+    const std::string name = found->second.name;
+    if (found->second.mode == TrainMode::Automatic)
+        command(DriveCommand::speedOf(locId, 0));
+    reservations_.releaseAllBut(locId, {}, {});
+    tracking_.remove(locId);
+    journeys_.erase(locId);
+    mustBeSeen_.erase(locId);
+    trains_.erase(found);
+    event(AutomationEvent::Kind::Released, locId, block,
+          name + " taken off \"" + blockName(block) + "\": no longer tracked");
+    return true;
 }
 
 void Dispatcher::setMode(std::uint32_t locId, TrainMode mode, Millis now) {

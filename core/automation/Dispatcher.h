@@ -45,6 +45,13 @@ public:
     // the sentence says why not.
     std::optional<std::string> place(std::uint32_t locId, const std::string& name, int lengthMm,
                                      std::int64_t contact, trackgraph::End towards);
+    // The same by the block's id (the plan places by block): a train placed before is taken from where it
+    // was, with everything it held.
+    std::optional<std::string> placeInBlock(std::uint32_t locId, const std::string& name, int lengthMm,
+                                            int block, trackgraph::End towards);
+    // Takes a train off the railway: it is no longer tracked or driven, and everything it held is given
+    // back; false when it was not placed.
+    bool remove(std::uint32_t locId);
     void setMode(std::uint32_t locId, TrainMode mode, Millis now);
     // The train runs to the schedule's stops in turn (from its `next`), standing at each for its dwell; the
     // sentence says why not (a block no track plan block is named).

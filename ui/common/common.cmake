@@ -7,6 +7,7 @@ target_sources(stellwerk-ui PRIVATE
     common/Contrast.cpp common/Contrast.h
     common/FunctionIcons.cpp common/FunctionIcons.h
     common/LayoutStateBanner.cpp common/LayoutStateBanner.h
+    common/LocomotiveMime.cpp common/LocomotiveMime.h
     common/LocomotivePictureBook.cpp common/LocomotivePictureBook.h
     common/LocomotiveTableModel.cpp common/LocomotiveTableModel.h
     common/NotReported.cpp common/NotReported.h

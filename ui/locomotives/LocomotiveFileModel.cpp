@@ -1,7 +1,9 @@
 #include "locomotives/LocomotiveFileModel.h"
 
+#include "common/LocomotiveMime.h"
 #include "common/LocomotivePictureBook.h"
 
+#include <QMimeData>
 #include <algorithm>
 
 namespace stellwerk::ui {
@@ -149,6 +151,24 @@ QString LocomotiveFileModel::addressText(const cs2config::Locomotive& locomotive
     default:
         return tr("MM2 %1").arg(settings.address);
     }
+}
+
+Qt::ItemFlags LocomotiveFileModel::flags(const QModelIndex& index) const {
+    const Qt::ItemFlags flags = QAbstractTableModel::flags(index);
+    return index.isValid() ? flags | Qt::ItemIsDragEnabled : flags;
+}
+
+QStringList LocomotiveFileModel::mimeTypes() const {
+    return {LocomotiveMime::Type};
+}
+
+QMimeData* LocomotiveFileModel::mimeData(const QModelIndexList& indexes) const {
+    if (indexes.isEmpty() || !m_editor)
+        return nullptr;
+    const cs2config::Locomotive& locomotive = m_editor->locomotives()[fileIndex(indexes.front().row())];
+    if (locomotive.uid == 0) // not on the station yet: nothing to place
+        return nullptr;
+    return LocomotiveMime::make(locomotive.uid, QString::fromStdString(locomotive.name));
 }
 
 } // namespace stellwerk::ui

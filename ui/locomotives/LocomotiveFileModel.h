@@ -37,6 +37,10 @@ public:
     int columnCount(const QModelIndex& parent = {}) const override;
     QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
     QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    // A row is dragged as its locomotive (LocomotiveMime): onto a block of the plan it places the train.
+    Qt::ItemFlags flags(const QModelIndex& index) const override;
+    QStringList mimeTypes() const override;
+    QMimeData* mimeData(const QModelIndexList& indexes) const override;
 
     // "MM2 (programmable)", "DCC", "mfx", in the user's language.
     static QString decoderText(cs2config::LocomotiveDecoder decoder);

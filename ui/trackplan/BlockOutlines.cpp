@@ -82,6 +82,15 @@ private:
 BlockOutlines::BlockOutlines(std::vector<Block> blocks) : m_blocks(std::move(blocks)) {}
 
 BlockOutlines BlockOutlines::ofPage(const PlanGraph& graph, int page, const StateOf& stateOf) {
+    return ofPage(graph, page,
+                  [&stateOf](int block) {
+                      return Mark{BlockShade::Plain, stateOf ? stateOf(block) : QString()};
+                  },
+                  true, {});
+}
+
+BlockOutlines BlockOutlines::ofPage(const PlanGraph& graph, int page, const MarkOf& markOf, bool allBlocks,
+                                    const std::vector<int>& ways) {
     std::vector<Block> parts;
     const trackgraph::TrackGraph& g = graph.graph();
     const auto onPage = [&](trackgraph::TileId id) {
@@ -93,9 +102,12 @@ BlockOutlines BlockOutlines::ofPage(const PlanGraph& graph, int page, const Stat
         return QPoint(place.column, place.row);
     };
     for (const trackgraph::Block& block : g.blocks()) {
-        Block part{block.id, QString::fromStdString(block.name), {}, {}};
-        if (const QString state = stateOf ? stateOf(block.id) : QString(); !state.isEmpty())
-            part.name += QStringLiteral(" · ") + state;
+        const Mark mark = markOf(block.id);
+        if (!allBlocks && (mark.shade == BlockShade::Plain || mark.shade == BlockShade::Free))
+            continue;
+        Block part{block.id, QString::fromStdString(block.name), {}, {}, mark.shade};
+        if (!mark.words.isEmpty())
+            part.name += QStringLiteral(" · ") + mark.words;
         for (const trackgraph::TileId id : block.tiles)
             if (onPage(id))
                 part.cells.push_back(cellOf(id));
@@ -107,6 +119,24 @@ BlockOutlines BlockOutlines::ofPage(const PlanGraph& graph, int page, const Stat
                 along.push_back(cellOf(step.tile));
         part.nameCells = fromTheMiddle(along.empty() ? part.cells : along);
         parts.push_back(std::move(part));
+    }
+    for (const int id : ways) {
+        const trackgraph::Connection& connection = g.connection(id);
+        std::set<std::pair<int, int>> seen;
+        Block way{-id, QString(), {}, {}, BlockShade::Reserved};
+        const auto add = [&](trackgraph::TileId tile) {
+            const QPoint cell = cellOf(tile);
+            if (onPage(tile) && seen.insert({cell.x(), cell.y()}).second)
+                way.cells.push_back(cell);
+        };
+        for (const trackgraph::TrackStep& step : connection.path)
+            add(step.tile);
+        for (const trackgraph::TurnoutOnWay& turnout : connection.turnouts)
+            add(turnout.tile);
+        for (const trackgraph::TileId crossing : connection.crossings)
+            add(crossing);
+        if (!way.cells.empty())
+            parts.push_back(std::move(way));
     }
     return BlockOutlines(std::move(parts));
 }
@@ -125,9 +155,10 @@ void BlockOutlines::layOut(const Layout& layout, const std::vector<QRect>& taken
         covered.add(rect);
     for (const Block& block : m_blocks) {
         Drawn drawn = band(block);
+        drawn.look = BlockShadeLook::of(block.shade, colors);
         if (m_layout.tileSize >= NamesFromTile && !block.name.isEmpty()) {
             drawn.name = placeName(block, covered);
-            drawn.tab = tabPicture(block.name, drawn.name.size(), colors);
+            drawn.tab = tabPicture(block.name, drawn.name.size(), drawn.look);
             covered.add(drawn.name);
         }
         m_drawn.push_back(std::move(drawn));
@@ -196,35 +227,44 @@ QRect BlockOutlines::placeName(const Block& block, const TakenAreas& taken) cons
             return above;
     }
     const QRect middle = cellRect(block.nameCells.empty() ? block.cells.front() : block.nameCells.front());
-    return QRect(QPoint(middle.center().x() - size.width() / 2, middle.bottom() - inset() - size.height()),
+    QRect inside(QPoint(middle.center().x() - size.width() / 2, middle.bottom() - inset() - size.height()),
                  size);
+    // Kept on the page: a block at its edge would have its name cut off there.
+    if (inside.right() > m_layout.room.right())
+        inside.moveRight(m_layout.room.right());
+    if (inside.left() < m_layout.room.left())
+        inside.moveLeft(m_layout.room.left());
+    return inside;
 }
 
-// The name in the tab's text colour on a rounded tab of the blocks' colour, drawn once per zoom.
-QImage BlockOutlines::tabPicture(const QString& name, QSize size, const TrackColors& colors) const {
+// The name in the tab's text colour on a rounded tab of the block's colour, drawn once per zoom.
+QImage BlockOutlines::tabPicture(const QString& name, QSize size, const BlockShadeLook& look) const {
     QImage tab(size * m_layout.pixelRatio, QImage::Format_ARGB32_Premultiplied);
     tab.setDevicePixelRatio(m_layout.pixelRatio);
     tab.fill(Qt::transparent);
     QPainter painter(&tab);
     painter.setRenderHint(QPainter::Antialiasing, true);
     painter.setPen(Qt::NoPen);
-    painter.setBrush(colors.block);
+    painter.setBrush(look.edge);
     painter.drawRoundedRect(QRectF(QPointF(0, 0), QSizeF(size)), 3, 3);
     painter.setFont(m_layout.font);
-    painter.setPen(colors.blockText);
+    painter.setPen(look.text);
     painter.drawText(QRect(QPoint(0, 0), size), Qt::AlignCenter, name);
     return tab;
 }
 
-void BlockOutlines::paintBands(QPainter& painter, const QRect& area, const TrackColors& colors) const {
+void BlockOutlines::paintBands(QPainter& painter, const QRect& area, const TrackColors& /*colors*/) const {
+    painter.save();
+    painter.setBrushOrigin(m_layout.origin); // the patterns line up across the bands painted on other cores
     for (const Drawn& drawn : m_drawn) {
         if (!drawn.bounds.intersects(area))
             continue;
         for (const QRect& rect : drawn.fill)
-            painter.fillRect(rect, colors.blockBand);
+            painter.fillRect(rect, drawn.look.band);
         for (const QRect& rect : drawn.edge)
-            painter.fillRect(rect, colors.block);
+            painter.fillRect(rect, drawn.look.edge);
     }
+    painter.restore();
 }
 
 void BlockOutlines::paintNames(QPainter& painter, const QRect& area) const {

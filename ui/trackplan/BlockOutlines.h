@@ -1,5 +1,7 @@
 #pragma once
 
+#include "trackplan/BlockShades.h"
+
 #include <QFont>
 #include <QImage>
 #include <QPoint>
@@ -16,7 +18,8 @@ class PlanGraph;
 struct TrackColors;
 
 // The blocks of one page of the plan drawn as translucent bands over their tiles, each with its name on a
-// tab beside it. Which cells a block covers comes from the track graph once per layout; the bands, their
+// tab beside it, shaded as the automation says (BlockShade), and the connections of reserved ways as bands
+// without a name. Which cells a block covers comes from the track graph once per layout; the bands, their
 // edges, the places of the names and the tabs' pictures are made once per zoom, so that a repaint only
 // fills rectangles and blits pictures it knows (on any thread).
 class BlockOutlines final {
@@ -28,6 +31,7 @@ public:
         QString name;
         std::vector<QPoint> cells;
         std::vector<QPoint> nameCells;
+        BlockShade shade = BlockShade::Plain;
     };
 
     BlockOutlines() = default;
@@ -37,6 +41,17 @@ public:
     // The parts of the graph's blocks on one page of the plan (index into the layout's pages), each named
     // "name · state" where `stateOf` says something.
     static BlockOutlines ofPage(const PlanGraph& graph, int page, const StateOf& stateOf = {});
+    // What the automation says of a block: its shade and the words beside its name.
+    struct Mark {
+        BlockShade shade = BlockShade::Plain;
+        QString words;
+    };
+    using MarkOf = std::function<Mark(int block)>;
+    // The blocks marked by `markOf` (only those shaded other than free when `allBlocks` is false), and the
+    // reserved connections `ways` (graph connection ids) as unnamed bands in the reserved shade; a way's id
+    // is the connection's, negated.
+    static BlockOutlines ofPage(const PlanGraph& graph, int page, const MarkOf& markOf, bool allBlocks,
+                                const std::vector<int>& ways);
 
     bool isEmpty() const { return m_blocks.empty(); }
     const std::vector<Block>& blocks() const { return m_blocks; }
@@ -75,11 +90,12 @@ private:
         QRect bounds;
         QRect name;
         QImage tab; // the name on its tab
+        BlockShadeLook look;
     };
     Drawn band(const Block& block) const;
     class TakenAreas;
     QRect placeName(const Block& block, const TakenAreas& taken) const;
-    QImage tabPicture(const QString& name, QSize size, const TrackColors& colors) const;
+    QImage tabPicture(const QString& name, QSize size, const BlockShadeLook& look) const;
     QRect cellRect(QPoint cell) const;
     int inset() const;
 

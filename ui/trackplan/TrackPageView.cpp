@@ -1,13 +1,18 @@
 #include "trackplan/TrackPageView.h"
 
+#include "common/LocomotiveMime.h"
 #include "model/TrackLayout.h"
 #include "trackplan/PaintBands.h"
 #include "trackplan/TileTag.h"
 #include "trackplan/TrackTilePainter.h"
 
 #include <QContextMenuEvent>
+#include <QDragEnterEvent>
+#include <QDragMoveEvent>
+#include <QDropEvent>
 #include <QElapsedTimer>
 #include <QHelpEvent>
+#include <QMimeData>
 #include <QPaintEvent>
 #include <QPainter>
 #include <QToolTip>
@@ -317,6 +322,31 @@ bool TrackPageView::event(QEvent* event) {
         m_drawnArea.reset();
     }
     return QWidget::event(event);
+}
+
+void TrackPageView::dragEnterEvent(QDragEnterEvent* event) {
+    if (LocomotiveMime::locId(event->mimeData()))
+        event->acceptProposedAction();
+}
+
+// Only a tile takes the locomotive (the panel says whether it lies in a block).
+void TrackPageView::dragMoveEvent(QDragMoveEvent* event) {
+    if (LocomotiveMime::locId(event->mimeData()) && tileAt(event->position().toPoint()))
+        event->acceptProposedAction();
+    else
+        event->ignore();
+}
+
+void TrackPageView::dropEvent(QDropEvent* event) {
+    const std::optional<std::uint32_t> locId = LocomotiveMime::locId(event->mimeData());
+    const QPoint point = event->position().toPoint();
+    const std::optional<int> tile = tileAt(point);
+    if (!locId || !tile) {
+        event->ignore();
+        return;
+    }
+    event->acceptProposedAction();
+    emit locomotiveDropped(*locId, *tile, point);
 }
 
 } // namespace stellwerk::ui

@@ -65,12 +65,16 @@ public:
     const std::vector<int>& problemTiles() const { return m_problemTiles; }
     // Where a tile's problem marker is drawn.
     QRect problemMarkerRect(int tile) const;
+    // Takes locomotives dragged onto its tiles (LocomotiveMime), while trains can be placed.
+    void setLocomotiveDrops(bool accepted) { setAcceptDrops(accepted); }
 
 signals:
     void tileClicked(int tile);
     void tileMenuRequested(int tile, QPoint globalPosition);
     // Ctrl + wheel: positive steps zoom in.
     void zoomRequested(int steps);
+    // A locomotive was dropped on a tile, at `point` (the view's pixels).
+    void locomotiveDropped(quint32 locId, int tile, QPoint point);
 
 protected:
     void paintEvent(QPaintEvent* event) override;
@@ -78,6 +82,9 @@ protected:
     void contextMenuEvent(QContextMenuEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     bool event(QEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dragMoveEvent(QDragMoveEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private:
     void paintGrid(QPainter& painter, const QRect& area) const;

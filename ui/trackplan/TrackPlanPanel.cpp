@@ -9,11 +9,13 @@
 #include "trackgraph/TrackGraph.h"
 #include "trackplan/AnnouncedStateText.h"
 #include "trackplan/BlockDescription.h"
+#include "trackplan/BlockLegend.h"
 #include "trackplan/BlockOutlines.h"
 #include "trackplan/BlockPopup.h"
 #include "trackplan/BlockViewSettings.h"
 #include "trackplan/GraphProblemText.h"
 #include "trackplan/PageZoom.h"
+#include "trackplan/PlanAutomation.h"
 #include "trackplan/PlanGraph.h"
 #include "trackplan/SetRoutes.h"
 #include "trackplan/TileMenu.h"
@@ -84,6 +86,11 @@ TrackPlanPanel::TrackPlanPanel(QWidget* parent) : QWidget(parent) {
     m_layoutState = new LayoutStateBanner(this);
     m_layoutState->setObjectName(QStringLiteral("trackPlanLayoutState"));
     layout->addWidget(m_layoutState);
+    m_planAutomation = new PlanAutomation(this);
+    connect(m_planAutomation, &PlanAutomation::changed, this, &TrackPlanPanel::automationChanged);
+    m_legend = new BlockLegend(this);
+    m_legend->hide(); // while an automation runs
+    layout->addWidget(m_legend);
 
     m_emptyText = new QLabel(this);
     m_emptyText->setAlignment(Qt::AlignCenter);
@@ -127,6 +134,7 @@ void TrackPlanPanel::setRailway(model::Railway* railway) {
         connect(m_railway, &QObject::destroyed, this, [this] { setRailway(nullptr); });
     }
     m_layoutState->setRailway(railway);
+    m_planAutomation->setRailway(railway);
     if (!showsFolder())
         rebuild();
     updateActions();
@@ -243,6 +251,7 @@ void TrackPlanPanel::rebuild() {
     indexRoutes();
     m_setRoutes->update(m_live ? m_railway.data() : nullptr);
     m_graph = m_layout ? PlanGraph::of(m_layoutInUse->graph(), *m_layout) : nullptr;
+    m_planAutomation->setShownGraph(m_graph ? &m_graph->graph() : nullptr);
     m_blockPopup->hide();
     if (m_layout)
         for (int i = 0; i < int(m_layout->pages().size()); ++i)
@@ -286,11 +295,15 @@ void TrackPlanPanel::addPage(int index) {
         },
         scroll);
     view->setDimmed(m_live && !isReported());
+    view->setLocomotiveDrops(m_planAutomation->isActive());
     scroll->setWidget(view);
     m_zoom->attach(page.id, view, scroll);
     connect(view, &TrackPageView::tileClicked, this, [this, index](int tile) { tileClicked(index, tile); });
     connect(view, &TrackPageView::tileMenuRequested, this,
             [this, index](int tile, QPoint where) { showTileMenu(index, tile, where); });
+    connect(
+        view, &TrackPageView::locomotiveDropped, this,
+        [this, index](quint32 locId, int tile, QPoint point) { placeDropped(index, tile, point, locId); });
     connect(view, &TrackPageView::zoomRequested, this, [this, view, id = page.id](int steps) {
         m_zoom->zoomTo(id, PageZoom::stepped(view->tileSize(), steps));
     });
@@ -377,7 +390,7 @@ QString TrackPlanPanel::toolTipOn(const model::TrackLayout& layout, model::TileR
     const bool hasState = tile.accessory || tile.contact || tile.route;
     if (hasState && isLive() && !isReported())
         tip += QStringLiteral("\n") + NotReported::reason();
-    return tip + graphToolTip(ref);
+    return tip + automationToolTip(ref) + graphToolTip(ref);
 }
 
 // A route's memory slot on the station, and what the station last announced for it.
@@ -496,6 +509,7 @@ void TrackPlanPanel::showTileMenu(int page, int tile, QPoint where) {
 
 bool TrackPlanPanel::fillTileMenu(QMenu& menu, model::TileRef tile) {
     bool filled = isLive() && isReported() && TileMenu::fill(menu, m_layout->tile(tile), *m_railway);
+    filled = fillTrainEntries(menu, tile, filled);
     if (!showsBlocks() || !m_graph)
         return filled;
     for (const int block : m_graph->blocksAt(tile)) {
@@ -540,14 +554,14 @@ void TrackPlanPanel::showBlock(model::TileRef tile, int block) {
     m_blockPopup->showText(description.html(block), view->mapToGlobal(cell.bottomLeft() + QPoint(0, 4)));
 }
 
-// The blocks drawn over every page, the drawing's problems marked and listed, or none of it.
+// The blocks drawn over every page, the drawing's problems marked and listed, or none of it; the
+// automation's blocks and ways whenever one runs.
 void TrackPlanPanel::applyBlocks() {
     const bool shown = showsBlocks() && m_graph;
+    const bool marked = m_graph && m_planAutomation->isActive();
     for (int i = 0; i < int(m_views.size()); ++i)
         if (TrackPageView* view = m_views[std::size_t(i)]) {
-            view->setBlocks(shown ? BlockOutlines::ofPage(
-                                        *m_graph, i, [this](int block) { return announcedStateOf(block); })
-                                  : BlockOutlines());
+            view->setBlocks(shown || marked ? outlinesOf(i, shown) : BlockOutlines());
             view->setProblemTiles(shown ? m_graph->problemTilesOf(i) : std::vector<int>());
         }
     if (shown && !m_graph->graph().problems().empty())
@@ -560,12 +574,28 @@ void TrackPlanPanel::applyBlocks() {
 
 // Another program announced block states on the bus: the blocks' names say them.
 void TrackPlanPanel::applyBlockStates() {
-    if (!showsBlocks() || !m_graph)
+    const bool shown = showsBlocks() && m_graph;
+    if (!shown && !(m_graph && m_planAutomation->isActive()))
         return;
     for (int i = 0; i < int(m_views.size()); ++i)
         if (TrackPageView* view = m_views[std::size_t(i)])
-            view->setBlocks(
-                BlockOutlines::ofPage(*m_graph, i, [this](int block) { return announcedStateOf(block); }));
+            view->setBlocks(outlinesOf(i, shown));
+}
+
+// A page's blocks named with what was announced for them, or, while an automation runs, shaded as it has
+// them (every block, or only those not free) with its reserved ways.
+BlockOutlines TrackPlanPanel::outlinesOf(int page, bool allBlocks) const {
+    if (!m_planAutomation->isActive())
+        return BlockOutlines::ofPage(*m_graph, page, [this](int block) { return announcedStateOf(block); });
+    return BlockOutlines::ofPage(
+        *m_graph, page,
+        [this](int block) {
+            BlockOutlines::Mark mark = m_planAutomation->markOf(block);
+            if (mark.words.isEmpty())
+                mark.words = announcedStateOf(block);
+            return mark;
+        },
+        allBlocks, m_planAutomation->trains().ways());
 }
 
 QString TrackPlanPanel::announcedStateOf(int block) const {

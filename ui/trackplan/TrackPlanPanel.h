@@ -2,6 +2,8 @@
 
 #include "cs2config/LayoutFolder.h"
 #include "model/TrackLayout.h"
+#include "trackgraph/TrackGraph.h"
+#include "trackplan/BlockOutlines.h"
 #include "trackplan/PageZoom.h"
 
 #include <QList>
@@ -19,6 +21,9 @@ class QMenu;
 class QTabWidget;
 class QToolBar;
 
+namespace stellwerk::automation {
+class Automation;
+}
 namespace stellwerk::model {
 class FeedbackContact;
 class LayoutInUse;
@@ -27,8 +32,10 @@ class Railway;
 
 namespace stellwerk::ui {
 
+class BlockLegend;
 class BlockPopup;
 class LayoutStateBanner;
+class PlanAutomation;
 class PlanGraph;
 class ProblemBar;
 class SetRoutes;
@@ -39,7 +46,8 @@ struct TrackTileLook;
 // contact and route states while that layout is the station's, switching by click, and "Open layout..."
 // and "Export layout..." asked of the layout in use. It shows the layout in use and its track graph
 // (PlanGraph) and, when asked, draws the blocks, lists and marks the drawing's problems, and says what a
-// block clicked leads to.
+// block clicked leads to. While an automation runs on its layout it shades the blocks as the automation
+// has them (trains, reserved ways, unknown occupants, faults) and places trains in blocks.
 class TrackPlanPanel final : public QWidget {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(TrackPlanPanel)
@@ -110,9 +118,20 @@ public:
     // Opens the popup about the block on a tile (the first, where two tracks cross); false when the tile is
     // in no block or the blocks are not shown.
     bool showBlockAt(model::TileRef tile);
-    // What a right click on a tile offers: its positions or occupant on a reported railway (TileMenu), and
-    // while the blocks are shown "Block ..." for each block it is in; false when there is nothing.
+    // What a right click on a tile offers: its positions or occupant on a reported railway (TileMenu), while
+    // the blocks are shown "Block ..." for each block it is in, and while an automation runs "Place a train
+    // in ..." and "Remove ..." for each; false when there is nothing.
     bool fillTileMenu(QMenu& menu, model::TileRef tile);
+
+    // The automation whose trains the plan shows and places (null: none; it may be deleted and replaced at
+    // any time). Without one the plan looks as it always did.
+    void setAutomation(automation::Automation* automation);
+    // What the plan shows of it (the blocks' states as painted), and the legend above the plan.
+    const PlanAutomation& planAutomation() const { return *m_planAutomation; }
+    BlockLegend* blockLegend() const { return m_legend; }
+    // Places a locomotive dropped on a tile in the tile's block, facing the end nearer `point` (the page
+    // view's pixels); false (and the reason shown) when it was not placed.
+    bool placeDropped(int page, int tile, QPoint point, std::uint32_t locId);
 
 signals:
     // The pages shown were rebuilt (another railway, a reload, an opened folder).
@@ -148,6 +167,12 @@ private:
     QString memoryToolTip(std::int64_t route) const;
     void showBlock(model::TileRef tile, int block);
     QString graphToolTip(model::TileRef tile) const;
+    QString automationToolTip(model::TileRef tile) const;
+    BlockOutlines outlinesOf(int page, bool allBlocks) const;
+    bool fillTrainEntries(QMenu& menu, model::TileRef tile, bool filled);
+    void askToPlace(int block);
+    trackgraph::End endNearer(int page, int block, QPoint point) const;
+    void automationChanged();
     void showProblem(std::function<QString()> describe);
     static QString findingsText(const std::vector<cs2config::LayoutFinding>& findings);
     QString emptyPageText(int index) const;
@@ -182,6 +207,8 @@ private:
     ProblemBar* m_problem = nullptr;
     ProblemBar* m_drawingProblems = nullptr;
     BlockPopup* m_blockPopup = nullptr;
+    PlanAutomation* m_planAutomation = nullptr;
+    BlockLegend* m_legend = nullptr;
     LayoutStateBanner* m_layoutState = nullptr;
     QLabel* m_emptyText = nullptr;
     QTabWidget* m_tabs = nullptr;

@@ -3,6 +3,7 @@
 target_sources(stellwerk-core-tests PRIVATE
     automation/AutomationTestSupport.h
     automation/DispatcherTest.cpp
+    automation/PlaceInBlockTest.cpp
     automation/PathChoiceTest.cpp
     automation/ReservationsTest.cpp
     automation/ScheduleTest.cpp

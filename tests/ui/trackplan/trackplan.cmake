@@ -6,6 +6,7 @@ target_sources(stellwerk-ui-tests PRIVATE
     trackplan/PaintBandsTest.cpp
     trackplan/TileTagTest.cpp
     trackplan/TrackPlanBlockStatesTest.cpp
+    trackplan/TrackPlanAutomationTest.cpp
     trackplan/TrackPlanBlocksTest.cpp
     trackplan/TrackGraphDrawingTest.cpp
     trackplan/TrackPlanPanelTest.cpp
