@@ -1,9 +1,9 @@
 #include "AutoCommand.h"
 
 #include "automation/Automation.h"
-#include "automation/LayoutGraph.h"
 #include "automation/Placement.h"
 #include "automation/Schedule.h"
+#include "model/LayoutInUse.h"
 #include "model/Railway.h"
 #include "station/StartupSequence.h"
 
@@ -14,6 +14,7 @@
 #include <QObject>
 #include <QSaveFile>
 #include <QTimer>
+#include <algorithm>
 #include <memory>
 #include <ostream>
 
@@ -54,15 +55,12 @@ public:
 private:
     void stationRead(const station::StartupResult& result) {
         railway_->load(result);
-        if (!options_.layoutFolder.empty()) {
-            auto folder = automation::graphOfFolder(options_.layoutFolder);
-            if (!folder)
-                return fail("--layout: " + folder.error());
-            graph_ = std::make_unique<trackgraph::TrackGraph>(std::move(*folder));
-        } else {
-            graph_ = std::make_unique<trackgraph::TrackGraph>(automation::graphOf(result));
-        }
-        if (graph_->blocks().empty())
+        layout_.useStationDownload(result);
+        if (!options_.layoutFolder.empty())
+            if (const std::string problem = openFolder(); !problem.empty())
+                return fail("--layout: " + problem);
+        graph_ = layout_.graph();
+        if (!graph_ || graph_->blocks().empty())
             return fail("the track plan has no block to run trains in");
         railway_->go();
         QTimer::singleShot(5000, this, [this] {
@@ -75,6 +73,17 @@ private:
         });
         if (railway_->power() == station::PowerState::Running)
             startAutomation();
+    }
+
+    // --layout DIR as the layout in use instead of the station's download; why not, else empty.
+    std::string openFolder() {
+        if (std::string problem = layout_.open(options_.layoutFolder); !problem.empty())
+            return problem;
+        const std::vector<cs2config::TrackLayoutPage>& pages = layout_.files()->pages;
+        if (std::none_of(pages.begin(), pages.end(),
+                         [](const cs2config::TrackLayoutPage& page) { return page.loaded; }))
+            return "no page of the track plan in " + layout_.folder().string() + " could be read";
+        return {};
     }
 
     void startAutomation() {
@@ -204,7 +213,8 @@ private:
     std::ostream& err_;
     std::unique_ptr<model::Railway> railway_;
     std::unique_ptr<station::StartupSequence> startup_;
-    std::unique_ptr<trackgraph::TrackGraph> graph_;
+    model::LayoutInUse layout_; // the station's download, or --layout DIR
+    std::shared_ptr<const trackgraph::TrackGraph> graph_;
     std::unique_ptr<automation::Automation> automation_;
     bool ending_ = false;
     bool summarized_ = false;
