@@ -121,9 +121,11 @@ void Automation::accessoriesChanged(const QList<qint64>& ids) {
 void Automation::stateReportedChanged(bool reported) {
     if (!reported) {
         dispatcher_.stationLost();
+        carryOut(); // the events; no command is sent to a silent station
         return;
     }
     dispatcher_.occupancyRead(occupiedContacts());
+    dispatcher_.stationBack();
     carryOut();
 }
 

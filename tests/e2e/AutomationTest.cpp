@@ -268,9 +268,9 @@ TEST(Automation, ATurnoutNeverConfirmedKeepsTheTrainAndGivesItsWayBack) {
 }
 
 // The station goes away while the BR 218 runs: automation pauses and the train is stopped-unknown; when the
-// station is back and read again, nothing is sent by itself (the station keeps what it had: speed 500, as a
-// real one keeps its trains running) until the user resumes, which stops the train first. Then the run goes
-// on without accident.
+// station is back and read again, the train is told to stop (the station kept what it had: speed 500, as a
+// real one keeps its trains running) and nothing else is sent (no speed, no turnout) until the user resumes.
+// Then the run goes on without accident.
 TEST(Automation, WhenTheStationFallsSilentNothingIsSentUntilTheUserResumes) {
     AutomationRig rig;
     ASSERT_TRUE(rig.start({{Br218, 1, End::B}, {Ice, 4, End::B}}));
@@ -287,7 +287,7 @@ TEST(Automation, WhenTheStationFallsSilentNothingIsSentUntilTheUserResumes) {
                      [&](const can::CanFrame& frame) {
                          const cs2::DecodeResult decoded = cs2::decode(frame);
                          const auto* speed = decoded ? std::get_if<cs2::LocoSpeed>(&decoded->body) : nullptr;
-                         if ((speed && speed->speed) ||
+                         if ((speed && speed->speed.value_or(0) != 0) ||
                              (decoded && std::holds_alternative<cs2::AccessorySwitch>(decoded->body)))
                              received.push_back(can::formatDocument(frame));
                      });
@@ -301,7 +301,12 @@ TEST(Automation, WhenTheStationFallsSilentNothingIsSentUntilTheUserResumes) {
     }
     EXPECT_TRUE(received.empty()) << received.front();
     EXPECT_EQ(rig.automation->dispatcher().train(Br218)->state, TrainState::Unknown);
-    EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 500);
+    EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 0) << "told to stop when the station is back";
+    EXPECT_EQ(rig.rig.station.loco(Ice)->speed, 0);
+    const int arrived = rig.count(Kind::Arrived, Br218);
+    rig.run(std::chrono::seconds(5));
+    EXPECT_TRUE(received.empty()) << received.front();
+    EXPECT_EQ(rig.count(Kind::Arrived, Br218), arrived) << "nothing moves until resumed";
     rig.automation->resume();
     rig.settle();
     EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 0);
