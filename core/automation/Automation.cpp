@@ -47,6 +47,11 @@ Automation::Automation(model::Railway& railway, const trackgraph::TrackGraph& gr
                 commandSent(loco, int(control));
             });
     connect(&railway_, &model::Railway::locomotivesChanged, this, &Automation::locomotivesChanged);
+    connect(&railway_, &model::Railway::locomotiveCommandFailed, this,
+            [this](quint32 loco, model::Railway::LocomotiveControl control, int, const QString&) {
+                if (control == model::Railway::LocomotiveControl::Speed)
+                    speedFailed(loco);
+            });
 }
 
 Automation::~Automation() = default;
@@ -167,10 +172,25 @@ bool Automation::heardOwnCommand(std::uint32_t locId, const model::Locomotive& l
         return true;
     const auto heard = std::find(told.unheard.begin(), told.unheard.end(), int(loco.speed()));
     if (heard == told.unheard.end())
-        return loco.speed() == told.speed || loco.speed() == told.heard; // or a command of ours failed
+        return loco.speed() == told.speed;
     told.unheard.erase(told.unheard.begin(), heard + 1);
     told.heard = loco.speed();
     return true;
+}
+
+// A speed of ours the station did not confirm (the oldest one waiting): it keeps the last one it confirmed,
+// which is then ours to hear. Until then a confirmed speed that is neither one sent nor the last one sent
+// is somebody else's, even when it equals one confirmed before (another program stopping the train right
+// after it departed, both answers heard in one batch).
+void Automation::speedFailed(std::uint32_t locId) {
+    const auto found = told_.find(locId);
+    if (found == told_.end())
+        return;
+    Told& told = found->second;
+    if (!told.unheard.empty())
+        told.unheard.pop_front();
+    if (told.unheard.empty())
+        told.speed = told.heard;
 }
 
 // The locomotive turned the other way, as the automation tells it: the station stops it as well, so the

@@ -68,6 +68,7 @@ private:
     void commandSent(quint32 loco, int control);
     void locomotivesChanged(const QList<quint32>& ids);
     bool heardOwnCommand(std::uint32_t locId, const model::Locomotive& loco);
+    void speedFailed(std::uint32_t locId);
     void reverse(std::uint32_t locId);
     std::set<trackgraph::ContactKey> occupiedContacts();
     void carryOut();
