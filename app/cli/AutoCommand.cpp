@@ -5,7 +5,10 @@
 #include "automation/Schedule.h"
 #include "model/LayoutInUse.h"
 #include "model/Railway.h"
+#include "station/Liveness.h"
 #include "station/StartupSequence.h"
+#include "station/StationSession.h"
+#include "transport/Transport.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -62,6 +65,7 @@ private:
         graph_ = layout_.graph();
         if (!graph_ || graph_->blocks().empty())
             return fail("the track plan has no block to run trains in");
+        watchStation();
         railway_->go();
         QTimer::singleShot(5000, this, [this] {
             if (!automation_)
@@ -73,6 +77,37 @@ private:
         });
         if (railway_->power() == station::PowerState::Running)
             startAutomation();
+    }
+
+    // The station's silence is noticed within seconds (pings), and when it answers again, or the connection
+    // is made again, its state is read once more (the start-up) before the automation hears it is back.
+    void watchStation() {
+        station::Liveness& liveness = client_.session().liveness();
+        connect(&liveness, &station::Liveness::stationRecovered, this, &AutoRun::readAgain);
+        connect(&liveness, &station::Liveness::stationSilent, this, [this] { rereading_ = false; });
+        connect(&client_.transport(), &transport::Transport::stateChanged, this,
+                [this](transport::Transport::State state) {
+                    rereading_ = rereading_ && state == transport::Transport::State::Connected;
+                    if (state == transport::Transport::State::Connected)
+                        readAgain();
+                });
+        liveness.start();
+    }
+
+    void readAgain() {
+        if (!automation_ || ending_ || rereading_ || railway_->isStateReported())
+            return;
+        rereading_ = true;
+        startup_.release()->deleteLater(); // finished or abandoned; it may be the sender of this signal
+        station::StartupOptions startupOptions;
+        startupOptions.readStatusData = false;
+        startup_ = std::make_unique<station::StartupSequence>(client_.session(), startupOptions);
+        connect(startup_.get(), &station::StartupSequence::ready, this,
+                [this](const station::StartupResult& result) {
+                    rereading_ = false;
+                    railway_->load(result); // reported again unless the station fell silent meanwhile
+                });
+        startup_->start();
     }
 
     // --layout DIR as the layout in use instead of the station's download; why not, else empty.
@@ -217,6 +252,7 @@ private:
     std::shared_ptr<const trackgraph::TrackGraph> graph_;
     std::unique_ptr<automation::Automation> automation_;
     bool ending_ = false;
+    bool rereading_ = false; // the start-up runs again after the station came back
     bool summarized_ = false;
     int stopsAwaited_ = 0;
 };
