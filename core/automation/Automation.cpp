@@ -47,6 +47,7 @@ Automation::Automation(model::Railway& railway, const trackgraph::TrackGraph& gr
                 commandSent(loco, int(control));
             });
     connect(&railway_, &model::Railway::locomotivesChanged, this, &Automation::locomotivesChanged);
+    connect(&railway_, &model::Railway::stateCorrected, this, &Automation::corrected);
     connect(&railway_, &model::Railway::locomotiveCommandFailed, this,
             [this](quint32 loco, model::Railway::LocomotiveControl control, int, const QString&) {
                 if (control == model::Railway::LocomotiveControl::Speed)
@@ -140,6 +141,11 @@ void Automation::commandSent(quint32 loco, int control) {
     using Control = model::Railway::LocomotiveControl;
     if (commanding_ || control == int(Control::Function))
         return;
+    if (const auto correction = correcting_.find({loco, control}); correction != correcting_.end()) {
+        if (--correction->second == 0)
+            correcting_.erase(correction);
+        return;
+    }
     const Train* train = dispatcher_.train(loco);
     if (!train || train->mode != TrainMode::Automatic)
         return;
@@ -153,7 +159,15 @@ void Automation::locomotivesChanged(const QList<quint32>& ids) {
     for (const quint32 id : ids) {
         const Train* train = dispatcher_.train(id);
         const model::Locomotive* loco = railway_.locomotive(id);
-        if (!train || !loco || train->mode != TrainMode::Automatic || heardOwnCommand(id, *loco))
+        if (!train || !loco || train->mode != TrainMode::Automatic)
+            continue;
+        if (train->state == TrainState::Unknown || train->state == TrainState::Lost) {
+            // What the station says after an outage is where things stand (a station started again has
+            // forgotten every speed), not another controller; it is what to hear from now on.
+            told_[id] = Told{{}, loco->speed(), loco->speed(), loco->direction(), std::nullopt};
+            continue;
+        }
+        if (heardOwnCommand(id, *loco))
             continue;
         dispatcher_.takenByHand(id, "another controller");
     }
@@ -176,6 +190,25 @@ bool Automation::heardOwnCommand(std::uint32_t locId, const model::Locomotive& l
     told.unheard.erase(told.unheard.begin(), heard + 1);
     told.heard = loco.speed();
     return true;
+}
+
+// The railway brings a locomotive back to what the station last confirmed after a command it did not
+// confirm (announced just before it is sent): the command that follows is the railway's, not a person's
+// throttle, and the speed it sends is one to hear back.
+void Automation::corrected(const model::Correction& correction) {
+    using Kind = model::CommandTarget::Kind;
+    using Control = model::Railway::LocomotiveControl;
+    if (!correction.sentValue ||
+        (correction.target.kind != Kind::Speed && correction.target.kind != Kind::Direction))
+        return;
+    const auto locId = std::uint32_t(correction.target.id);
+    const bool speed = correction.target.kind == Kind::Speed;
+    ++correcting_[{locId, int(speed ? Control::Speed : Control::Direction)}];
+    if (!speed || !told_.contains(locId))
+        return;
+    Told& told = told_[locId];
+    told.speed = *correction.sentValue;
+    told.unheard.push_back(*correction.sentValue);
 }
 
 // A speed of ours the station did not confirm (the oldest one waiting): it keeps the last one it confirmed,

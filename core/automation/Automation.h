@@ -16,6 +16,7 @@
 namespace stellwerk::model {
 class Locomotive;
 class Railway;
+struct Correction;
 } // namespace stellwerk::model
 
 namespace stellwerk::automation {
@@ -69,6 +70,7 @@ private:
     void locomotivesChanged(const QList<quint32>& ids);
     bool heardOwnCommand(std::uint32_t locId, const model::Locomotive& loco);
     void speedFailed(std::uint32_t locId);
+    void corrected(const model::Correction& correction);
     void reverse(std::uint32_t locId);
     std::set<trackgraph::ContactKey> occupiedContacts();
     void carryOut();
@@ -91,6 +93,8 @@ private:
     };
     std::map<std::uint32_t, Told> told_;
     bool commanding_ = false; // the railway's locomotive commands now are this automation's
+    // Corrections the railway announced and has not sent yet, per locomotive and control.
+    std::map<std::pair<std::uint32_t, int>, int> correcting_;
 };
 
 } // namespace stellwerk::automation
