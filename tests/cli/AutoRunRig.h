@@ -88,17 +88,27 @@ public:
             3000);
         return speed;
     }
-    // Speed commands above 0 for the locomotive (not answers) heard since `sinceMs` on this one's clock.
-    int speedsAboveZero(std::uint32_t loco, qint64 sinceMs = 0) const {
+    // Speed commands above 0 for the locomotive (not answers) heard at all.
+    int speedsAboveZero(std::uint32_t loco) const {
         int count = 0;
         for (const Heard& heard : heard_)
-            if (const auto* speed = std::get_if<cs2::LocoSpeed>(&heard.message.body);
-                speed && !heard.message.response && heard.atMs >= sinceMs && speed->loco.value() == loco &&
-                speed->speed.value_or(0) > 0)
-                ++count;
+            count += isSpeed(heard, loco, false, -1);
         return count;
     }
-    qint64 nowMs() const { return clock_.elapsed(); }
+    // Where the frames heard so far end: a mark for speedsAboveZeroAfterStop().
+    std::size_t mark() const { return heard_.size(); }
+    // Speed commands above 0 for the locomotive (not answers) after the station's first answer of speed 0
+    // to it since `mark`: frames reach the station in the order they were sent, so a command sent before
+    // the stop and heard here late is not counted, one sent after it is.
+    int speedsAboveZeroAfterStop(std::uint32_t loco, std::size_t mark = 0) const {
+        std::size_t from = mark;
+        while (from < heard_.size() && !isSpeed(heard_[from], loco, true, 0))
+            ++from;
+        int count = 0;
+        for (std::size_t i = from; i < heard_.size(); ++i)
+            count += isSpeed(heard_[i], loco, false, -1);
+        return count;
+    }
     // Every speed frame heard, for a failure's message.
     std::string speedsHeard() const {
         std::string text;
@@ -111,6 +121,14 @@ public:
     }
 
 private:
+    // A speed frame for the locomotive: an answer of `speed`, or (answer false) a command above 0.
+    static bool isSpeed(const Heard& heard, std::uint32_t loco, bool answer, int speed) {
+        const auto* frame = std::get_if<cs2::LocoSpeed>(&heard.message.body);
+        if (!frame || !frame->speed || frame->loco.value() != loco || heard.message.response != answer)
+            return false;
+        return answer ? *frame->speed == speed : *frame->speed > 0;
+    }
+
     void read() {
         std::vector<can::CanFrame> frames;
         assembler_.feed(transport::asBytes(socket_.readAll()), frames);
