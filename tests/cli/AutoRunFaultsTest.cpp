@@ -10,6 +10,7 @@
 
 #include <QRegularExpression>
 #include <QTest>
+#include <functional>
 #include <gtest/gtest.h>
 #include <iostream>
 #include <map>
@@ -52,13 +53,15 @@ private:
     support::SimProgram sim_;
 };
 
-// Between the program and the station: passes everything on but the station's answers to the commands for
-// turnout 2, as a gateway that loses them would. The station switches, the program never hears it did.
-class AccessoryAnswerEater : public QObject {
+// Between the program and the station: passes everything on but the station's frames that `eats` takes,
+// as a gateway or a wire that loses them would. The station acts on the commands; the program never hears
+// their answers.
+class FrameEater : public QObject {
 public:
-    explicit AccessoryAnswerEater(std::uint16_t stationPort) : stationPort_(stationPort) {
+    FrameEater(std::uint16_t stationPort, std::function<bool(const cs2::Message&)> eats)
+        : stationPort_(stationPort), eats_(std::move(eats)) {
         server_.listen(QHostAddress::LocalHost, 0);
-        connect(&server_, &QTcpServer::newConnection, this, &AccessoryAnswerEater::accept);
+        connect(&server_, &QTcpServer::newConnection, this, &FrameEater::accept);
     }
     std::uint16_t port() const { return server_.serverPort(); }
     int eaten() const { return eaten_; }
@@ -80,8 +83,7 @@ private:
         assembler.feed(transport::asBytes(bytes), frames);
         for (const can::CanFrame& frame : frames) {
             const cs2::DecodeResult decoded = cs2::decode(frame);
-            const auto* switching = decoded ? std::get_if<cs2::AccessorySwitch>(&decoded->body) : nullptr;
-            if (switching && decoded->response && switching->article.value() == 0x3001)
+            if (decoded && eats_(*decoded))
                 ++eaten_;
             else
                 passed.push_back(frame);
@@ -90,9 +92,23 @@ private:
     }
 
     std::uint16_t stationPort_;
+    std::function<bool(const cs2::Message&)> eats_;
     QTcpServer server_;
     int eaten_ = 0;
 };
+
+// The station's answers to the commands for turnout 2.
+bool turnout2Answer(const cs2::Message& message) {
+    const auto* switching = std::get_if<cs2::AccessorySwitch>(&message.body);
+    return switching && message.response && switching->article.value() == 0x3001;
+}
+
+// The station's reports of contacts 8 (Ausfahrt Ost) and 3 (Block 1): dead contacts.
+bool deadContactReport(const cs2::Message& message) {
+    const auto* report = std::get_if<cs2::S88Event>(&message.body);
+    return report && message.response && report->device == 0 &&
+           (report->contact == 8 || report->contact == 3);
+}
 
 // The station's speed of every train, asked until all are 0 (true) or the time is up.
 bool allStand(BusNeighbour& neighbour, const std::vector<std::uint32_t>& trains, int timeoutMs = 5000) {
@@ -236,7 +252,7 @@ TEST(AutoRunFaults, ATurnoutNeverConfirmedKeepsTheTrainAndGivesItsWayBack) {
     ensureApplication();
     DemoStation station(DemoTrains);
     ASSERT_NE(station.port(), 0) << station.program().output().toStdString();
-    AccessoryAnswerEater eater(station.port());
+    FrameEater eater(station.port(), turnout2Answer);
     BusNeighbour neighbour;
     ASSERT_TRUE(neighbour.connectTo(station.port()));
     AutoRunProcess run;
@@ -255,6 +271,32 @@ TEST(AutoRunFaults, ATurnoutNeverConfirmedKeepsTheTrainAndGivesItsWayBack) {
     run.interrupt();
     EXPECT_EQ(run.ended(), 1) << run.log();
     EXPECT_GE(run.summary()["faults"].toInt(), 1) << run.log();
+    EXPECT_EQ(station.accidents(), 0) << station.program().output().toStdString();
+}
+
+// The contacts of Ausfahrt Ost and Block 1 are dead (their reports never reach the program): the BR 218,
+// on its way to Block 1 over Ausfahrt Ost, is never seen arriving; in the time its speed and the distance
+// give it is lost: stopped, and the program says to place it again.
+TEST(AutoRunFaults, ATrainNotSeenArrivingInTimeIsLostAndStopped) {
+    ensureApplication();
+    DemoStation station(OneTrain);
+    ASSERT_NE(station.port(), 0) << station.program().output().toStdString();
+    FrameEater eater(station.port(), deadContactReport);
+    BusNeighbour neighbour;
+    ASSERT_TRUE(neighbour.connectTo(station.port()));
+    AutoRunProcess run;
+    run.start(eater.port(), OneTrain + QStringList{"--seconds", "60"});
+    ASSERT_TRUE(run.waitForEvent("departed", loc(Br218))) << run.log();
+    const std::size_t departedMark = neighbour.mark();
+    ASSERT_TRUE(run.waitForEvent("lost", loc(Br218), 30000)) << run.log();
+    EXPECT_TRUE(
+        run.waitFor([](const QJsonObject& e) { return e["text"].toString().contains("place it again"); }));
+    EXPECT_TRUE(allStand(neighbour, {Br218}));
+    EXPECT_GT(eater.eaten(), 0);
+    run.interrupt();
+    EXPECT_EQ(run.ended(), 1) << run.log();
+    EXPECT_EQ(neighbour.speedsAboveZeroAfterStop(Br218, departedMark), 0) << neighbour.speedsHeard();
+    EXPECT_EQ(run.summary()["faults"].toInt(), 1) << run.log();
     EXPECT_EQ(station.accidents(), 0) << station.program().output().toStdString();
 }
 
