@@ -48,10 +48,15 @@ Automation::Automation(model::Railway& railway, const trackgraph::TrackGraph& gr
             });
     connect(&railway_, &model::Railway::locomotivesChanged, this, &Automation::locomotivesChanged);
     connect(&railway_, &model::Railway::stateCorrected, this, &Automation::corrected);
+    connect(&railway_, &model::Railway::locomotiveCommandAcknowledged, this,
+            [this](quint32 loco, model::Railway::LocomotiveControl control, int) {
+                if (control == model::Railway::LocomotiveControl::Speed)
+                    speedAnswered(loco, true);
+            });
     connect(&railway_, &model::Railway::locomotiveCommandFailed, this,
             [this](quint32 loco, model::Railway::LocomotiveControl control, int, const QString&) {
                 if (control == model::Railway::LocomotiveControl::Speed)
-                    speedFailed(loco);
+                    speedAnswered(loco, false);
             });
 }
 
@@ -139,6 +144,8 @@ void Automation::stateReportedChanged(bool reported) {
 // the automation's own.
 void Automation::commandSent(quint32 loco, int control) {
     using Control = model::Railway::LocomotiveControl;
+    if (commanding_ && control == int(Control::Speed))
+        told_[loco].unheard.push_back(told_[loco].speed); // sent: its answer is to come
     if (commanding_ || control == int(Control::Function))
         return;
     if (const auto correction = correcting_.find({loco, control}); correction != correcting_.end()) {
@@ -211,23 +218,24 @@ void Automation::corrected(const model::Correction& correction) {
     told.unheard.push_back(*correction.sentValue);
 }
 
-// A speed of ours the station did not confirm (the oldest one waiting): it keeps the last one it confirmed,
-// which is then ours to hear. Until then a confirmed speed that is neither one sent nor the last one sent
-// is somebody else's, even when it equals one confirmed before (another program stopping the train right
-// after it departed, both answers heard in one batch).
-void Automation::speedFailed(std::uint32_t locId) {
+// The station's answer to the oldest speed command waiting for one: confirmed, it is the speed it has
+// now; not confirmed, it keeps the last one it confirmed, which is then ours to hear. A confirmed speed
+// that is neither one still waiting nor the last one sent is somebody else's, even when it equals one
+// sent long ago (another program stopping the train right after it departed, both answers in one batch).
+void Automation::speedAnswered(std::uint32_t locId, bool confirmed) {
     const auto found = told_.find(locId);
-    if (found == told_.end())
+    if (found == told_.end() || found->second.unheard.empty())
         return;
     Told& told = found->second;
-    if (!told.unheard.empty())
-        told.unheard.pop_front();
-    if (told.unheard.empty())
+    if (confirmed)
+        told.heard = told.unheard.front();
+    told.unheard.pop_front();
+    if (!confirmed && told.unheard.empty())
         told.speed = told.heard;
 }
 
 // The locomotive turned the other way, as the automation tells it: the station stops it as well, so the
-// speed to hear is 0.
+// speed to hear is 0 (no speed command of ours waits for that answer).
 void Automation::reverse(std::uint32_t locId) {
     const model::Locomotive* loco = railway_.locomotive(locId);
     if (!loco)
@@ -237,7 +245,6 @@ void Automation::reverse(std::uint32_t locId) {
     told.direction =
         loco->direction() == cs2::Direction::Forward ? cs2::Direction::Backward : cs2::Direction::Forward;
     told.speed = 0;
-    told.unheard.push_back(0);
     commanding_ = true;
     railway_.setDirection(locId, *told.direction);
     commanding_ = false;
@@ -263,9 +270,6 @@ void Automation::carryOut() {
         case DriveCommand::Kind::Speed: {
             Told& told = told_[command.locId];
             told.speed = command.speed;
-            told.unheard.push_back(command.speed);
-            if (told.unheard.size() > 8)
-                told.unheard.pop_front();
             commanding_ = true;
             railway_.setSpeed(command.locId, command.speed);
             commanding_ = false;

@@ -69,7 +69,7 @@ private:
     void commandSent(quint32 loco, int control);
     void locomotivesChanged(const QList<quint32>& ids);
     bool heardOwnCommand(std::uint32_t locId, const model::Locomotive& loco);
-    void speedFailed(std::uint32_t locId);
+    void speedAnswered(std::uint32_t locId, bool confirmed);
     void corrected(const model::Correction& correction);
     void reverse(std::uint32_t locId);
     std::set<trackgraph::ContactKey> occupiedContacts();
@@ -85,7 +85,7 @@ private:
     // the last one heard, the direction. A change heard on the bus that is none of them is another
     // controller's.
     struct Told {
-        std::deque<int> unheard;
+        std::deque<int> unheard; // in the order sent; each leaves with the station's answer to it
         int speed = 0;
         int heard = 0; // the last of them the station confirmed
         std::optional<cs2::Direction> direction;
