@@ -12,9 +12,9 @@
 //   build/bench/stellwerk-automation-soak [--minutes 60] [--restart-every 10] [--trials 200]
 
 #include "automation/Automation.h"
-#include "automation/LayoutGraph.h"
 #include "automation/Schedule.h"
 #include "cs2/Codec.h"
+#include "model/LayoutInUse.h"
 #include "model/Railway.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
@@ -115,7 +115,8 @@ public:
         railway_->go();
         if (!waitFor([&] { return railway_->power() == station::PowerState::Running; }))
             return false;
-        graph_ = std::make_unique<trackgraph::TrackGraph>(automation::graphOf(startup_->result()));
+        layout_.useStationDownload(startup_->result());
+        graph_ = layout_.graph();
         automation::Dispatcher::Options options;
         options.dwell = 1000;
         automation_ = std::make_unique<automation::Automation>(*railway_, *graph_, options);
@@ -272,7 +273,8 @@ private:
     std::unique_ptr<station::StationSession> session_;
     std::unique_ptr<model::Railway> railway_;
     std::unique_ptr<station::StartupSequence> startup_;
-    std::unique_ptr<trackgraph::TrackGraph> graph_;
+    model::LayoutInUse layout_;
+    std::shared_ptr<const trackgraph::TrackGraph> graph_;
     std::unique_ptr<automation::Automation> automation_;
     automation::Millis now_ = 0;
     int inFlight_ = 0;

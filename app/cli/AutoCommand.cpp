@@ -1,11 +1,14 @@
 #include "AutoCommand.h"
 
 #include "automation/Automation.h"
-#include "automation/LayoutGraph.h"
 #include "automation/Placement.h"
 #include "automation/Schedule.h"
+#include "model/LayoutInUse.h"
 #include "model/Railway.h"
+#include "station/Liveness.h"
 #include "station/StartupSequence.h"
+#include "station/StationSession.h"
+#include "transport/Transport.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -14,6 +17,7 @@
 #include <QObject>
 #include <QSaveFile>
 #include <QTimer>
+#include <algorithm>
 #include <memory>
 #include <ostream>
 
@@ -54,16 +58,14 @@ public:
 private:
     void stationRead(const station::StartupResult& result) {
         railway_->load(result);
-        if (!options_.layoutFolder.empty()) {
-            auto folder = automation::graphOfFolder(options_.layoutFolder);
-            if (!folder)
-                return fail("--layout: " + folder.error());
-            graph_ = std::make_unique<trackgraph::TrackGraph>(std::move(*folder));
-        } else {
-            graph_ = std::make_unique<trackgraph::TrackGraph>(automation::graphOf(result));
-        }
-        if (graph_->blocks().empty())
+        layout_.useStationDownload(result);
+        if (!options_.layoutFolder.empty())
+            if (const std::string problem = openFolder(); !problem.empty())
+                return fail("--layout: " + problem);
+        graph_ = layout_.graph();
+        if (!graph_ || graph_->blocks().empty())
             return fail("the track plan has no block to run trains in");
+        watchStation();
         railway_->go();
         QTimer::singleShot(5000, this, [this] {
             if (!automation_)
@@ -75,6 +77,48 @@ private:
         });
         if (railway_->power() == station::PowerState::Running)
             startAutomation();
+    }
+
+    // The station's silence is noticed within seconds (pings), and when it answers again, or the connection
+    // is made again, its state is read once more (the start-up) before the automation hears it is back.
+    void watchStation() {
+        station::Liveness& liveness = client_.session().liveness();
+        connect(&liveness, &station::Liveness::stationRecovered, this, &AutoRun::readAgain);
+        connect(&liveness, &station::Liveness::stationSilent, this, [this] { rereading_ = false; });
+        connect(&client_.transport(), &transport::Transport::stateChanged, this,
+                [this](transport::Transport::State state) {
+                    rereading_ = rereading_ && state == transport::Transport::State::Connected;
+                    if (state == transport::Transport::State::Connected)
+                        readAgain();
+                });
+        liveness.start();
+    }
+
+    void readAgain() {
+        if (!automation_ || ending_ || rereading_ || railway_->isStateReported())
+            return;
+        rereading_ = true;
+        startup_.release()->deleteLater(); // finished or abandoned; it may be the sender of this signal
+        station::StartupOptions startupOptions;
+        startupOptions.readStatusData = false;
+        startup_ = std::make_unique<station::StartupSequence>(client_.session(), startupOptions);
+        connect(startup_.get(), &station::StartupSequence::ready, this,
+                [this](const station::StartupResult& result) {
+                    rereading_ = false;
+                    railway_->load(result); // reported again unless the station fell silent meanwhile
+                });
+        startup_->start();
+    }
+
+    // --layout DIR as the layout in use instead of the station's download; why not, else empty.
+    std::string openFolder() {
+        if (std::string problem = layout_.open(options_.layoutFolder); !problem.empty())
+            return problem;
+        const std::vector<cs2config::TrackLayoutPage>& pages = layout_.files()->pages;
+        if (std::none_of(pages.begin(), pages.end(),
+                         [](const cs2config::TrackLayoutPage& page) { return page.loaded; }))
+            return "no page of the track plan in " + layout_.folder().string() + " could be read";
+        return {};
     }
 
     void startAutomation() {
@@ -204,9 +248,11 @@ private:
     std::ostream& err_;
     std::unique_ptr<model::Railway> railway_;
     std::unique_ptr<station::StartupSequence> startup_;
-    std::unique_ptr<trackgraph::TrackGraph> graph_;
+    model::LayoutInUse layout_; // the station's download, or --layout DIR
+    std::shared_ptr<const trackgraph::TrackGraph> graph_;
     std::unique_ptr<automation::Automation> automation_;
     bool ending_ = false;
+    bool rereading_ = false; // the start-up runs again after the station came back
     bool summarized_ = false;
     int stopsAwaited_ = 0;
 };

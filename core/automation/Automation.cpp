@@ -47,6 +47,17 @@ Automation::Automation(model::Railway& railway, const trackgraph::TrackGraph& gr
                 commandSent(loco, int(control));
             });
     connect(&railway_, &model::Railway::locomotivesChanged, this, &Automation::locomotivesChanged);
+    connect(&railway_, &model::Railway::stateCorrected, this, &Automation::corrected);
+    connect(&railway_, &model::Railway::locomotiveCommandAcknowledged, this,
+            [this](quint32 loco, model::Railway::LocomotiveControl control, int) {
+                if (control == model::Railway::LocomotiveControl::Speed)
+                    speedAnswered(loco, true);
+            });
+    connect(&railway_, &model::Railway::locomotiveCommandFailed, this,
+            [this](quint32 loco, model::Railway::LocomotiveControl control, int, const QString&) {
+                if (control == model::Railway::LocomotiveControl::Speed)
+                    speedAnswered(loco, false);
+            });
 }
 
 Automation::~Automation() = default;
@@ -140,9 +151,11 @@ void Automation::accessoriesChanged(const QList<qint64>& ids) {
 void Automation::stateReportedChanged(bool reported) {
     if (!reported) {
         dispatcher_.stationLost();
+        carryOut(); // the events; no command is sent to a silent station
         return;
     }
     dispatcher_.occupancyRead(occupiedContacts());
+    dispatcher_.stationBack();
     carryOut();
 }
 
@@ -150,8 +163,15 @@ void Automation::stateReportedChanged(bool reported) {
 // the automation's own.
 void Automation::commandSent(quint32 loco, int control) {
     using Control = model::Railway::LocomotiveControl;
+    if (commanding_ && control == int(Control::Speed))
+        told_[loco].unheard.push_back(told_[loco].speed); // sent: its answer is to come
     if (commanding_ || control == int(Control::Function))
         return;
+    if (const auto correction = correcting_.find({loco, control}); correction != correcting_.end()) {
+        if (--correction->second == 0)
+            correcting_.erase(correction);
+        return;
+    }
     const Train* train = dispatcher_.train(loco);
     if (!train || train->mode != TrainMode::Automatic)
         return;
@@ -165,7 +185,15 @@ void Automation::locomotivesChanged(const QList<quint32>& ids) {
     for (const quint32 id : ids) {
         const Train* train = dispatcher_.train(id);
         const model::Locomotive* loco = railway_.locomotive(id);
-        if (!train || !loco || train->mode != TrainMode::Automatic || heardOwnCommand(id, *loco))
+        if (!train || !loco || train->mode != TrainMode::Automatic)
+            continue;
+        if (train->state == TrainState::Unknown || train->state == TrainState::Lost) {
+            // What the station says after an outage is where things stand (a station started again has
+            // forgotten every speed), not another controller; it is what to hear from now on.
+            told_[id] = Told{{}, loco->speed(), loco->speed(), loco->direction(), std::nullopt};
+            continue;
+        }
+        if (heardOwnCommand(id, *loco))
             continue;
         dispatcher_.takenByHand(id, "another controller");
     }
@@ -184,14 +212,49 @@ bool Automation::heardOwnCommand(std::uint32_t locId, const model::Locomotive& l
         return true;
     const auto heard = std::find(told.unheard.begin(), told.unheard.end(), int(loco.speed()));
     if (heard == told.unheard.end())
-        return loco.speed() == told.speed || loco.speed() == told.heard; // or a command of ours failed
+        return loco.speed() == told.speed;
     told.unheard.erase(told.unheard.begin(), heard + 1);
     told.heard = loco.speed();
     return true;
 }
 
+// The railway brings a locomotive back to what the station last confirmed after a command it did not
+// confirm (announced just before it is sent): the command that follows is the railway's, not a person's
+// throttle, and the speed it sends is one to hear back.
+void Automation::corrected(const model::Correction& correction) {
+    using Kind = model::CommandTarget::Kind;
+    using Control = model::Railway::LocomotiveControl;
+    if (!correction.sentValue ||
+        (correction.target.kind != Kind::Speed && correction.target.kind != Kind::Direction))
+        return;
+    const auto locId = std::uint32_t(correction.target.id);
+    const bool speed = correction.target.kind == Kind::Speed;
+    ++correcting_[{locId, int(speed ? Control::Speed : Control::Direction)}];
+    if (!speed || !told_.contains(locId))
+        return;
+    Told& told = told_[locId];
+    told.speed = *correction.sentValue;
+    told.unheard.push_back(*correction.sentValue);
+}
+
+// The station's answer to the oldest speed command waiting for one: confirmed, it is the speed it has
+// now; not confirmed, it keeps the last one it confirmed, which is then ours to hear. A confirmed speed
+// that is neither one still waiting nor the last one sent is somebody else's, even when it equals one
+// sent long ago (another program stopping the train right after it departed, both answers in one batch).
+void Automation::speedAnswered(std::uint32_t locId, bool confirmed) {
+    const auto found = told_.find(locId);
+    if (found == told_.end() || found->second.unheard.empty())
+        return;
+    Told& told = found->second;
+    if (confirmed)
+        told.heard = told.unheard.front();
+    told.unheard.pop_front();
+    if (!confirmed && told.unheard.empty())
+        told.speed = told.heard;
+}
+
 // The locomotive turned the other way, as the automation tells it: the station stops it as well, so the
-// speed to hear is 0.
+// speed to hear is 0 (no speed command of ours waits for that answer).
 void Automation::reverse(std::uint32_t locId) {
     const model::Locomotive* loco = railway_.locomotive(locId);
     if (!loco)
@@ -201,7 +264,6 @@ void Automation::reverse(std::uint32_t locId) {
     told.direction =
         loco->direction() == cs2::Direction::Forward ? cs2::Direction::Backward : cs2::Direction::Forward;
     told.speed = 0;
-    told.unheard.push_back(0);
     commanding_ = true;
     railway_.setDirection(locId, *told.direction);
     commanding_ = false;
@@ -227,9 +289,6 @@ void Automation::carryOut() {
         case DriveCommand::Kind::Speed: {
             Told& told = told_[command.locId];
             told.speed = command.speed;
-            told.unheard.push_back(command.speed);
-            if (told.unheard.size() > 8)
-                told.unheard.pop_front();
             commanding_ = true;
             railway_.setSpeed(command.locId, command.speed);
             commanding_ = false;

@@ -16,6 +16,7 @@
 namespace stellwerk::model {
 class Locomotive;
 class Railway;
+struct Correction;
 } // namespace stellwerk::model
 
 namespace stellwerk::automation {
@@ -73,6 +74,8 @@ private:
     void commandSent(quint32 loco, int control);
     void locomotivesChanged(const QList<quint32>& ids);
     bool heardOwnCommand(std::uint32_t locId, const model::Locomotive& loco);
+    void speedAnswered(std::uint32_t locId, bool confirmed);
+    void corrected(const model::Correction& correction);
     void reverse(std::uint32_t locId);
     std::set<trackgraph::ContactKey> occupiedContacts();
     std::string trainName(std::uint32_t locId) const;
@@ -88,7 +91,7 @@ private:
     // the last one heard, the direction. A change heard on the bus that is none of them is another
     // controller's.
     struct Told {
-        std::deque<int> unheard;
+        std::deque<int> unheard; // in the order sent; each leaves with the station's answer to it
         int speed = 0;
         int heard = 0; // the last of them the station confirmed
         std::optional<cs2::Direction> direction;
@@ -96,6 +99,8 @@ private:
     };
     std::map<std::uint32_t, Told> told_;
     bool commanding_ = false; // the railway's locomotive commands now are this automation's
+    // Corrections the railway announced and has not sent yet, per locomotive and control.
+    std::map<std::pair<std::uint32_t, int>, int> correcting_;
 };
 
 } // namespace stellwerk::automation

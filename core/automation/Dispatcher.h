@@ -78,8 +78,13 @@ public:
     // STOP (or track power off): every automatic train stops, and nothing starts again until resume().
     void halt(const std::string& why);
     // The station went silent: nothing can be sent; every automatic train is stopped as far as anyone
-    // knows (Unknown). When it is back, occupancyRead() first; trains stay stopped until resume().
+    // knows (Unknown). When it is back, occupancyRead() first, then stationBack(); trains stay stopped
+    // until resume().
     void stationLost();
+    // The station answers again: every train that was driven when it fell silent is told to stop (the
+    // station may have kept it running: a stop is the one command that is safe whatever it did meanwhile;
+    // nothing given up is sent again), and stays stopped-unknown until resume().
+    void stationBack();
     void resume(Millis now);
     // The end of a run: every automatic train stopped, every reservation but the track it stands on given
     // back.

@@ -346,9 +346,22 @@ void Dispatcher::stationLost() {
         if (tracking_.blockOccupied(tracking_.body(locId)->frontBlock))
             mustBeSeen_.insert(locId);
         train.state = TrainState::Unknown;
+        event(AutomationEvent::Kind::Stopped, locId, tracking_.body(locId)->frontBlock,
+              train.name + " is stopped-unknown: the station does not answer, automation is paused");
     }
     for (auto& [locId, journey] : journeys_)
         journey.pending.clear();
+}
+
+void Dispatcher::stationBack() {
+    for (auto& [locId, train] : trains_) {
+        if (train.mode != TrainMode::Automatic || train.state != TrainState::Unknown)
+            continue;
+        command(DriveCommand::speedOf(locId, 0));
+        event(AutomationEvent::Kind::Stopped, locId, tracking_.body(locId)->frontBlock,
+              train.name +
+                  " is told to stop: the station answers again; it stays until automation is resumed");
+    }
 }
 
 void Dispatcher::resume(Millis now) {

@@ -9,8 +9,6 @@ target_sources(stellwerk-automation PRIVATE
     automation/Dispatcher.cpp
     automation/Dispatcher.h
     automation/DispatcherDriving.cpp
-    automation/LayoutGraph.cpp
-    automation/LayoutGraph.h
     automation/Path.h
     automation/PathChoice.cpp
     automation/PathChoice.h

@@ -2,13 +2,14 @@
 
 // Automatic trains on the simulated CS2, end to end: the station with its trains (sim::TrainMovement, its
 // clock run by the test) behind a real TCP socket, and the app's side as a program holds it (session,
-// start-up, Railway, Automation on the track graph of the downloaded plan). Simulated time runs in 50 ms
-// steps; after each step the rig waits until the railway has heard every contact the simulator changed
-// and the station has answered every command, so a run is as fast as the machine and as exact as the step.
+// start-up, Railway, Automation on the track graph of the layout in use: the downloaded plan). Simulated time
+// runs in 50 ms steps; after each step the rig waits until the railway has heard every contact the simulator
+// changed and the station has answered every command, so a run is as fast as the machine and as exact as the
+// step.
 
 #include "E2eSupport.h"
 #include "automation/Automation.h"
-#include "automation/LayoutGraph.h"
+#include "model/LayoutInUse.h"
 #include "model/Railway.h"
 #include "sim/TrainMovement.h"
 #include "station/StartupSequence.h"
@@ -46,7 +47,8 @@ public:
         railway->go();
         if (!waitFor([&] { return railway->power() == station::PowerState::Running; }))
             return false;
-        graph = std::make_unique<trackgraph::TrackGraph>(automation::graphOf(startup->result()));
+        layout.useStationDownload(startup->result());
+        graph = layout.graph();
         automation = std::make_unique<automation::Automation>(*railway, *graph, options);
         automation->setClock([this] { return now; });
         QObject::connect(automation.get(), &automation::Automation::happened,
@@ -129,7 +131,8 @@ public:
     std::unique_ptr<sim::TrainMovement> movement;
     std::unique_ptr<model::Railway> railway;
     std::unique_ptr<station::StartupSequence> startup;
-    std::unique_ptr<trackgraph::TrackGraph> graph;
+    model::LayoutInUse layout; // the station's download, as the program holds it
+    std::shared_ptr<const trackgraph::TrackGraph> graph;
     std::unique_ptr<automation::Automation> automation;
     std::vector<automation::AutomationEvent> events;
     std::vector<std::string> accidents;

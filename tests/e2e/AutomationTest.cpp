@@ -154,6 +154,39 @@ TEST(Automation, AnotherControllerDrivingAnAutomaticTrainMakesItManualUntilHande
     EXPECT_EQ(rig.movement->accidents().total(), 0) << rig.accidents.front();
 }
 
+// Another controller stops the BR 218 the moment the station confirmed its departure: the program hears
+// both answers (500, then 0) in one read. The 0 is not the automation's (it sent 500 last, and no command
+// of its failed), so the train is manual and the automation does not drive it on.
+TEST(Automation, AStopByAnotherControllerHeardTogetherWithTheDepartureMakesTheTrainManual) {
+    AutomationRig rig;
+    ASSERT_TRUE(rig.start({{Br218, 1, End::B}}));
+    bool stopped = false;
+    QObject::connect(&rig.rig.station, &sim::SimulatedStation::framesEmitted,
+                     [&](const std::vector<can::CanFrame>& frames) {
+                         for (const can::CanFrame& frame : frames) {
+                             const cs2::DecodeResult decoded = cs2::decode(frame);
+                             const auto* speed =
+                                 decoded ? std::get_if<cs2::LocoSpeed>(&decoded->body) : nullptr;
+                             if (!stopped && speed && decoded->response && speed->speed.value_or(0) > 0) {
+                                 stopped = true;
+                                 otherController(rig.rig.station, cs2::LocoSpeed{cs2::LocId(Br218), 0});
+                             }
+                         }
+                     });
+    rig.startAutomation();
+    for (int i = 0; i < 200 && !stopped; ++i)
+        rig.run(AutomationRig::Step);
+    ASSERT_TRUE(stopped) << rig.eventLog();
+    rig.run(std::chrono::seconds(1));
+    EXPECT_EQ(rig.automation->dispatcher().train(Br218)->mode, automation::TrainMode::Manual)
+        << rig.eventLog();
+    EXPECT_EQ(rig.count(Kind::Manual, Br218), 1) << rig.eventLog();
+    rig.run(std::chrono::seconds(20));
+    EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 0) << "the automation does not drive it on";
+    EXPECT_EQ(rig.count(Kind::Lost, Br218), 0) << rig.eventLog();
+    EXPECT_EQ(rig.movement->accidents().total(), 0);
+}
+
 // The desk's throttle, an MS1 (RailwayHandhelds) and an OpenRailCAN throttle (RailwayThrottles) all command
 // through the railway: a speed set there makes the automatic ICE manual, and nothing more is sent to it.
 TEST(Automation, AThrottleOfThisProgramOnAnAutomaticTrainMakesItManual) {
@@ -268,9 +301,9 @@ TEST(Automation, ATurnoutNeverConfirmedKeepsTheTrainAndGivesItsWayBack) {
 }
 
 // The station goes away while the BR 218 runs: automation pauses and the train is stopped-unknown; when the
-// station is back and read again, nothing is sent by itself (the station keeps what it had: speed 500, as a
-// real one keeps its trains running) until the user resumes, which stops the train first. Then the run goes
-// on without accident.
+// station is back and read again, the train is told to stop (the station kept what it had: speed 500, as a
+// real one keeps its trains running) and nothing else is sent (no speed, no turnout) until the user resumes.
+// Then the run goes on without accident.
 TEST(Automation, WhenTheStationFallsSilentNothingIsSentUntilTheUserResumes) {
     AutomationRig rig;
     ASSERT_TRUE(rig.start({{Br218, 1, End::B}, {Ice, 4, End::B}}));
@@ -287,7 +320,7 @@ TEST(Automation, WhenTheStationFallsSilentNothingIsSentUntilTheUserResumes) {
                      [&](const can::CanFrame& frame) {
                          const cs2::DecodeResult decoded = cs2::decode(frame);
                          const auto* speed = decoded ? std::get_if<cs2::LocoSpeed>(&decoded->body) : nullptr;
-                         if ((speed && speed->speed) ||
+                         if ((speed && speed->speed.value_or(0) != 0) ||
                              (decoded && std::holds_alternative<cs2::AccessorySwitch>(decoded->body)))
                              received.push_back(can::formatDocument(frame));
                      });
@@ -301,7 +334,12 @@ TEST(Automation, WhenTheStationFallsSilentNothingIsSentUntilTheUserResumes) {
     }
     EXPECT_TRUE(received.empty()) << received.front();
     EXPECT_EQ(rig.automation->dispatcher().train(Br218)->state, TrainState::Unknown);
-    EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 500);
+    EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 0) << "told to stop when the station is back";
+    EXPECT_EQ(rig.rig.station.loco(Ice)->speed, 0);
+    const int arrived = rig.count(Kind::Arrived, Br218);
+    rig.run(std::chrono::seconds(5));
+    EXPECT_TRUE(received.empty()) << received.front();
+    EXPECT_EQ(rig.count(Kind::Arrived, Br218), arrived) << "nothing moves until resumed";
     rig.automation->resume();
     rig.settle();
     EXPECT_EQ(rig.rig.station.loco(Br218)->speed, 0);

@@ -1,22 +1,23 @@
 #pragma once
 
-// The demo layout's track graph, read through the automation's own seam (automation::graphOfFolder), and
-// its blocks by name: 1 Gleis 2 (contact 2), 2 Abstellgleis (9), 3 Einfahrt West (7), 4 Gleis 1 (1),
-// 5 Ausfahrt Ost (8), 6 Block 1 (3), 7 Block 2 (4), 8 Block 3 (5), 9 Block 4 (6).
+// The demo layout's track graph, read as the layout in use (model::LayoutInUse, as the command line opens
+// --layout), and its blocks by name: 1 Gleis 2 (contact 2), 2 Abstellgleis (9), 3 Einfahrt West (7), 4 Gleis
+// 1 (1), 5 Ausfahrt Ost (8), 6 Block 1 (3), 7 Block 2 (4), 8 Block 3 (5), 9 Block 4 (6).
 
-#include "automation/LayoutGraph.h"
+#include "model/LayoutInUse.h"
 
 #include <gtest/gtest.h>
+#include <memory>
 
 namespace stellwerk::automation::test {
 
 inline const trackgraph::TrackGraph& demo() {
-    static const trackgraph::TrackGraph graph = [] {
-        auto read = graphOfFolder(STELLWERK_DEMO_LAYOUT_DIR);
-        EXPECT_TRUE(bool(read));
-        return read ? std::move(*read) : trackgraph::TrackGraph{};
+    static const std::shared_ptr<const trackgraph::TrackGraph> graph = [] {
+        model::LayoutInUse layout;
+        EXPECT_EQ(layout.open(STELLWERK_DEMO_LAYOUT_DIR), "");
+        return layout.graph() ? layout.graph() : std::make_shared<const trackgraph::TrackGraph>();
     }();
-    return graph;
+    return *graph;
 }
 
 enum DemoBlock : int {

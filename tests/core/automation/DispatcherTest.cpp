@@ -151,11 +151,16 @@ TEST_F(DispatcherTest, WhileTheStationIsSilentTheTrainIsUnknownAndStaysStoppedWh
     remember();
     EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Unknown);
     EXPECT_TRUE(commands.empty()) << "nothing is sent to a silent station";
+    EXPECT_NE(events.back().text.find("BR 218 is stopped-unknown"), std::string::npos) << events.back().text;
     dispatcher.occupancyRead({contact(1)}); // back: still on Gleis 1
+    dispatcher.stationBack();
     dispatcher.tick(6000);
     remember();
     EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Unknown);
-    EXPECT_TRUE(commands.empty()) << "nothing is replayed";
+    EXPECT_EQ(commands, std::vector<DriveCommand>{DriveCommand::speedOf(Loco, 0)})
+        << "told to stop (the station may have kept it running), nothing replayed";
+    EXPECT_NE(events.back().text.find("stays until automation is resumed"), std::string::npos);
+    commands.clear();
     dispatcher.resume(7000);
     remember();
     EXPECT_EQ(commands, std::vector<DriveCommand>{DriveCommand::speedOf(Loco, 0)});
