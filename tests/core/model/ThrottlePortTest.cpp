@@ -66,7 +66,7 @@ TEST_F(ThrottlePortTest, AThrottleThatGoesAwayHasItsLocosStopped) {
 
 TEST_F(ThrottlePortTest, NothingIsConfirmedWhileTheStationIsNotHeard) {
     port().setSpeed(QStringLiteral("z21:a"), Br86, 400);
-    ASSERT_TRUE(waitFor([&] { return port().confirmed(Br86).has_value(); }));
+    ASSERT_TRUE(waitFor([&] { return port().confirmed(Br86) && port().confirmed(Br86)->speed == 400; }));
     bench.stationEnd.close();
     EXPECT_FALSE(port().canDrive());
     EXPECT_FALSE(port().confirmed(Br86).has_value());
