@@ -7,6 +7,7 @@
 #include "OrcCommand.h"
 #include "ResyncCommand.h"
 #include "RoCommand.h"
+#include "ServeCommand.h"
 #include "StationClient.h"
 #include "TransferCommands.h"
 
@@ -33,6 +34,8 @@ ParsedJob parseCommand(const std::vector<std::string>& arguments, std::ostream& 
     if (auto job = parseOrcCommand(command, rest, out, err))
         return std::move(*job);
     if (auto job = parseAutoCommand(command, rest, out, err))
+        return std::move(*job);
+    if (auto job = parseServeCommand(command, rest, out, err))
         return std::move(*job);
     return "unknown station command '" + command + "'";
 }
@@ -93,7 +96,12 @@ const char* stationUsage() {
            "                                       the station's plan (or DIR's) for N s (default 60) or\n"
            "                                       until Ctrl-C, one line per event, then stop them and "
            "print\n"
-           "                                       a summary; exit 0 when no fault occurred, 1 otherwise\n";
+           "                                       a summary; exit 0 when no fault occurred, 1 otherwise\n"
+           "    serve [--z21 [HOST:]PORT] [--seconds N] [--json]\n"
+           "                                       phones as throttles: the Z21 LAN server (Z21 app,\n"
+           "                                       WLANmaus; default all interfaces, port 21105) in front\n"
+           "                                       of the station, one line per client event until N s or\n"
+           "                                       Ctrl-C, then the locos its clients drove are stopped\n";
 }
 
 int runStation(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {

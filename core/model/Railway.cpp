@@ -23,7 +23,8 @@ QList<Out> toList(const ChangedKeys<Key>& keys) {
 
 Railway::Railway(station::StationSession& session, QObject* parent)
     : QObject(parent), session_(session), poller_(new ReadingPoller(session, this)),
-      programmer_(new Programmer(session, this)), blockStates_(new BlockStates(session, this)) {
+      programmer_(new Programmer(session, this)), blockStates_(new BlockStates(session, this)),
+      throttlePort_(new ThrottlePort(*this, this)) {
     connect(&session_, &station::StationSession::updated, this, &Railway::apply);
     connect(&session_.liveness(), &station::Liveness::stationSilent, this, &Railway::contactLost);
     // Before the session cancels the commands that were waiting: their failures arrive at a model that

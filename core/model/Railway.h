@@ -5,6 +5,7 @@
 #include "model/RailwayState.h"
 #include "model/ReadingPoller.h"
 #include "model/RouteRunner.h"
+#include "model/ThrottlePort.h"
 #include "model/UnconfirmedCommands.h"
 
 #include <QList>
@@ -95,6 +96,10 @@ public:
     // an answer fail at once (locomotiveCommandFailed, problem) and are never sent later.
     bool isStateReported() const { return stateReported_; }
     ReadingPoller& readings() { return *poller_; }
+    // The one way every throttle that is not the desk (MS1, OpenRailCAN, Z21, WiThrottle) drives this
+    // railway, with the book of who drives which locomotive.
+    ThrottlePort& throttlePort() { return *throttlePort_; }
+    const ThrottlePort& throttlePort() const { return *throttlePort_; }
     // Decoder programming on this station: mfx discovery, bind, verify, CV read and write.
     Programmer& programmer() { return *programmer_; }
     // The block and memory function states announced on the bus (CS2 chapter 9), and ours to announce.
@@ -226,6 +231,7 @@ private:
     ReadingPoller* poller_;
     Programmer* programmer_;
     BlockStates* blockStates_;
+    ThrottlePort* throttlePort_;
     std::map<std::int64_t, RouteRunner*> runners_;
     DeviceAccessories* switcher_ = nullptr;
     bool stateReported_ = false;

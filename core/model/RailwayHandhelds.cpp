@@ -71,41 +71,32 @@ std::vector<mcanhandhelds::HandheldLoco> RailwayHandhelds::locomotives() const {
     return locos;
 }
 
+// As the railway shows it (the handhelds' display follows the railway's last values).
 std::optional<mcanhandhelds::LocoDrive> RailwayHandhelds::drive(std::uint32_t locId) const {
-    const Locomotive* loco = railway_.locomotive(locId);
-    if (!loco)
+    const std::optional<LocoRun> run = railway_.throttlePort().shown(locId);
+    if (!run)
         return std::nullopt;
-    mcanhandhelds::LocoDrive drive{loco->speed(), loco->direction() != cs2::Direction::Backward, 0};
-    for (int number = 0; number < Locomotive::MaxFunctions; ++number)
-        if (loco->functionOn(number))
-            drive.functions |= 1u << number;
-    return drive;
+    return mcanhandhelds::LocoDrive{run->speed, run->forward, run->functions};
 }
 
 std::optional<bool> RailwayHandhelds::powerOn() const {
-    const std::optional<station::PowerState> power = railway_.power();
-    if (!power)
-        return std::nullopt;
-    return *power != station::PowerState::Stopped;
+    return railway_.throttlePort().powerOn();
 }
 
 void RailwayHandhelds::setSpeed(std::uint32_t locId, int speed) {
-    railway_.setSpeed(locId, speed);
+    railway_.throttlePort().setSpeed(ThrottlePort::handhelds(), locId, speed);
 }
 
 void RailwayHandhelds::setDirection(std::uint32_t locId, bool forward) {
-    railway_.setDirection(locId, forward ? cs2::Direction::Forward : cs2::Direction::Backward);
+    railway_.throttlePort().setDirection(ThrottlePort::handhelds(), locId, forward);
 }
 
 void RailwayHandhelds::setFunction(std::uint32_t locId, int function, bool on) {
-    railway_.setFunction(locId, function, on);
+    railway_.throttlePort().setFunction(ThrottlePort::handhelds(), locId, function, on);
 }
 
 void RailwayHandhelds::setPower(bool on) {
-    if (on)
-        railway_.go();
-    else
-        railway_.stop();
+    railway_.throttlePort().setPower(on);
 }
 
 } // namespace stellwerk::model

@@ -19,37 +19,32 @@ void RailwayThrottles::setSession(orccentral::OrcSession* orc) {
         bridge_ = new orccentral::ThrottleBridge(orc->bus(), *this, orc->busId(), orc);
 }
 
-// Reported only as far as the station confirmed it: speed and direction, and functions not reported count as
-// off.
+// Reported only as far as the station confirmed it (the throttle port's confirmed state).
 std::optional<orccentral::LocoState> RailwayThrottles::loco(std::uint32_t locId) const {
-    const Locomotive* found = railway_.locomotive(locId);
-    if (!found || !railway_.isStateReported() || !found->isSpeedReported() || !found->isDirectionReported())
+    const std::optional<LocoRun> run = railway_.throttlePort().confirmed(locId);
+    if (!run)
         return std::nullopt;
-    orccentral::LocoState state{found->speed(), found->direction() != cs2::Direction::Backward, 0};
-    for (int number = 0; number < Locomotive::MaxFunctions; ++number)
-        if (found->isFunctionReported(number) && found->functionOn(number))
-            state.functions |= 1u << number;
-    return state;
+    return orccentral::LocoState{run->speed, run->forward, run->functions};
 }
 
 void RailwayThrottles::setSpeed(std::uint32_t locId, int speed) {
-    railway_.setSpeed(locId, speed);
+    railway_.throttlePort().setSpeed(ThrottlePort::orcThrottles(), locId, speed);
 }
 
 void RailwayThrottles::setDirection(std::uint32_t locId, bool forward) {
-    railway_.setDirection(locId, forward ? cs2::Direction::Forward : cs2::Direction::Backward);
+    railway_.throttlePort().setDirection(ThrottlePort::orcThrottles(), locId, forward);
 }
 
 void RailwayThrottles::setFunction(std::uint32_t locId, int function, bool on) {
-    railway_.setFunction(locId, function, on);
+    railway_.throttlePort().setFunction(ThrottlePort::orcThrottles(), locId, function, on);
 }
 
 void RailwayThrottles::emergencyStop(std::uint32_t locId) {
-    railway_.emergencyStop(locId);
+    railway_.throttlePort().emergencyStop(ThrottlePort::orcThrottles(), locId);
 }
 
 void RailwayThrottles::stopAll() {
-    railway_.stop();
+    railway_.throttlePort().setPower(false);
 }
 
 } // namespace stellwerk::model

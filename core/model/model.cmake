@@ -25,6 +25,10 @@ target_sources(stellwerk-model PRIVATE
     model/RailwayHandhelds.h
     model/RailwayThrottles.cpp
     model/RailwayThrottles.h
+    model/ThrottlePort.cpp
+    model/ThrottlePort.h
+    model/Z21Addresses.cpp
+    model/Z21Addresses.h
     model/RailwayCorrections.cpp
     model/RailwayRoutes.cpp
     model/RailwayState.cpp

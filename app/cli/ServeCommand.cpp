@@ -1,0 +1,183 @@
+#include "ServeCommand.h"
+
+#include "model/Railway.h"
+#include "model/Z21Addresses.h"
+#include "station/StartupSequence.h"
+#include "z21server/Z21Server.h"
+
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTimer>
+#include <memory>
+#include <ostream>
+
+namespace stellwerk::cli {
+namespace {
+
+// Where one server listens: HOST:PORT, or PORT on every interface.
+struct Listen {
+    QHostAddress address = QHostAddress::Any;
+    quint16 port = 0;
+};
+
+struct ServeOptions {
+    std::optional<Listen> z21; // --withrottle joins here
+    int seconds = 0;           // 0: until Ctrl-C
+    bool json = false;
+};
+
+std::optional<Listen> listenOf(const std::string& text, quint16 defaultPort) {
+    Listen listen{QHostAddress::Any, defaultPort};
+    const QString value = QString::fromStdString(text);
+    const qsizetype colon = value.lastIndexOf(QLatin1Char(':'));
+    const QString host = colon >= 0 ? value.left(colon) : QString();
+    const QString port = colon >= 0 ? value.mid(colon + 1) : value;
+    if (!host.isEmpty() && !listen.address.setAddress(host))
+        return std::nullopt;
+    bool ok = true;
+    if (!port.isEmpty())
+        listen.port = quint16(port.toUInt(&ok));
+    return ok && port.toUInt() <= 65535 ? std::optional(listen) : std::nullopt;
+}
+
+Expected<ServeOptions, std::string> parseOptions(const std::vector<std::string>& arguments) {
+    ServeOptions options;
+    for (std::size_t i = 0; i < arguments.size(); ++i) {
+        const std::string& word = arguments[i];
+        const bool hasValue = i + 1 < arguments.size() && arguments[i + 1].rfind("--", 0) != 0;
+        if (word == "--json") {
+            options.json = true;
+        } else if (word == "--z21") {
+            options.z21 = listenOf(hasValue ? arguments[++i] : std::string(), 21105);
+            if (!options.z21)
+                return std::string("serve: --z21: expected [HOST:]PORT");
+        } else if (word == "--seconds" && hasValue) {
+            options.seconds = std::atoi(arguments[++i].c_str());
+            if (options.seconds < 1)
+                return std::string("serve: --seconds: not a number of seconds");
+        } else {
+            return "serve: unknown argument '" + word + "'";
+        }
+    }
+    if (!options.z21)
+        options.z21 = Listen{QHostAddress::Any, 21105};
+    return options;
+}
+
+const char* kindName(z21server::Z21Event::Kind kind) {
+    switch (kind) {
+    case z21server::Z21Event::Kind::Joined:
+        return "joined";
+    case z21server::Z21Event::Kind::LoggedOff:
+        return "logged-off";
+    case z21server::Z21Event::Kind::TimedOut:
+        return "timed-out";
+    case z21server::Z21Event::Kind::Drove:
+        return "drove";
+    case z21server::Z21Event::Kind::TakenOver:
+        return "taken-over";
+    case z21server::Z21Event::Kind::Refused:
+        return "refused";
+    case z21server::Z21Event::Kind::Flooding:
+        return "flooding";
+    }
+    return "event";
+}
+
+// The station read, the railway and the servers in front of it, living as long as the command.
+class ServeRun final : public QObject {
+public:
+    ServeRun(StationClient& client, ServeOptions options, std::ostream& out, std::ostream& err)
+        : QObject(&client), client_(client), options_(std::move(options)), out_(out), err_(err) {
+        railway_ = std::make_unique<model::Railway>(client.session());
+        station::StartupOptions startupOptions;
+        startupOptions.readStatusData = false;
+        startup_ = std::make_unique<station::StartupSequence>(client.session(), startupOptions);
+        connect(startup_.get(), &station::StartupSequence::ready, this, &ServeRun::stationRead);
+        startup_->start();
+        client.whenInterrupted([this] { end(); });
+    }
+    ~ServeRun() override {
+        z21_.reset();
+        startup_.reset();
+        railway_.reset();
+    }
+
+private:
+    void stationRead(const station::StartupResult& result) {
+        railway_->load(result);
+        z21server::Z21ServerOptions z21Options;
+        z21Options.address = options_.z21->address;
+        z21Options.port = options_.z21->port;
+        z21_ = std::make_unique<z21server::Z21Server>(addresses_, z21Options);
+        if (!z21_->listen()) {
+            err_ << "stellwerk-cli serve: Z21 server: " << z21_->errorString().toStdString() << '\n';
+            return client_.finish(3);
+        }
+        z21_->setRailway(railway_.get());
+        connect(z21_.get(), &z21server::Z21Server::event, this, &ServeRun::print);
+        print(z21server::Z21Event{
+            z21server::Z21Event::Kind::Joined, QStringLiteral("server"), 0,
+            QStringLiteral("Z21 LAN on %1:%2").arg(options_.z21->address.toString()).arg(z21_->port())});
+        if (options_.seconds > 0)
+            QTimer::singleShot(options_.seconds * 1000, this, &ServeRun::end);
+    }
+
+    void print(const z21server::Z21Event& event) {
+        const QString kind = event.client == QLatin1String("server")
+                                 ? QStringLiteral("listening")
+                                 : QString::fromLatin1(kindName(event.kind));
+        if (!options_.json) {
+            out_ << kind.toStdString() << ": " << event.client.toStdString();
+            if (event.address)
+                out_ << " loco " << event.address;
+            if (!event.detail.isEmpty())
+                out_ << " (" << event.detail.toStdString() << ')';
+            out_ << std::endl;
+            return;
+        }
+        QJsonObject line{{"event", kind}, {"client", event.client}};
+        if (event.address)
+            line["address"] = event.address;
+        if (!event.detail.isEmpty())
+            line["detail"] = event.detail;
+        out_ << QJsonDocument(line).toJson(QJsonDocument::Compact).toStdString() << std::endl;
+    }
+
+    // Every locomotive a client drove is stopped; the station's answers are given a moment.
+    void end() {
+        if (ending_)
+            return;
+        ending_ = true;
+        if (z21_)
+            z21_->stopAll();
+        QTimer::singleShot(300, this, [this] { client_.finish(Acknowledged); });
+    }
+
+    StationClient& client_;
+    ServeOptions options_;
+    std::ostream& out_;
+    std::ostream& err_;
+    model::Z21Addresses addresses_;
+    std::unique_ptr<model::Railway> railway_;
+    std::unique_ptr<station::StartupSequence> startup_;
+    std::unique_ptr<z21server::Z21Server> z21_;
+    bool ending_ = false;
+};
+
+} // namespace
+
+std::optional<ParsedJob> parseServeCommand(const std::string& command,
+                                           const std::vector<std::string>& arguments, std::ostream& out,
+                                           std::ostream& err) {
+    if (command != "serve")
+        return std::nullopt;
+    auto options = parseOptions(arguments);
+    if (!options)
+        return ParsedJob(options.error());
+    return ParsedJob(StationJob{
+        [options = *options, &out, &err](StationClient& client) { new ServeRun(client, options, out, err); },
+        std::nullopt});
+}
+
+} // namespace stellwerk::cli

@@ -1,0 +1,74 @@
+// `stellwerk-cli --station URL serve --z21 HOST:PORT` against the real stellwerk-sim: a Z21 client of the
+// tests' own drives the demo's MM loco 24 on its Z21 address 24, the command prints one JSON line per client
+// event, and ends after --seconds with exit 0.
+
+#include "../core/z21server/Z21TestClient.h"
+#include "SimProgram.h"
+
+#include <QCoreApplication>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QUdpSocket>
+#include <gtest/gtest.h>
+
+namespace stellwerk::cli {
+namespace {
+
+void ensureApplication() {
+    static int argc = 1;
+    static char name[] = "stellwerk-cli-tests";
+    static char* argv[] = {name, nullptr};
+    if (!QCoreApplication::instance())
+        new QCoreApplication(argc, argv);
+}
+
+quint16 freeUdpPort() {
+    QUdpSocket socket;
+    socket.bind(QHostAddress::LocalHost, 0);
+    return socket.localPort();
+}
+
+TEST(ServeCommand, AZ21ClientDrivesTheDemosLocoAndEachClientEventIsALine) {
+    ensureApplication();
+    support::SimProgram sim(QStringList{"--listen", "127.0.0.1", "--udp-port", "0", "--udp-reply-host",
+                                        "127.0.0.1", "--tcp-port", "0", "--http-port", "0"});
+    ASSERT_NE(sim.tcpPort(), 0) << sim.output().toStdString();
+    const quint16 z21Port = freeUdpPort();
+    QProcess cli;
+    cli.start(STELLWERK_CLI,
+              QStringList{"--station", QStringLiteral("tcp://127.0.0.1:%1").arg(sim.tcpPort()), "serve",
+                          "--z21", QStringLiteral("127.0.0.1:%1").arg(z21Port), "--seconds", "6", "--json"});
+    QByteArray out;
+    const auto printed = [&](const char* text) {
+        return support::runEventsUntil(
+            [&] {
+                out += cli.readAllStandardOutput();
+                return out.contains(text);
+            },
+            15000);
+    };
+    ASSERT_TRUE(printed("\"listening\"")) << out.toStdString() << cli.readAllStandardError().toStdString();
+    z21server::test::Z21TestClient phone(z21Port);
+    phone.send(z21::SetBroadcastFlags{z21::broadcast::DrivingAndSwitching});
+    phone.send(z21::SetLocoDrive{24, {z21::SpeedStepMode::Steps128, true, 40, false}});
+    ASSERT_TRUE(printed("\"drove\"")) << out.toStdString();
+    EXPECT_TRUE(support::runEventsUntil(
+        [&] {
+            const auto info = phone.locoInfo(24);
+            return info && info->speed.step == 40;
+        },
+        10000))
+        << "the station confirmed the speed";
+    ASSERT_TRUE(support::runEventsUntil([&] { return cli.state() == QProcess::NotRunning; }, 20000));
+    out += cli.readAllStandardOutput();
+    EXPECT_EQ(cli.exitCode(), 0);
+    const QList<QByteArray> lines = out.trimmed().split('\n');
+    ASSERT_GE(lines.size(), 3);
+    const QJsonObject joined = QJsonDocument::fromJson(lines.at(1)).object();
+    EXPECT_EQ(joined["event"].toString(), "joined");
+    EXPECT_EQ(joined["client"].toString(), QStringLiteral("z21 127.0.0.1:%1").arg(phone.localPort()));
+}
+
+} // namespace
+} // namespace stellwerk::cli
