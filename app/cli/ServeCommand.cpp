@@ -3,6 +3,7 @@
 #include "model/Railway.h"
 #include "model/Z21Addresses.h"
 #include "station/StartupSequence.h"
+#include "withrottleserver/MdnsAnnouncement.h"
 #include "withrottleserver/WiThrottleServer.h"
 #include "z21server/Z21Server.h"
 
@@ -134,6 +135,7 @@ public:
     }
     ~ServeRun() override {
         z21_.reset();
+        announcement_.reset();
         withrottle_.reset();
         startup_.reset();
         railway_.reset();
@@ -185,6 +187,9 @@ private:
               QStringLiteral("WiThrottle on %1:%2")
                   .arg(options_.withrottle->address.toString())
                   .arg(withrottle_->port()));
+        announcement_ = std::make_unique<withrottleserver::MdnsAnnouncement>();
+        announcement_->announce(QStringLiteral("Stellwerk"), withrottle_->port());
+        print("mdns", QStringLiteral("server"), 0, announcement_->why());
         return true;
     }
 
@@ -228,6 +233,7 @@ private:
     std::unique_ptr<station::StartupSequence> startup_;
     std::unique_ptr<z21server::Z21Server> z21_;
     std::unique_ptr<withrottleserver::WiThrottleServer> withrottle_;
+    std::unique_ptr<withrottleserver::MdnsAnnouncement> announcement_;
     bool ending_ = false;
 };
 

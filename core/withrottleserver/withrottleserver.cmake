@@ -3,6 +3,8 @@
 # transport.
 stellwerk_core_library(withrottleserver)
 target_sources(stellwerk-withrottleserver PRIVATE
+    withrottleserver/MdnsAnnouncement.cpp
+    withrottleserver/MdnsAnnouncement.h
     withrottleserver/WiThrottleClient.cpp
     withrottleserver/WiThrottleClient.h
     withrottleserver/WiThrottleRailway.cpp

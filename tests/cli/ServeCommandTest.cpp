@@ -112,6 +112,7 @@ TEST(ServeCommand, AWiThrottleClientDrivesTheDemosLocoAndLeavingStopsIt) {
     ASSERT_TRUE(support::runEventsUntil([&] { return cli.state() == QProcess::NotRunning; }, 20000));
     EXPECT_EQ(cli.exitCode(), 0);
     EXPECT_TRUE(out.contains("named: withrottle 127.0.0.1:")) << out.toStdString();
+    EXPECT_TRUE(out.contains("mdns: server (")) << "announced, or the log says why not";
 }
 
 } // namespace
