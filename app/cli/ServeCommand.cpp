@@ -3,6 +3,8 @@
 #include "model/Railway.h"
 #include "model/Z21Addresses.h"
 #include "station/StartupSequence.h"
+#include "withrottleserver/MdnsAnnouncement.h"
+#include "withrottleserver/WiThrottleServer.h"
 #include "z21server/Z21Server.h"
 
 #include <QJsonDocument>
@@ -21,8 +23,9 @@ struct Listen {
 };
 
 struct ServeOptions {
-    std::optional<Listen> z21; // --withrottle joins here
-    int seconds = 0;           // 0: until Ctrl-C
+    std::optional<Listen> z21;
+    std::optional<Listen> withrottle;
+    int seconds = 0; // 0: until Ctrl-C
     bool json = false;
 };
 
@@ -51,6 +54,10 @@ Expected<ServeOptions, std::string> parseOptions(const std::vector<std::string>&
             options.z21 = listenOf(hasValue ? arguments[++i] : std::string(), 21105);
             if (!options.z21)
                 return std::string("serve: --z21: expected [HOST:]PORT");
+        } else if (word == "--withrottle") {
+            options.withrottle = listenOf(hasValue ? arguments[++i] : std::string(), 12090);
+            if (!options.withrottle)
+                return std::string("serve: --withrottle: expected [HOST:]PORT");
         } else if (word == "--seconds" && hasValue) {
             options.seconds = std::atoi(arguments[++i].c_str());
             if (options.seconds < 1)
@@ -59,7 +66,7 @@ Expected<ServeOptions, std::string> parseOptions(const std::vector<std::string>&
             return "serve: unknown argument '" + word + "'";
         }
     }
-    if (!options.z21)
+    if (!options.z21 && !options.withrottle)
         options.z21 = Listen{QHostAddress::Any, 21105};
     return options;
 }
@@ -84,6 +91,35 @@ const char* kindName(z21server::Z21Event::Kind kind) {
     return "event";
 }
 
+const char* kindName(withrottleserver::WiThrottleEvent::Kind kind) {
+    using Kind = withrottleserver::WiThrottleEvent::Kind;
+    switch (kind) {
+    case Kind::Joined:
+        return "joined";
+    case Kind::Named:
+        return "named";
+    case Kind::Acquired:
+        return "acquired";
+    case Kind::Released:
+        return "released";
+    case Kind::StealNeeded:
+        return "steal-needed";
+    case Kind::TakenOver:
+        return "taken-over";
+    case Kind::Refused:
+        return "refused";
+    case Kind::Flooding:
+        return "flooding";
+    case Kind::Quit:
+        return "quit";
+    case Kind::Left:
+        return "left";
+    case Kind::TimedOut:
+        return "timed-out";
+    }
+    return "event";
+}
+
 // The station read, the railway and the servers in front of it, living as long as the command.
 class ServeRun final : public QObject {
 public:
@@ -99,6 +135,8 @@ public:
     }
     ~ServeRun() override {
         z21_.reset();
+        announcement_.reset();
+        withrottle_.reset();
         startup_.reset();
         railway_.reset();
     }
@@ -106,41 +144,71 @@ public:
 private:
     void stationRead(const station::StartupResult& result) {
         railway_->load(result);
+        if ((options_.z21 && !startZ21()) || (options_.withrottle && !startWiThrottle()))
+            return client_.finish(3);
+        if (options_.seconds > 0)
+            QTimer::singleShot(options_.seconds * 1000, this, &ServeRun::end);
+    }
+
+    bool startZ21() {
         z21server::Z21ServerOptions z21Options;
         z21Options.address = options_.z21->address;
         z21Options.port = options_.z21->port;
         z21_ = std::make_unique<z21server::Z21Server>(addresses_, z21Options);
         if (!z21_->listen()) {
             err_ << "stellwerk-cli serve: Z21 server: " << z21_->errorString().toStdString() << '\n';
-            return client_.finish(3);
+            return false;
         }
         z21_->setRailway(railway_.get());
-        connect(z21_.get(), &z21server::Z21Server::event, this, &ServeRun::print);
-        print(z21server::Z21Event{
-            z21server::Z21Event::Kind::Joined, QStringLiteral("server"), 0,
-            QStringLiteral("Z21 LAN on %1:%2").arg(options_.z21->address.toString()).arg(z21_->port())});
-        if (options_.seconds > 0)
-            QTimer::singleShot(options_.seconds * 1000, this, &ServeRun::end);
+        connect(z21_.get(), &z21server::Z21Server::event, this, [this](const z21server::Z21Event& event) {
+            print(kindName(event.kind), event.client, event.address, event.detail);
+        });
+        print("listening", QStringLiteral("server"), 0,
+              QStringLiteral("Z21 LAN on %1:%2").arg(options_.z21->address.toString()).arg(z21_->port()));
+        return true;
     }
 
-    void print(const z21server::Z21Event& event) {
-        const QString kind = event.client == QLatin1String("server")
-                                 ? QStringLiteral("listening")
-                                 : QString::fromLatin1(kindName(event.kind));
+    bool startWiThrottle() {
+        withrottleserver::WiThrottleServerOptions wiOptions;
+        wiOptions.address = options_.withrottle->address;
+        wiOptions.port = options_.withrottle->port;
+        withrottle_ = std::make_unique<withrottleserver::WiThrottleServer>(addresses_, wiOptions);
+        if (!withrottle_->listen()) {
+            err_ << "stellwerk-cli serve: WiThrottle server: " << withrottle_->errorString().toStdString()
+                 << '\n';
+            return false;
+        }
+        withrottle_->setRailway(railway_.get());
+        connect(withrottle_.get(), &withrottleserver::WiThrottleServer::event, this,
+                [this](const withrottleserver::WiThrottleEvent& event) {
+                    print(kindName(event.kind), event.client, 0, event.detail);
+                });
+        print("listening", QStringLiteral("server"), 0,
+              QStringLiteral("WiThrottle on %1:%2")
+                  .arg(options_.withrottle->address.toString())
+                  .arg(withrottle_->port()));
+        announcement_ = std::make_unique<withrottleserver::MdnsAnnouncement>();
+        announcement_->announce(QStringLiteral("Stellwerk"), withrottle_->port());
+        print("mdns", QStringLiteral("server"), 0, announcement_->why());
+        return true;
+    }
+
+    void print(const char* kindText, const QString& client, std::uint16_t address, const QString& detail) {
+        const QString kind = QString::fromLatin1(kindText);
         if (!options_.json) {
-            out_ << kind.toStdString() << ": " << event.client.toStdString();
-            if (event.address)
-                out_ << " loco " << event.address;
-            if (!event.detail.isEmpty())
-                out_ << " (" << event.detail.toStdString() << ')';
+            out_ << kind.toStdString() << ": " << client.toStdString();
+            if (address)
+                out_ << " loco " << address;
+            if (!detail.isEmpty())
+                out_ << " (" << detail.toStdString() << ')';
             out_ << std::endl;
             return;
         }
-        QJsonObject line{{"event", kind}, {"client", event.client}};
-        if (event.address)
-            line["address"] = event.address;
-        if (!event.detail.isEmpty())
-            line["detail"] = event.detail;
+        QJsonObject line{{"event", kind}, {"client", client}};
+        if (address)
+            line["address"] = address;
+        if (!detail.isEmpty())
+            line["detail"] = detail;
         out_ << QJsonDocument(line).toJson(QJsonDocument::Compact).toStdString() << std::endl;
     }
 
@@ -151,6 +219,8 @@ private:
         ending_ = true;
         if (z21_)
             z21_->stopAll();
+        if (withrottle_)
+            withrottle_->stopAll();
         QTimer::singleShot(300, this, [this] { client_.finish(Acknowledged); });
     }
 
@@ -162,6 +232,8 @@ private:
     std::unique_ptr<model::Railway> railway_;
     std::unique_ptr<station::StartupSequence> startup_;
     std::unique_ptr<z21server::Z21Server> z21_;
+    std::unique_ptr<withrottleserver::WiThrottleServer> withrottle_;
+    std::unique_ptr<withrottleserver::MdnsAnnouncement> announcement_;
     bool ending_ = false;
 };
 

@@ -97,11 +97,13 @@ const char* stationUsage() {
            "                                       until Ctrl-C, one line per event, then stop them and "
            "print\n"
            "                                       a summary; exit 0 when no fault occurred, 1 otherwise\n"
-           "    serve [--z21 [HOST:]PORT] [--seconds N] [--json]\n"
+           "    serve [--z21 [HOST:]PORT] [--withrottle [HOST:]PORT] [--seconds N] [--json]\n"
            "                                       phones as throttles: the Z21 LAN server (Z21 app,\n"
-           "                                       WLANmaus; default all interfaces, port 21105) in front\n"
-           "                                       of the station, one line per client event until N s or\n"
-           "                                       Ctrl-C, then the locos its clients drove are stopped\n";
+           "                                       WLANmaus; port 21105) and the WiThrottle server\n"
+           "                                       (Engine Driver, WiThrottle; port 12090) in front of the\n"
+           "                                       station (neither given: Z21 only), one line per client\n"
+           "                                       event until N s or Ctrl-C, then the locos its clients\n"
+           "                                       drove are stopped\n";
 }
 
 int runStation(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err) {

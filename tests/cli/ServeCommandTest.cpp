@@ -1,7 +1,8 @@
-// `stellwerk-cli --station URL serve --z21 HOST:PORT` against the real stellwerk-sim: a Z21 client of the
-// tests' own drives the demo's MM loco 24 on its Z21 address 24, the command prints one JSON line per client
-// event, and ends after --seconds with exit 0.
+// `stellwerk-cli --station URL serve --z21 HOST:PORT` / `--withrottle HOST:PORT` against the real
+// stellwerk-sim: a Z21 or WiThrottle client of the tests' own drives the demo's MM loco 24 on its address 24,
+// the command prints one line per client event, and ends after --seconds with exit 0.
 
+#include "../core/withrottleserver/WiThrottleTestClient.h"
 #include "../core/z21server/Z21TestClient.h"
 #include "SimProgram.h"
 
@@ -9,6 +10,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QTcpServer>
 #include <QUdpSocket>
 #include <gtest/gtest.h>
 
@@ -21,6 +23,12 @@ void ensureApplication() {
     static char* argv[] = {name, nullptr};
     if (!QCoreApplication::instance())
         new QCoreApplication(argc, argv);
+}
+
+quint16 freeTcpPort() {
+    QTcpServer server;
+    server.listen(QHostAddress::LocalHost, 0);
+    return server.serverPort();
 }
 
 quint16 freeUdpPort() {
@@ -68,6 +76,43 @@ TEST(ServeCommand, AZ21ClientDrivesTheDemosLocoAndEachClientEventIsALine) {
     const QJsonObject joined = QJsonDocument::fromJson(lines.at(1)).object();
     EXPECT_EQ(joined["event"].toString(), "joined");
     EXPECT_EQ(joined["client"].toString(), QStringLiteral("z21 127.0.0.1:%1").arg(phone.localPort()));
+}
+
+TEST(ServeCommand, AWiThrottleClientDrivesTheDemosLocoAndLeavingStopsIt) {
+    ensureApplication();
+    support::SimProgram sim(QStringList{"--listen", "127.0.0.1", "--udp-port", "0", "--udp-reply-host",
+                                        "127.0.0.1", "--tcp-port", "0", "--http-port", "0"});
+    ASSERT_NE(sim.tcpPort(), 0) << sim.output().toStdString();
+    const quint16 port = freeTcpPort();
+    QProcess cli;
+    cli.start(STELLWERK_CLI,
+              QStringList{"--station", QStringLiteral("tcp://127.0.0.1:%1").arg(sim.tcpPort()), "serve",
+                          "--withrottle", QStringLiteral("127.0.0.1:%1").arg(port), "--seconds", "6"});
+    QByteArray out;
+    const auto printed = [&](const char* text) {
+        return support::runEventsUntil(
+            [&] {
+                out += cli.readAllStandardOutput();
+                return out.contains(text);
+            },
+            15000);
+    };
+    ASSERT_TRUE(printed("listening: server (WiThrottle on 127.0.0.1:"))
+        << out.toStdString() << cli.readAllStandardError().toStdString();
+    auto phone = std::make_unique<withrottleserver::test::WiThrottleTestClient>(port);
+    phone->send(withrottle::DeviceName{"cli-phone"});
+    phone->send(withrottle::AcquireLoco{'T', "S24", withrottle::LocoAddress{24, false}, false});
+    ASSERT_TRUE(printed("acquired: withrottle 127.0.0.1:")) << out.toStdString();
+    phone->send(withrottle::ThrottleAction{'T', "S24", withrottle::SetSpeed{40}});
+    EXPECT_TRUE(support::runEventsUntil([&] { return phone->speedOf("S24") == 40; }, 10000))
+        << "the station confirmed the speed";
+    phone->close();
+    ASSERT_TRUE(printed("left: withrottle 127.0.0.1:")) << out.toStdString();
+    EXPECT_TRUE(out.contains("(stopped 0x0018)")) << out.toStdString();
+    ASSERT_TRUE(support::runEventsUntil([&] { return cli.state() == QProcess::NotRunning; }, 20000));
+    EXPECT_EQ(cli.exitCode(), 0);
+    EXPECT_TRUE(out.contains("named: withrottle 127.0.0.1:")) << out.toStdString();
+    EXPECT_TRUE(out.contains("mdns: server (")) << "announced, or the log says why not";
 }
 
 } // namespace
