@@ -61,6 +61,44 @@ std::optional<std::string> Automation::place(std::uint32_t locId, std::int64_t c
     return problem;
 }
 
+std::optional<std::string> Automation::placeInBlock(std::uint32_t locId, int block, trackgraph::End towards,
+                                                    int lengthMm) {
+    const model::Locomotive* loco = railway_.locomotive(locId);
+    const std::string name = loco ? loco->displayName().toStdString()
+                                  : QStringLiteral("0x%1").arg(locId, 4, 16, QLatin1Char('0')).toStdString();
+    std::optional<std::string> problem = dispatcher_.placeInBlock(locId, name, lengthMm, block, towards);
+    carryOut();
+    return problem;
+}
+
+void Automation::remove(std::uint32_t locId) {
+    dispatcher_.remove(locId);
+    told_.erase(locId);
+    carryOut();
+}
+
+void Automation::run(std::chrono::milliseconds interval) {
+    dispatcher_.occupancyRead(occupiedContacts());
+    if (const auto power = railway_.power(); power && *power != station::PowerState::Running)
+        dispatcher_.halt("the track power is off");
+    carryOut();
+    if (interval.count() > 0)
+        timer_.start(interval);
+}
+
+void Automation::stopByHand(std::uint32_t locId, const std::string& by) {
+    dispatcher_.takenByHand(locId, by);
+    commanding_ = true;
+    railway_.setSpeed(locId, 0);
+    commanding_ = false;
+    carryOut();
+}
+
+void Automation::stopAtNextStop() {
+    dispatcher_.stopAtNextStop(clock_());
+    carryOut();
+}
+
 void Automation::start(std::chrono::milliseconds interval) {
     dispatcher_.occupancyRead(occupiedContacts());
     for (const auto& [locId, train] : dispatcher_.trains()) {

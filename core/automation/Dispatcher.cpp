@@ -47,6 +47,13 @@ std::optional<std::string> Dispatcher::place(std::uint32_t locId, const std::str
                 block = candidate.id;
     if (block == 0)
         return name + ": no block of the track plan holds contact " + std::to_string(contact);
+    return placeInBlock(locId, name, lengthMm, block, towards);
+}
+
+std::optional<std::string> Dispatcher::placeInBlock(std::uint32_t locId, const std::string& name,
+                                                    int lengthMm, int block, End towards) {
+    if (block <= 0 || block > int(graph_.blocks().size()))
+        return name + ": the track plan has no block " + std::to_string(block);
     if (const std::uint32_t other = tracking_.trainIn(block); other != 0 && other != locId)
         return name + ": block \"" + blockName(block) + "\" holds " + trains_.at(other).name + " already";
     giveBackWay(locId);
@@ -61,6 +68,20 @@ std::optional<std::string> Dispatcher::place(std::uint32_t locId, const std::str
     return std::nullopt;
 }
 
+void Dispatcher::remove(std::uint32_t locId) {
+    const auto found = trains_.find(locId);
+    if (found == trains_.end())
+        return;
+    if (found->second.mode == TrainMode::Automatic)
+        command(DriveCommand::speedOf(locId, 0));
+    reservations_.releaseAllBut(locId, {}, {});
+    tracking_.remove(locId);
+    journeys_.erase(locId);
+    mustBeSeen_.erase(locId);
+    stopAtStop_.erase(locId);
+    trains_.erase(found);
+}
+
 void Dispatcher::setMode(std::uint32_t locId, TrainMode mode, Millis now) {
     const auto found = trains_.find(locId);
     if (found == trains_.end())
@@ -68,6 +89,7 @@ void Dispatcher::setMode(std::uint32_t locId, TrainMode mode, Millis now) {
     Train& train = found->second;
     train.mode = mode;
     journeys_.erase(locId);
+    stopAtStop_.erase(locId);
     if (mode == TrainMode::Automatic && train.state != TrainState::Lost) {
         train.state = TrainState::Waiting;
         journeys_[locId].dwellUntil = now;
@@ -79,6 +101,11 @@ std::optional<std::string> Dispatcher::setSchedule(std::uint32_t locId, Schedule
     const auto found = trains_.find(locId);
     if (found == trains_.end())
         return "0x" + std::to_string(locId) + " has a schedule but is not placed";
+    if (schedule.stops.empty()) {
+        found->second.pushPull = schedule.pushPull;
+        found->second.schedule.reset();
+        return std::nullopt;
+    }
     for (ScheduleStop& stop : schedule.stops) {
         const auto block = std::find_if(graph_.blocks().begin(), graph_.blocks().end(),
                                         [&](const trackgraph::Block& b) { return b.name == stop.block; });
@@ -104,6 +131,7 @@ void Dispatcher::takenByHand(std::uint32_t locId, const std::string& by) {
     train.mode = TrainMode::Manual;
     train.state = TrainState::Stopped;
     journeys_.erase(locId);
+    stopAtStop_.erase(locId);
     event(AutomationEvent::Kind::Manual, locId, tracking_.body(locId)->frontBlock,
           train.name + " is driven by " + by + ": automation leaves it, its blocks stay reserved");
 }

@@ -45,9 +45,15 @@ public:
     // the sentence says why not.
     std::optional<std::string> place(std::uint32_t locId, const std::string& name, int lengthMm,
                                      std::int64_t contact, trackgraph::End towards);
+    // The same, in a block of the graph by its id (a block without contacts too).
+    std::optional<std::string> placeInBlock(std::uint32_t locId, const std::string& name, int lengthMm,
+                                            int block, trackgraph::End towards);
+    // The train is no longer the automation's: stopped, every block and way it held given back.
+    void remove(std::uint32_t locId);
     void setMode(std::uint32_t locId, TrainMode mode, Millis now);
     // The train runs to the schedule's stops in turn (from its `next`), standing at each for its dwell; the
-    // sentence says why not (a block no track plan block is named).
+    // sentence says why not (a block no track plan block is named). A schedule without stops takes the
+    // train's schedule away (it runs to any free block again).
     std::optional<std::string> setSchedule(std::uint32_t locId, Schedule schedule);
     // A push-pull train may change direction in any block when it finds no way on forwards; any other
     // train only at a terminus (no way leads on from the end it faces: buffer stops), and only when a
@@ -67,6 +73,10 @@ public:
     void turnoutReported(std::int64_t article, int position, Millis now);
     // Timers: departures, braking, stops, dwells, lost trains, turnouts not confirmed.
     void tick(Millis now);
+
+    // Every automatic train stops at its next stop and stays there, manual: a standing one at once (its
+    // way ahead given back), a running one once it has arrived (Stopped event). Started again one by one.
+    void stopAtNextStop(Millis now);
 
     // STOP (or track power off): every automatic train stops, and nothing starts again until resume().
     void halt(const std::string& why);
@@ -128,6 +138,7 @@ private:
     void brake(Train& train);
     void arrive(Train& train, Journey& journey, Millis now);
     void reachedStop(Train& train, Journey& journey, int block, Millis now);
+    void holdAtStop(Train& train, int block);
     // A way on, and whether the train must change direction first.
     struct Way {
         Path path;
@@ -154,6 +165,7 @@ private:
     std::map<std::uint32_t, Journey> journeys_;
     std::map<std::int64_t, int> positions_; // turnouts as the railway reports them
     std::set<std::uint32_t> mustBeSeen_;    // ran or were seen when the station fell silent
+    std::set<std::uint32_t> stopAtStop_;    // running on to their next stop, then manual (stopAtNextStop)
     bool paused_ = false;
     int blockMoves_ = 0;
     int faults_ = 0;
