@@ -101,7 +101,10 @@ void Operation::placeBooked(const BookedTrain& train) {
         notPlaced_[train.locId] = "the track plan has no block \"" + train.block + "\"";
         return;
     }
+    if (train.automatic)
+        waiting_.insert(train.locId); // before the placing writes the book
     if (const auto problem = automation_->placeInBlock(train.locId, block, train.towards, train.lengthMm)) {
+        waiting_.erase(train.locId);
         notPlaced_[train.locId] = *problem;
         return;
     }
@@ -110,8 +113,6 @@ void Operation::placeBooked(const BookedTrain& train) {
     schedule.pushPull = train.pushPull;
     if (const auto problem = automation_->setSchedule(train.locId, schedule))
         noteBookProblem(*problem);
-    if (train.automatic)
-        waiting_.insert(train.locId);
 }
 
 // The block by its number while it still bears the name the book gives it; else by the name.
@@ -165,7 +166,7 @@ std::optional<std::string> Operation::start(std::uint32_t locId) {
             return entry.first != locId && entry.second.mode == TrainMode::Automatic;
         });
     // A pause nobody is held by (the power was off before any train ran) ends with the first start.
-    if (dispatcher.paused() && !othersAutomatic && waiting_.empty() && powerOn())
+    if (dispatcher.paused() && !othersAutomatic && waiting_.empty() && !powerOff())
         automation_->resume();
     if (train->mode == TrainMode::Automatic) {
         stopping_ = true;
@@ -223,7 +224,7 @@ std::optional<std::string> Operation::setSchedule(std::uint32_t locId, automatio
 std::optional<std::string> Operation::resume() {
     if (!automation_)
         return std::string("there is no railway with a track plan");
-    if (!powerOn())
+    if (powerOff())
         return std::string("the track power is off: switch it on (GO) first");
     if (automation_->dispatcher().paused())
         automation_->resume();
@@ -246,8 +247,9 @@ void Operation::stopAllAtNextStop() {
     emit changed();
 }
 
-bool Operation::powerOn() const {
-    return railway_ && railway_->power() == station::PowerState::Running;
+// The track power is known to be off (STOP); unknown counts as on: a station that has not said yet.
+bool Operation::powerOff() const {
+    return !railway_ || (railway_->power() && *railway_->power() != station::PowerState::Running);
 }
 
 void Operation::eventHappened(const automation::AutomationEvent& event) {

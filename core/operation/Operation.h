@@ -99,7 +99,7 @@ private:
     void eventHappened(const automation::AutomationEvent& event);
     void writeBook();
     void noteBookProblem(const std::string& problem);
-    bool powerOn() const;
+    bool powerOff() const;
 
     model::LayoutInUse& layout_;
     Options options_;

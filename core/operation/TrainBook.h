@@ -22,8 +22,6 @@ struct BookedTrain {
     trackgraph::End towards = trackgraph::End::B;
     bool automatic = false; // resumed by the user's Resume, never by itself
     automation::Schedule schedule;
-
-    friend bool operator==(const BookedTrain&, const BookedTrain&) = default;
 };
 
 // The trains of one layout, kept between runs so that they are placed again where they stood and their
@@ -44,8 +42,6 @@ public:
     std::string toJson() const;
     // The sentence says what is wrong.
     static Expected<TrainBook, std::string> fromJson(std::string_view json);
-
-    friend bool operator==(const TrainBook&, const TrainBook&) = default;
 
 private:
     std::vector<BookedTrain> trains_;

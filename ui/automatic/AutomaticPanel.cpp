@@ -226,7 +226,7 @@ void AutomaticPanel::updateButtons() {
     const bool byHand = train && m_operation->takenByHand(*locId);
     m_place->setEnabled(automation != nullptr);
     m_start->setEnabled(train && !byHand && train->state != TrainState::Lost &&
-                        (!automatic || train->state == TrainState::Fault) && !waiting);
+                        (!automatic || train->state == TrainState::Fault));
     m_stop->setEnabled(automatic || waiting);
     m_handBack->setEnabled(byHand && !automatic);
     m_schedule->setEnabled(locId.has_value() && automation != nullptr);

@@ -17,18 +17,16 @@ namespace {
 
 enum Column { BlockColumn, DwellColumn };
 
-QMessageBox::StandardButton askAboutChanges(QWidget* dialog) {
-    return QMessageBox::question(dialog, ScheduleDialog::tr("Schedule changed"),
-                                 ScheduleDialog::tr("Keep the changes to the schedule?"),
-                                 QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
-                                 QMessageBox::Save);
-}
-
 } // namespace
 
 ScheduleDialog::ScheduleDialog(const QString& train, std::vector<std::string> blocks,
                                const automation::Schedule& schedule, QWidget* parent)
-    : QDialog(parent), m_blocks(std::move(blocks)), m_original(schedule), m_question(askAboutChanges) {
+    : QDialog(parent), m_blocks(std::move(blocks)), m_original(schedule) {
+    m_question = [](QWidget* dialog) {
+        return QMessageBox::question(dialog, tr("Schedule changed"), tr("Keep the changes to the schedule?"),
+                                     QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+                                     QMessageBox::Save);
+    };
     setObjectName(QStringLiteral("scheduleDialog"));
     setWindowTitle(tr("Schedule of %1").arg(train));
     m_stops = new QTableWidget(0, 2, this);
