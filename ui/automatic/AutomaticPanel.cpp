@@ -33,10 +33,15 @@ AutomaticPanel::AutomaticPanel(QWidget* parent) : QWidget(parent) {
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setSectionResizeMode(StateColumn, QHeaderView::Stretch);
     m_table->setWordWrap(false);
+    // Compact rows, and a table that shrinks with a low dock (it scrolls itself) instead of the panel.
+    m_table->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
+    m_table->setMinimumHeight(m_table->horizontalHeader()->sizeHint().height() +
+                              2 * (fontMetrics().height() + 8));
     connect(m_table, &QTableWidget::itemSelectionChanged, this, &AutomaticPanel::updateButtons);
     m_event = new QLabel(this);
     m_event->setObjectName(QStringLiteral("automaticEvent"));
     m_event->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_event->hide(); // until something happened
     m_fault = new QLabel(this);
     m_fault->setObjectName(QStringLiteral("automaticFault"));
     m_fault->setWordWrap(true);
@@ -44,6 +49,8 @@ AutomaticPanel::AutomaticPanel(QWidget* parent) : QWidget(parent) {
     m_fault->hide();
     createButtons();
     auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->setSpacing(4);
     auto* actions = new QHBoxLayout;
     for (QPushButton* button : {m_place, m_start, m_stop, m_handBack, m_schedule, m_remove})
         actions->addWidget(button);
@@ -52,9 +59,9 @@ AutomaticPanel::AutomaticPanel(QWidget* parent) : QWidget(parent) {
     actions->addWidget(m_stopAll);
     layout->addLayout(actions);
     layout->addWidget(m_status);
-    layout->addWidget(m_table, 1);
-    layout->addWidget(m_fault);
+    layout->addWidget(m_fault); // above the table: a low dock cuts the table, never the last fault
     layout->addWidget(m_event);
+    layout->addWidget(m_table, 1);
     retranslate();
     refresh();
 }
@@ -246,16 +253,22 @@ void AutomaticPanel::updateButtons() {
     else if (m_operation->book().empty())
         m_status->setText(tr("No trains yet: place one with Place…, then start it."));
     else
-        m_status->setText(
-            tr("Trains are saved in %1").arg(QString::fromStdString(m_operation->bookPath().string())));
+        m_status->clear();
+    m_status->setVisible(!m_status->text().isEmpty()); // a line only when there is something to do
+    m_table->setToolTip(
+        m_operation && !m_operation->bookPath().empty()
+            ? tr("Trains are saved in %1").arg(QString::fromStdString(m_operation->bookPath().string()))
+            : QString());
 }
 
 void AutomaticPanel::eventHappened(const automation::AutomationEvent& event) {
     using Kind = automation::AutomationEvent::Kind;
     const QString text = QString::fromStdString(event.text);
+    const bool fault = event.kind == Kind::Fault || event.kind == Kind::Lost || event.kind == Kind::Overrun ||
+                       event.kind == Kind::Ghost;
     m_event->setText(text);
-    if (event.kind == Kind::Fault || event.kind == Kind::Lost || event.kind == Kind::Overrun ||
-        event.kind == Kind::Ghost) {
+    m_event->setVisible(!fault); // a fault is said once, on the red line
+    if (fault) {
         m_fault->setText(tr("Last fault: %1").arg(text));
         m_fault->show();
     }

@@ -25,7 +25,7 @@ namespace stellwerk::ui {
 // The Automatic panel: every train of the automatic operation with its block, state (and fault), destination
 // and schedule; placing, starting, stopping, handing back and removing a train, its schedule editor;
 // Resume after STOP or a restart, and stopping every automatic train at its next stop. The latest event
-// passes below the table, the last fault stays there until the next.
+// shows above the table, and the last fault in red until the next.
 class AutomaticPanel final : public QWidget {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(AutomaticPanel)
