@@ -264,8 +264,8 @@ void AutomaticPanel::updateButtons() {
 void AutomaticPanel::eventHappened(const automation::AutomationEvent& event) {
     using Kind = automation::AutomationEvent::Kind;
     const QString text = QString::fromStdString(event.text);
-    const bool fault = event.kind == Kind::Fault || event.kind == Kind::Lost || event.kind == Kind::Overrun ||
-                       event.kind == Kind::Ghost;
+    // An unknown occupant alone stops nobody (a train it stops gets a fault of its own): a passing event.
+    const bool fault = event.kind == Kind::Fault || event.kind == Kind::Lost || event.kind == Kind::Overrun;
     m_event->setText(text);
     m_event->setVisible(!fault); // a fault is said once, on the red line
     if (fault) {

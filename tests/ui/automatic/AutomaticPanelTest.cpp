@@ -205,9 +205,26 @@ TEST_F(AutomaticPanelTest, GermanNamesTheColumnsButtonsAndStates) {
               QStringLiteral("Zustand"));
     EXPECT_EQ(button("resumeButton")->text(), QStringLiteral("&Fortsetzen"));
     EXPECT_EQ(cell(Br218, AutomaticPanel::StateColumn), QStringLiteral("von Hand"));
+    panel->selectTrain(Br218);
+    button("placeTrainButton")->click();
+    ASSERT_NE(panel->placeDialog(), nullptr);
+    EXPECT_EQ(panel->placeDialog()->windowTitle(), QStringLiteral("Zug aufgleisen"));
     const QString folder = qEnvironmentVariable("STELLWERK_SCREENSHOT_DIR");
-    if (!folder.isEmpty())
+    if (!folder.isEmpty()) {
         panel->grab().save(folder + QStringLiteral("/automatic-panel-de.png"));
+        panel->placeDialog()->grab().save(folder + QStringLiteral("/automatic-place-de.png"));
+    }
+    panel->placeDialog()->reject();
+    button("scheduleButton")->click();
+    ASSERT_NE(panel->scheduleDialog(), nullptr);
+    panel->scheduleDialog()->addStop();
+    panel->scheduleDialog()->addStop();
+    panel->scheduleDialog()->setStop(1, "Abstellgleis", 12.5);
+    EXPECT_EQ(panel->scheduleDialog()->stops()->horizontalHeaderItem(1)->text(), QStringLiteral("Haltezeit"));
+    if (!folder.isEmpty())
+        panel->scheduleDialog()->grab().save(folder + QStringLiteral("/automatic-schedule-de.png"));
+    panel->scheduleDialog()->setUnsavedQuestion([](QWidget*) { return QMessageBox::Discard; });
+    panel->scheduleDialog()->reject();
 }
 
 } // namespace
