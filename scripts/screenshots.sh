@@ -50,8 +50,27 @@ LANG=de_DE.UTF-8 app --panel handheldsPanel --size 1366x768 --screenshot "$shots
 app --panel handheldsPanel --size 1920x1080 --screenshot "$shots/handhelds-1920x1080.png"
 LANG=de_DE.UTF-8 app --panel handheldsPanel --size 1920x1080 --screenshot "$shots/handhelds-de-1920x1080.png"
 
+# The Automatic panel after a restart: the demo's three trains placed again from the book where they stood,
+# waiting for Resume (nothing moves by itself), one with a schedule; at both sizes and in both languages.
+book=$config/data/Stellwerk/Stellwerk/trains
+mkdir -p "$book"
+cat >"$book/station-simulated.json" <<'BOOK'
+{"trains":[
+ {"loc":16385,"length":220,"pushPull":false,"block":"Gleis 1","blockId":0,"towards":"b","automatic":true,
+  "schedule":{"loop":true,"next":0,"stops":[{"block":"Gleis 2","dwell":20},{"block":"Gleis 1","dwell":30}]}},
+ {"loc":16386,"length":400,"pushPull":true,"block":"Block 2","blockId":0,"towards":"b","automatic":true,
+  "schedule":{"loop":false,"next":0,"stops":[]}},
+ {"loc":24,"length":180,"pushPull":false,"block":"Gleis 2","blockId":0,"towards":"b","automatic":false,
+  "schedule":{"loop":false,"next":0,"stops":[]}}]}
+BOOK
+auto_app() { XDG_DATA_HOME=$config/data app --panel automaticPanel "$@"; }
+auto_app --size 1366x768 --screenshot "$shots/automatic.png"
+LANG=de_DE.UTF-8 auto_app --size 1366x768 --screenshot "$shots/automatic-de.png"
+auto_app --size 1920x1080 --screenshot "$shots/automatic-1920x1080.png"
+LANG=de_DE.UTF-8 auto_app --size 1920x1080 --screenshot "$shots/automatic-de-1920x1080.png"
+
 # The single panels, drawn offscreen by their widget tests (among them the plan with its blocks and the popup of
 # a block, track-plan-blocks.png and -de.png); and the whole desk with the track power off and with the station
 # silent ("not reported"), at both sizes and in both languages (StationTrustTest).
 export QT_QPA_PLATFORM=offscreen STELLWERK_SCREENSHOT_DIR=$PWD/$shots
-build/tests/ui/stellwerk-ui-tests --gtest_filter='*Screenshot*:TrackPlanBlocksTest.Screenshots*:ThrottlePanelTest.ThreeThrottles*:TrackPlanPanelTest.TheDemoPlanIsDrawnInLightAndDarkPalettes:StationTrustTest.While*:StationTrustTest.WithThePowerOff*:AfterTroubleOnTheDesk.AStalledStation*'
+build/tests/ui/stellwerk-ui-tests --gtest_filter='*Screenshot*:TrackPlanBlocksTest.Screenshots*:ThrottlePanelTest.ThreeThrottles*:TrackPlanPanelTest.TheDemoPlanIsDrawnInLightAndDarkPalettes:StationTrustTest.While*:StationTrustTest.WithThePowerOff*:AfterTroubleOnTheDesk.AStalledStation*:TrackPlanAutomationTest.ThreeRunningTrains*:AutomaticPanelTest.German*'

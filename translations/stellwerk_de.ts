@@ -715,6 +715,85 @@
     </message>
 </context>
 <context>
+    <name>TrainStateText</name>
+    <message>
+        <source>automatic, waiting</source>
+        <translation>automatisch, wartet</translation>
+    </message>
+    <message>
+        <source>automatic, setting its way</source>
+        <translation>automatisch, stellt den Fahrweg</translation>
+    </message>
+    <message>
+        <source>automatic, running</source>
+        <translation>automatisch, fährt</translation>
+    </message>
+    <message>
+        <source>automatic, braking</source>
+        <translation>automatisch, bremst</translation>
+    </message>
+    <message>
+        <source>stopped, waiting for Resume</source>
+        <translation>angehalten, wartet auf Fortsetzen</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>angehalten</translation>
+    </message>
+    <message>
+        <source>stopped, state unknown (the station was silent)</source>
+        <translation>angehalten, Zustand unbekannt (die Zentrale schwieg)</translation>
+    </message>
+    <message>
+        <source>fault: %1</source>
+        <translation>Störung: %1</translation>
+    </message>
+    <message>
+        <source>lost: %1</source>
+        <translation>verloren: %1</translation>
+    </message>
+    <message>
+        <source>not placed: %1</source>
+        <translation>nicht aufgegleist: %1</translation>
+    </message>
+    <message>
+        <source>not placed</source>
+        <translation>nicht aufgegleist</translation>
+    </message>
+    <message>
+        <source>automatic, waiting for Resume</source>
+        <translation>automatisch, wartet auf Fortsetzen</translation>
+    </message>
+    <message>
+        <source>manual (taken by a throttle)</source>
+        <translation>von Hand (ein Fahrpult hat übernommen)</translation>
+    </message>
+    <message>
+        <source>manual</source>
+        <translation>von Hand</translation>
+    </message>
+    <message>
+        <source>none: any free block</source>
+        <translation>keiner: ein freier Block</translation>
+    </message>
+    <message>
+        <source>%1%2 (%3 s)</source>
+        <translation>%1%2 (%3 s)</translation>
+    </message>
+    <message>
+        <source>%1, done</source>
+        <translation>%1, erledigt</translation>
+    </message>
+    <message>
+        <source>%1, loop</source>
+        <translation>%1, im Kreis</translation>
+    </message>
+    <message>
+        <source>%1, once</source>
+        <translation>%1, einmal</translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::AftermathMenu</name>
     <message numerus="yes">
         <source>The layout is back in step: %n states read again.</source>
@@ -757,6 +836,117 @@
     <message>
         <source>Sends every locomotive the speed the station last confirmed (or stops them all, as chosen under After a failed command) and reads every state again</source>
         <translation>Schickt jeder Lok die zuletzt von der Zentrale bestätigte Geschwindigkeit (oder hält alle an, je nach Wahl unter „Nach einem fehlgeschlagenen Befehl“) und liest alle Zustände neu</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::AutomaticPanel</name>
+    <message>
+        <source>Trains&apos; book: %1</source>
+        <translation>Gespeicherte Züge: %1</translation>
+    </message>
+    <message>
+        <source>Train</source>
+        <translation>Zug</translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation>Block</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Destination</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Schedule</source>
+        <translation>Fahrplan</translation>
+    </message>
+    <message>
+        <source>&amp;Place…</source>
+        <translation>&amp;Aufgleisen…</translation>
+    </message>
+    <message>
+        <source>Put a locomotive in a block of the track plan, facing one end</source>
+        <translation>Eine Lok in einen Block des Gleisbilds stellen, mit der Spitze zu einem Ende</translation>
+    </message>
+    <message>
+        <source>S&amp;tart</source>
+        <translation>S&amp;tarten</translation>
+    </message>
+    <message>
+        <source>The automation drives the train from where it stands</source>
+        <translation>Die Automatik fährt den Zug von dort, wo er steht</translation>
+    </message>
+    <message>
+        <source>St&amp;op</source>
+        <translation>An&amp;halten</translation>
+    </message>
+    <message>
+        <source>The train stops and becomes manual; its track stays reserved for it</source>
+        <translation>Der Zug hält und fährt wieder von Hand; sein Gleis bleibt für ihn reserviert</translation>
+    </message>
+    <message>
+        <source>&amp;Hand back</source>
+        <translation>&amp;Zurückgeben</translation>
+    </message>
+    <message>
+        <source>Give a train a throttle took back to the automation, where it stands</source>
+        <translation>Einen Zug, den ein Fahrpult übernommen hat, dort, wo er steht, der Automatik zurückgeben</translation>
+    </message>
+    <message>
+        <source>Sche&amp;dule…</source>
+        <translation>&amp;Fahrplan…</translation>
+    </message>
+    <message>
+        <source>The blocks the train runs to, how long it stands at each, once or in a loop</source>
+        <translation>Die Blöcke, die der Zug anfährt, wie lange er jeweils hält, einmal oder im Kreis</translation>
+    </message>
+    <message>
+        <source>Re&amp;move</source>
+        <translation>Ent&amp;fernen</translation>
+    </message>
+    <message>
+        <source>Take the train off the automation and out of the book</source>
+        <translation>Den Zug aus der Automatik und aus den gespeicherten Zügen nehmen</translation>
+    </message>
+    <message>
+        <source>&amp;Resume</source>
+        <translation>&amp;Fortsetzen</translation>
+    </message>
+    <message>
+        <source>After STOP, a fault or a restart: the automatic trains go on</source>
+        <translation>Nach STOP, einer Störung oder einem Neustart: die automatischen Züge fahren weiter</translation>
+    </message>
+    <message>
+        <source>Stop all at next stop</source>
+        <translation>Alle am nächsten Halt anhalten</translation>
+    </message>
+    <message>
+        <source>Every automatic train runs on to its next stop and stays there, manual</source>
+        <translation>Jeder automatische Zug fährt bis zu seinem nächsten Halt und bleibt dort stehen, von Hand</translation>
+    </message>
+    <message>
+        <source>Automatic operation needs a station (or an opened layout) with a track plan.</source>
+        <translation>Der Automatikbetrieb braucht eine Zentrale (oder eine geöffnete Anlage) mit Gleisbild.</translation>
+    </message>
+    <message>
+        <source>Automation is stopped (STOP, a fault or a restart): nothing moves until you press Resume.</source>
+        <translation>Die Automatik ist angehalten (STOP, eine Störung oder ein Neustart): nichts fährt, bis Sie Fortsetzen drücken.</translation>
+    </message>
+    <message>
+        <source>No trains yet: place one with Place…, then start it.</source>
+        <translation>Noch keine Züge: gleisen Sie einen mit Aufgleisen… auf und starten Sie ihn.</translation>
+    </message>
+    <message>
+        <source>Trains are saved in %1</source>
+        <translation>Die Züge werden gespeichert in %1</translation>
+    </message>
+    <message>
+        <source>Last fault: %1</source>
+        <translation>Letzte Störung: %1</translation>
     </message>
 </context>
 <context>
@@ -2692,6 +2882,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>Set back after trouble</source>
         <translation>Nach Störung zurückgesetzt</translation>
     </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatik</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::OrcDeviceView</name>
@@ -2754,10 +2948,6 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
 <context>
     <name>stellwerk::ui::PlaceTrainDialog</name>
     <message>
-        <source>Place a train in %1</source>
-        <translation>Zug in %1 aufgleisen</translation>
-    </message>
-    <message>
         <source>End %1, %2</source>
         <translation>Ende %1, %2</translation>
     </message>
@@ -2768,10 +2958,6 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Locomotive:</source>
         <translation>Lok:</translation>
-    </message>
-    <message>
-        <source>Facing:</source>
-        <translation>Fährt zu:</translation>
     </message>
     <message>
         <source>Length:</source>
@@ -2804,6 +2990,22 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>towards the end of the track</source>
         <translation>Richtung Gleisende</translation>
+    </message>
+    <message>
+        <source>Place a train</source>
+        <translation>Zug aufgleisen</translation>
+    </message>
+    <message>
+        <source>May change direction in any block (push-pull)</source>
+        <translation>Darf in jedem Block die Richtung wechseln (Wendezug)</translation>
+    </message>
+    <message>
+        <source>Block:</source>
+        <translation>Block:</translation>
+    </message>
+    <message>
+        <source>Its front faces:</source>
+        <translation>Seine Spitze zeigt zu:</translation>
     </message>
 </context>
 <context>
@@ -3308,6 +3510,53 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Inputs</source>
         <translation>Eingänge</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::ScheduleDialog</name>
+    <message>
+        <source>Schedule changed</source>
+        <translation>Fahrplan geändert</translation>
+    </message>
+    <message>
+        <source>Keep the changes to the schedule?</source>
+        <translation>Die Änderungen am Fahrplan behalten?</translation>
+    </message>
+    <message>
+        <source>Schedule of %1</source>
+        <translation>Fahrplan von %1</translation>
+    </message>
+    <message>
+        <source>Stop (block)</source>
+        <translation>Halt (Block)</translation>
+    </message>
+    <message>
+        <source>Dwell</source>
+        <translation>Haltezeit</translation>
+    </message>
+    <message>
+        <source>&amp;Add stop</source>
+        <translation>Halt &amp;hinzufügen</translation>
+    </message>
+    <message>
+        <source>&amp;Remove stop</source>
+        <translation>Halt &amp;entfernen</translation>
+    </message>
+    <message>
+        <source>Move &amp;up</source>
+        <translation>Nach &amp;oben</translation>
+    </message>
+    <message>
+        <source>Move &amp;down</source>
+        <translation>Nach &amp;unten</translation>
+    </message>
+    <message>
+        <source>Run in a &amp;loop (after the last stop, the first again)</source>
+        <translation>Im &amp;Kreis fahren (nach dem letzten Halt wieder der erste)</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
     </message>
 </context>
 <context>

@@ -715,6 +715,85 @@
     </message>
 </context>
 <context>
+    <name>TrainStateText</name>
+    <message>
+        <source>automatic, waiting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>automatic, setting its way</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>automatic, running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>automatic, braking</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stopped, waiting for Resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stopped, state unknown (the station was silent)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fault: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>lost: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not placed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not placed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>automatic, waiting for Resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>manual (taken by a throttle)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>manual</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none: any free block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1%2 (%3 s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, loop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, once</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stellwerk::ui::AftermathMenu</name>
     <message numerus="yes">
         <source>The layout is back in step: %n states read again.</source>
@@ -756,6 +835,117 @@
     </message>
     <message>
         <source>Sends every locomotive the speed the station last confirmed (or stops them all, as chosen under After a failed command) and reads every state again</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::AutomaticPanel</name>
+    <message>
+        <source>Trains&apos; book: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Train</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Destination</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Schedule</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Place…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Put a locomotive in a block of the track plan, facing one end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S&amp;tart</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The automation drives the train from where it stands</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>St&amp;op</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The train stops and becomes manual; its track stays reserved for it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Hand back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give a train a throttle took back to the automation, where it stands</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sche&amp;dule…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The blocks the train runs to, how long it stands at each, once or in a loop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Re&amp;move</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Take the train off the automation and out of the book</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>After STOP, a fault or a restart: the automatic trains go on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop all at next stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every automatic train runs on to its next stop and stays there, manual</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automatic operation needs a station (or an opened layout) with a track plan.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automation is stopped (STOP, a fault or a restart): nothing moves until you press Resume.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No trains yet: place one with Place…, then start it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Trains are saved in %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Last fault: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2688,6 +2878,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>Set back after trouble</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Automatic</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::OrcDeviceView</name>
@@ -2750,10 +2944,6 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
 <context>
     <name>stellwerk::ui::PlaceTrainDialog</name>
     <message>
-        <source>Place a train in %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>End %1, %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2763,10 +2953,6 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Locomotive:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Facing:</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2799,6 +2985,22 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>towards the end of the track</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Place a train</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>May change direction in any block (push-pull)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Block:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Its front faces:</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3303,6 +3505,53 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Inputs</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::ScheduleDialog</name>
+    <message>
+        <source>Schedule changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keep the changes to the schedule?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Schedule of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop (block)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dwell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Add stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Remove stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move &amp;up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move &amp;down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run in a &amp;loop (after the last stop, the first again)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> s</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -9,6 +9,7 @@
 #include "model/OccupantBook.h"
 #include "model/Railway.h"
 #include "monitor/FrameDecoderPanel.h"
+#include "operation/Operation.h"
 #include "shell/ApplicationInfo.h"
 #include "shell/LanguageSettings.h"
 #include "shell/MainWindow.h"
@@ -25,6 +26,7 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTimer>
 #include <cstdio>
@@ -273,9 +275,21 @@ int main(int argc, char* argv[]) {
     QObject::connect(
         &railways, &stellwerk::binding::RailwayBinding::railwayChanged, &railways,
         [&demoOccupants](stellwerk::model::Railway* railway) { demoOccupants.setRailway(railway); });
+    // Automatic operation on the railway and the layout in use, with the book of trains kept beside the
+    // layout (a station's in the program's data folder, by the station's address).
+    stellwerk::operation::Operation::Options operationOptions;
+    operationOptions.dataDir =
+        QStandardPaths::writableLocation(QStandardPaths::AppDataLocation).toStdString();
+    stellwerk::operation::Operation operation(layout, operationOptions);
+    operation.setStationName([&connection] { return connection.address().toStdString(); });
+    QObject::connect(&railways, &stellwerk::binding::RailwayBinding::railwayChanged, &operation,
+                     &stellwerk::operation::Operation::setRailway);
     stellwerk::ui::MainWindow window(translations);
     window.setConnection(&connection);
     window.setLayoutInUse(&layout);
+    window.setOperation(&operation);
+    QObject::connect(&operation, &stellwerk::operation::Operation::automationChanged, &window,
+                     &stellwerk::ui::MainWindow::setAutomation);
     QObject::connect(&railways, &stellwerk::binding::RailwayBinding::railwayChanged, &window,
                      &stellwerk::ui::MainWindow::setRailway);
     if (!options.captureFile.isEmpty()) {

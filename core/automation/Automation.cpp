@@ -91,6 +91,28 @@ std::string Automation::trainName(std::uint32_t locId) const {
                 : QStringLiteral("0x%1").arg(locId, 4, 16, QLatin1Char('0')).toStdString();
 }
 
+void Automation::run(std::chrono::milliseconds interval) {
+    dispatcher_.occupancyRead(occupiedContacts());
+    if (const auto power = railway_.power(); power && *power != station::PowerState::Running)
+        dispatcher_.halt("the track power is off");
+    carryOut();
+    if (interval.count() > 0)
+        timer_.start(interval);
+}
+
+void Automation::stopByHand(std::uint32_t locId, const std::string& by) {
+    dispatcher_.takenByHand(locId, by);
+    commanding_ = true;
+    railway_.setSpeed(locId, 0);
+    commanding_ = false;
+    carryOut();
+}
+
+void Automation::stopAtNextStop() {
+    dispatcher_.stopAtNextStop(clock_());
+    carryOut();
+}
+
 void Automation::start(std::chrono::milliseconds interval) {
     dispatcher_.occupancyRead(occupiedContacts());
     for (const auto& [locId, train] : dispatcher_.trains()) {
@@ -211,8 +233,10 @@ bool Automation::heardOwnCommand(std::uint32_t locId, const model::Locomotive& l
     if (!loco.isSpeedReported())
         return true;
     const auto heard = std::find(told.unheard.begin(), told.unheard.end(), int(loco.speed()));
+    // The answer to a command of ours may have come (and left the list) before the change it made is
+    // heard: a train braking when STOP came hears its creep speed after the stop was sent.
     if (heard == told.unheard.end())
-        return loco.speed() == told.speed;
+        return loco.speed() == told.speed || loco.speed() == told.heard;
     told.unheard.erase(told.unheard.begin(), heard + 1);
     told.heard = loco.speed();
     return true;

@@ -45,6 +45,7 @@ public:
                                             int lengthMm = 200);
     // Takes the train off the railway (stopped if the automation drove it); false when it was not placed.
     bool remove(std::uint32_t locId);
+    void setPushPull(std::uint32_t locId, bool pushPull) { dispatcher_.setPushPull(locId, pushPull); }
     // The placed train's schedule; the sentence says why not.
     std::optional<std::string> setSchedule(std::uint32_t locId, Schedule schedule) {
         return dispatcher_.setSchedule(locId, std::move(schedule));
@@ -53,10 +54,17 @@ public:
     // `interval`; 0: the caller calls tick()).
     void start(std::chrono::milliseconds interval = std::chrono::milliseconds(20));
     void tick();
+    // For a program that hands trains over one by one (the desktop): reads the occupancy and starts the
+    // clock, and hands no train over. While the track power is known to be off, automation stays halted.
+    void run(std::chrono::milliseconds interval = std::chrono::milliseconds(20));
     // The user resumes after STOP, a fault or the station's return.
     void resume();
     // A manual train (a throttle took it) handed back to the automation where it stands.
     void handBack(std::uint32_t locId);
+    // The user stops one train: it becomes manual and stands; its blocks and way stay reserved for it.
+    void stopByHand(std::uint32_t locId, const std::string& by);
+    // Every automatic train stops at its next stop and stays there, manual (Dispatcher::stopAtNextStop).
+    void stopAtNextStop();
     // Stops every train it drove and gives back every reservation but the track they stand on.
     void finish();
 

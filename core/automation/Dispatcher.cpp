@@ -85,6 +85,7 @@ bool Dispatcher::remove(std::uint32_t locId) {
     tracking_.remove(locId);
     journeys_.erase(locId);
     mustBeSeen_.erase(locId);
+    stopAtStop_.erase(locId);
     trains_.erase(found);
     event(AutomationEvent::Kind::Released, locId, block,
           name + " taken off \"" + blockName(block) + "\": no longer tracked");
@@ -98,6 +99,7 @@ void Dispatcher::setMode(std::uint32_t locId, TrainMode mode, Millis now) {
     Train& train = found->second;
     train.mode = mode;
     journeys_.erase(locId);
+    stopAtStop_.erase(locId);
     if (mode == TrainMode::Automatic && train.state != TrainState::Lost) {
         train.state = TrainState::Waiting;
         journeys_[locId].dwellUntil = now;
@@ -109,6 +111,11 @@ std::optional<std::string> Dispatcher::setSchedule(std::uint32_t locId, Schedule
     const auto found = trains_.find(locId);
     if (found == trains_.end())
         return "0x" + std::to_string(locId) + " has a schedule but is not placed";
+    if (schedule.stops.empty()) {
+        found->second.pushPull = schedule.pushPull;
+        found->second.schedule.reset();
+        return std::nullopt;
+    }
     for (ScheduleStop& stop : schedule.stops) {
         const auto block = std::find_if(graph_.blocks().begin(), graph_.blocks().end(),
                                         [&](const trackgraph::Block& b) { return b.name == stop.block; });
@@ -134,6 +141,7 @@ void Dispatcher::takenByHand(std::uint32_t locId, const std::string& by) {
     train.mode = TrainMode::Manual;
     train.state = TrainState::Stopped;
     journeys_.erase(locId);
+    stopAtStop_.erase(locId);
     event(AutomationEvent::Kind::Manual, locId, tracking_.body(locId)->frontBlock,
           train.name + " is driven by " + by + ": automation leaves it, its blocks stay reserved");
 }

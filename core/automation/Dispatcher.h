@@ -54,7 +54,8 @@ public:
     bool remove(std::uint32_t locId);
     void setMode(std::uint32_t locId, TrainMode mode, Millis now);
     // The train runs to the schedule's stops in turn (from its `next`), standing at each for its dwell; the
-    // sentence says why not (a block no track plan block is named).
+    // sentence says why not (a block no track plan block is named). A schedule without stops takes the
+    // train's schedule away (it runs to any free block again).
     std::optional<std::string> setSchedule(std::uint32_t locId, Schedule schedule);
     // A push-pull train may change direction in any block when it finds no way on forwards; any other
     // train only at a terminus (no way leads on from the end it faces: buffer stops), and only when a
@@ -74,6 +75,10 @@ public:
     void turnoutReported(std::int64_t article, int position, Millis now);
     // Timers: departures, braking, stops, dwells, lost trains, turnouts not confirmed.
     void tick(Millis now);
+
+    // Every automatic train stops at its next stop and stays there, manual: a standing one at once (its
+    // way ahead given back), a running one once it has arrived (Stopped event). Started again one by one.
+    void stopAtNextStop(Millis now);
 
     // STOP (or track power off): every automatic train stops, and nothing starts again until resume().
     void halt(const std::string& why);
@@ -140,6 +145,7 @@ private:
     void brake(Train& train);
     void arrive(Train& train, Journey& journey, Millis now);
     void reachedStop(Train& train, Journey& journey, int block, Millis now);
+    void holdAtStop(Train& train, int block);
     // A way on, and whether the train must change direction first.
     struct Way {
         Path path;
@@ -166,6 +172,7 @@ private:
     std::map<std::uint32_t, Journey> journeys_;
     std::map<std::int64_t, int> positions_; // turnouts as the railway reports them
     std::set<std::uint32_t> mustBeSeen_;    // ran or were seen when the station fell silent
+    std::set<std::uint32_t> stopAtStop_;    // running on to their next stop, then manual (stopAtNextStop)
     bool paused_ = false;
     int blockMoves_ = 0;
     int faults_ = 0;

@@ -281,6 +281,12 @@ void Dispatcher::arrive(Train& train, Journey& journey, Millis now) {
     stopTrain(train, TrainState::Waiting, AutomationEvent::Kind::Stopped, train.name + " stopped");
     journey = Journey{};
     train.destination.reset();
+    if (stopAtStop_.erase(train.locId) > 0) {
+        if (train.schedule && !train.schedule->done() &&
+            train.schedule->stops[train.schedule->next].blockId == block)
+            train.schedule->advance();
+        return holdAtStop(train, block);
+    }
     if (train.schedule && !train.schedule->done() &&
         train.schedule->stops[train.schedule->next].blockId == block)
         return reachedStop(train, journey, block, now);
@@ -301,6 +307,35 @@ void Dispatcher::reachedStop(Train& train, Journey& journey, int block, Millis n
               " of " + std::to_string(schedule.stops.size()) + ", for " +
               std::to_string(stop.dwellMs / 1000) + " s");
     schedule.advance();
+}
+
+// Asked to stop at its next stop: it stays where it arrived, manual, holding its block.
+void Dispatcher::holdAtStop(Train& train, int block) {
+    giveBackWay(train.locId);
+    train.mode = TrainMode::Manual;
+    train.state = TrainState::Stopped;
+    event(AutomationEvent::Kind::Arrived, train.locId, block,
+          train.name + " arrived in \"" + blockName(block) + "\" and stays there: start it again to go on");
+}
+
+void Dispatcher::stopAtNextStop(Millis /*now*/) {
+    std::vector<std::uint32_t> standing;
+    for (auto& [locId, train] : trains_) {
+        if (train.mode != TrainMode::Automatic)
+            continue;
+        if (moving(train.state) && !paused_)
+            stopAtStop_.insert(locId);
+        else
+            standing.push_back(locId);
+    }
+    for (const std::uint32_t locId : standing) {
+        Train& train = trains_.at(locId);
+        if (train.state == TrainState::SettingWay || train.state == TrainState::Waiting)
+            command(DriveCommand::speedOf(locId, 0));
+        journeys_.erase(locId);
+        train.destination.reset();
+        holdAtStop(train, tracking_.body(locId)->frontBlock);
+    }
 }
 
 void Dispatcher::stopTrain(Train& train, TrainState state, AutomationEvent::Kind kind,
@@ -369,6 +404,11 @@ void Dispatcher::resume(Millis now) {
     for (auto& [locId, train] : trains_) {
         if (train.mode != TrainMode::Automatic || train.state == TrainState::Lost)
             continue;
+        if (stopAtStop_.erase(locId) > 0) { // asked to stop at its stop, and stopped before it: it stays
+            journeys_.erase(locId);
+            holdAtStop(train, tracking_.body(locId)->frontBlock);
+            continue;
+        }
         if (train.state != TrainState::Waiting)
             command(DriveCommand::speedOf(locId, 0));
         giveBackWay(locId);

@@ -2,13 +2,15 @@
 # track power line, the "layout stopped" banner, the red bar of a file's problem), the railway's locomotives
 # as a table, the row index of such tables, greys that keep their contrast, the function keys' and the
 # toolbars' icons, two parts side by side or stacked and widgets wrapping into rows as a panel's width
-# allows, the wheel that only scrolls past a panel's controls, and where the remembered settings live.
+# allows, the wheel that only scrolls past a panel's controls, where the remembered settings live, and
+# the dialog that places a train for the automation (the Automatic panel and the track plan both open it).
 target_sources(stellwerk-ui PRIVATE
     common/Contrast.cpp common/Contrast.h
     common/FunctionIcons.cpp common/FunctionIcons.h
     common/LayoutStateBanner.cpp common/LayoutStateBanner.h
     common/LocomotiveMime.cpp common/LocomotiveMime.h
     common/LocomotivePictureBook.cpp common/LocomotivePictureBook.h
+    common/PlaceTrainDialog.cpp common/PlaceTrainDialog.h
     common/LocomotiveTableModel.cpp common/LocomotiveTableModel.h
     common/NotReported.cpp common/NotReported.h
     common/PowerStatus.cpp common/PowerStatus.h

@@ -2,6 +2,7 @@
 
 #include "aftertrouble/AftermathMenu.h"
 #include "aftertrouble/CorrectionNotice.h"
+#include "automatic/AutomaticPanel.h"
 #include "common/LocomotivePictureBook.h"
 #include "common/PowerStatus.h"
 #include "common/ToolIcons.h"
@@ -177,6 +178,8 @@ void MainWindow::createPanels() {
     m_workspace->addPanel(m_handhelds, Qt::BottomDockWidgetArea, m_layoutOverview);
     m_devices = new DevicesPanel(this);
     m_workspace->addPanel(m_devices, Qt::BottomDockWidgetArea, m_layoutOverview);
+    m_automatic = new AutomaticPanel(this);
+    m_workspace->addPanel(m_automatic, Qt::BottomDockWidgetArea, m_layoutOverview);
     for (QWidget* front : {static_cast<QWidget*>(m_turnoutPanel), static_cast<QWidget*>(m_throttlePanel),
                            static_cast<QWidget*>(m_layoutOverview)})
         m_workspace->showPanel(front);
@@ -270,6 +273,15 @@ void MainWindow::setConnection(connection::StationConnection* station) {
                 &MainWindow::connectionStateChanged);
         connect(m_connection, &QObject::destroyed, this, [this] { m_connection = nullptr; });
     }
+}
+
+void MainWindow::setOperation(operation::Operation* operation) {
+    m_automatic->setOperation(operation);
+}
+
+void MainWindow::setAutomation(automation::Automation* automation) {
+    m_automatic->setAutomation(automation);
+    m_trackPlan->setAutomation(automation);
 }
 
 void MainWindow::setLayoutInUse(model::LayoutInUse* layout) {
@@ -418,6 +430,7 @@ void MainWindow::retranslateDocks() {
     title(m_layoutOverview, tr("Overview"));
     title(m_busMonitor, tr("Bus monitor"));
     title(m_frameDecoder, tr("Frame decoder"));
+    title(m_automatic, tr("Automatic"));
     title(m_handhelds, tr("Handhelds"));
     title(m_devices, tr("Devices"));
 }

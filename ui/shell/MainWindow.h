@@ -7,6 +7,9 @@
 
 class QToolBar;
 
+namespace stellwerk::automation {
+class Automation;
+}
 namespace stellwerk::connection {
 class StationConnection;
 }
@@ -14,10 +17,14 @@ namespace stellwerk::model {
 class LayoutInUse;
 class Railway;
 } // namespace stellwerk::model
+namespace stellwerk::operation {
+class Operation;
+}
 
 namespace stellwerk::ui {
 
 class AftermathMenu;
+class AutomaticPanel;
 class BusMonitorPanel;
 class CorrectionNotice;
 class ConnectionStatus;
@@ -60,6 +67,7 @@ public:
     FrameDecoderPanel* frameDecoder() const { return m_frameDecoder; }
     HandheldsPanel* handhelds() const { return m_handhelds; }
     DevicesPanel* devices() const { return m_devices; }
+    AutomaticPanel* automaticPanel() const { return m_automatic; }
     LayoutOverview* layoutOverview() const { return m_layoutOverview; }
     StatusPanel* statusPanel() const { return m_statusPanel; }
     BusMonitorPanel* busMonitor() const { return m_busMonitor; }
@@ -83,6 +91,11 @@ public:
     // The station connection the status bar shows and Station → Connect… reconnects (null: none). It
     // must outlive the window or be replaced before it goes.
     void setConnection(connection::StationConnection* station);
+    // The automatic operation the Automatic panel shows and commands (it must outlive the window).
+    void setOperation(operation::Operation* operation);
+    // The automation now (Operation::automationChanged; null while there is none), for every panel that
+    // shows or places trains: the Automatic panel (and the track plan, once it takes one).
+    void setAutomation(automation::Automation* automation);
     connection::StationConnection* stationConnection() const { return m_connection; }
 
     // Shows the window where it was left, or at the first start sized to the screen (FirstWindowSize).
@@ -120,6 +133,7 @@ private:
     LayoutOverview* m_layoutOverview = nullptr;
     HandheldsPanel* m_handhelds = nullptr;
     DevicesPanel* m_devices = nullptr;
+    AutomaticPanel* m_automatic = nullptr;
     FrameDecoderPanel* m_frameDecoder = nullptr;
     StatusPanel* m_statusPanel = nullptr;
     BusMonitorPanel* m_busMonitor = nullptr;

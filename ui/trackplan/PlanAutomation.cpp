@@ -114,7 +114,7 @@ QString PlanAutomation::toolTipOf(int block) const {
 }
 
 std::optional<QString> PlanAutomation::place(std::uint32_t locId, int block, trackgraph::End towards,
-                                             int lengthMm) {
+                                             int lengthMm, bool pushPull) {
     if (!isActive())
         return tr("No automation runs on this layout.");
     const TrainsOnPlan::BlockState there = TrainsOnPlan::of(m_automation->dispatcher()).block(block);
@@ -123,6 +123,8 @@ std::optional<QString> PlanAutomation::place(std::uint32_t locId, int block, tra
                    ? tr("The block is reserved for %1: choose another block.").arg(there.train)
                    : tr("%1 is in this block already: remove it first.").arg(there.train);
     const std::optional<std::string> problem = m_automation->placeInBlock(locId, block, towards, lengthMm);
+    if (!problem)
+        m_automation->setPushPull(locId, pushPull);
     refresh();
     if (problem)
         return QString::fromStdString(*problem);

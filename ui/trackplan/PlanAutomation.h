@@ -44,8 +44,10 @@ public:
     // A line for the block's tooltip: "Automation: reserved for BR 218".
     QString toolTipOf(int block) const;
 
-    // Puts a locomotive of the railway in the block facing `towards`; the reason in words when refused.
-    std::optional<QString> place(std::uint32_t locId, int block, trackgraph::End towards, int lengthMm);
+    // Puts a locomotive of the railway in the block facing `towards` (a push-pull train may change direction
+    // in any block); the reason in words when refused.
+    std::optional<QString> place(std::uint32_t locId, int block, trackgraph::End towards, int lengthMm,
+                                 bool pushPull = false);
     bool remove(std::uint32_t locId);
 
     // Reads the automation again now (instead of after the batch); the tests' and the plan's own after a

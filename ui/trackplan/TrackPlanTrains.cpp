@@ -1,9 +1,9 @@
 // The track plan's part in automatic operation (TrackPlanPanel's functions about trains): the automation
 // followed, its states in the tooltips, trains placed from a block's menu or by a locomotive dropped on a
 // block, and taken off again.
+#include "common/PlaceTrainDialog.h"
 #include "model/Railway.h"
 #include "trackplan/BlockLegend.h"
-#include "trackplan/PlaceTrainDialog.h"
 #include "trackplan/PlanAutomation.h"
 #include "trackplan/PlanGraph.h"
 #include "trackplan/TrackPageView.h"
@@ -69,15 +69,18 @@ bool TrackPlanPanel::fillTrainEntries(QMenu& menu, model::TileRef tile, bool fil
     return filled;
 }
 
-// The dialog asks which locomotive, facing which end, how long; accepted, the train is placed.
+// The dialog asks which locomotive, facing which end, how long, push-pull or not; accepted, it is placed.
 void TrackPlanPanel::askToPlace(int block) {
     if (!m_railway || !m_graph)
         return;
-    auto* dialog = new PlaceTrainDialog(*m_railway, m_graph->graph(), block, this);
+    PlaceTrainDialog::Choice start;
+    start.block = block;
+    auto* dialog = new PlaceTrainDialog(*m_railway, m_graph->graph(), start, this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &QDialog::accepted, this, [this, dialog] {
-        const std::optional<QString> problem = m_planAutomation->place(dialog->locomotive(), dialog->block(),
-                                                                       dialog->towards(), dialog->lengthMm());
+        const PlaceTrainDialog::Choice choice = dialog->choice();
+        const std::optional<QString> problem = m_planAutomation->place(
+            choice.locId, choice.block, choice.towards, choice.lengthMm, choice.pushPull);
         showProblem(problem ? std::function<QString()>([text = *problem] { return text; })
                             : std::function<QString()>());
     });

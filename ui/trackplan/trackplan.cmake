@@ -20,7 +20,6 @@ target_sources(stellwerk-ui PRIVATE
     trackplan/PageZoom.cpp trackplan/PageZoom.h
     trackplan/PaintBands.cpp trackplan/PaintBands.h
     trackplan/PaintThreads.cpp trackplan/PaintThreads.h
-    trackplan/PlaceTrainDialog.cpp trackplan/PlaceTrainDialog.h
     trackplan/PlanAutomation.cpp trackplan/PlanAutomation.h
     trackplan/PlanGraph.cpp trackplan/PlanGraph.h
     trackplan/SetRoutes.cpp trackplan/SetRoutes.h

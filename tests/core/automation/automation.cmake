@@ -2,6 +2,7 @@
 # way chosen, the dispatcher told contacts and turnout answers); the trains on the simulator are in tests/e2e.
 target_sources(stellwerk-core-tests PRIVATE
     automation/AutomationTestSupport.h
+    automation/DeskOperationTest.cpp
     automation/DispatcherTest.cpp
     automation/PlaceInBlockTest.cpp
     automation/PathChoiceTest.cpp

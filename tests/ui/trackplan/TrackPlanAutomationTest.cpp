@@ -17,7 +17,7 @@
 #include "trackplan/BlockLegend.h"
 #include "trackplan/BlockOutlines.h"
 #include "trackplan/BlockViewSettings.h"
-#include "trackplan/PlaceTrainDialog.h"
+#include "common/PlaceTrainDialog.h"
 #include "trackplan/PlanAutomation.h"
 #include "trackplan/PlanGraph.h"
 #include "trackplan/TrackColors.h"
