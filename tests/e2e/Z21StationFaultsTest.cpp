@@ -1,0 +1,226 @@
+// Issue 35's faults for phones: a Z21 client of the tests' own drives the demo's V 100 (MM, Z21 address 24)
+// through the Z21 server in front of the railway the app holds (StationConnection and RailwayBinding, the
+// default timings) on the real stellwerk-sim, and the station is stopped (SIGSTOP) for 1 s and for 20 s, or
+// killed and started again on its port after 1 s. Asserted: while the station is not heard the client's
+// drives are refused (answered "track power off") and none is carried out later; the station ends with the
+// speed it last confirmed before the trouble, asked of the station itself; the client is told the power is
+// on again once the station is heard.
+
+#include "../core/z21server/Z21TestClient.h"
+#include "E2eSupport.h"
+#include "SimProgram.h"
+#include "binding/RailwayBinding.h"
+#include "connection/StationConnection.h"
+#include "model/Railway.h"
+#include "model/Z21Addresses.h"
+#include "station/StateQueries.h"
+#include "z21server/Z21Server.h"
+
+#include <QElapsedTimer>
+#include <QTest>
+#include <iostream>
+
+namespace stellwerk::e2e {
+namespace {
+
+using connection::StationConnection;
+using z21server::test::Z21TestClient;
+
+constexpr std::uint16_t V100Address = 24; // MM keeps its address on the Z21
+
+z21::SetLocoDrive driveTo(std::uint8_t step) {
+    return z21::SetLocoDrive{V100Address, {z21::SpeedStepMode::Steps128, true, step, false}};
+}
+
+int speedOf(std::uint8_t step) {
+    return z21::systemSpeed({z21::SpeedStepMode::Steps128, true, step, false});
+}
+
+z21server::Z21ServerOptions loopback() {
+    z21server::Z21ServerOptions options;
+    options.address = QHostAddress::LocalHost;
+    options.port = 0; // a free one
+    return options;
+}
+
+// The real program on a loopback TCP port that stays the same when it is started again; the app's
+// connection and railway on it as the window holds them, and the Z21 server in front of that railway.
+class PhoneRig {
+public:
+    PhoneRig() : port_(freeTcpPort()) {
+        QObject::connect(&binding, &binding::RailwayBinding::railwayChanged, &binding,
+                         [this](model::Railway* railway) { z21.setRailway(railway); });
+    }
+
+    bool start() {
+        if (!startStation())
+            return false;
+        connection.connectTo(QStringLiteral("tcp://127.0.0.1:%1").arg(port_));
+        return z21.listen() && ready();
+    }
+    bool startStation() {
+        QStringList arguments = support::Quiet;
+        arguments[arguments.indexOf(QStringLiteral("--tcp-port")) + 1] = QString::number(port_);
+        sim = std::make_unique<support::SimProgram>(arguments);
+        return sim->tcpPort() == port_;
+    }
+
+    // Ready, the state reported, and no command waiting for its answer.
+    bool ready(int timeoutMs = 4 * WaitMs) {
+        return waitFor(
+            [&] {
+                model::Railway* railway = binding.railway();
+                return connection.state() == StationConnection::State::Ready && railway &&
+                       railway->isStateReported() && connection.session()->tracker().pendingCount() == 0;
+            },
+            timeoutMs);
+    }
+
+    // The speed the railway shows as confirmed, or -1 while it is not reported.
+    int confirmedSpeed() const {
+        const auto run =
+            binding.railway() ? binding.railway()->throttlePort().confirmed(Mm2Loco) : std::nullopt;
+        return run ? run->speed : -1;
+    }
+
+    // The speed the station itself says the locomotive has (its answer to a speed query), -1 without one.
+    int stationSpeed() {
+        auto answer = std::make_shared<std::optional<CommandResult>>();
+        connection.session()->request(station::speedQuery(cs2::LocId(Mm2Loco)),
+                                      [answer](const CommandResult& result) { *answer = result; });
+        if (!waitFor([&] { return answer->has_value(); }) || !answer->value().succeeded())
+            return -1;
+        const auto* speed = std::get_if<cs2::LocoSpeed>(&answer->value().answer->body);
+        return speed && speed->speed ? int(*speed->speed) : -1;
+    }
+
+    std::unique_ptr<support::SimProgram> sim;
+    StationConnection connection;
+    binding::RailwayBinding binding{connection};
+    model::Z21Addresses addresses;
+    z21server::Z21Server z21{addresses, loopback()};
+
+private:
+    std::uint16_t port_;
+};
+
+// A phone that follows the driving, has switched the track power on and drives V 100 at step 40, confirmed.
+std::unique_ptr<Z21TestClient> phoneDrivingAt40(PhoneRig& rig) {
+    auto phone = std::make_unique<Z21TestClient>(rig.z21.port());
+    phone->send(z21::SetBroadcastFlags{z21::broadcast::DrivingAndSwitching});
+    phone->send(z21::SetTrackPowerOn{});
+    EXPECT_TRUE(phone->waitFor<z21::TrackPowerOn>()) << "the station reported the power on";
+    phone->send(driveTo(40));
+    EXPECT_TRUE(waitFor([&] {
+        const auto info = phone->locoInfo(V100Address);
+        return info && info->speed.step == 40 && rig.confirmedSpeed() == speedOf(40);
+    }));
+    return phone;
+}
+
+// Drives every 100 ms until `until` holds: steps 90..99 while the server still passes drives on (the station
+// may carry those out late; the railway then corrects it), steps 101..126 once it refuses them; the steps
+// sent after the first refusal.
+std::vector<std::uint8_t> keepDriving(PhoneRig& rig, Z21TestClient& phone,
+                                      const std::function<bool()>& until) {
+    std::vector<std::uint8_t> refusedSteps;
+    int sent = 0;
+    QElapsedTimer last;
+    waitFor(
+        [&] {
+            if (!last.isValid() || last.elapsed() >= 100) {
+                const bool refusing = rig.z21.counters().refused > 0;
+                const auto step = std::uint8_t(refusing ? 101 + sent % 26 : 90 + sent % 10);
+                if (refusing)
+                    refusedSteps.push_back(step);
+                phone.send(driveTo(step));
+                ++sent;
+                last.start();
+            }
+            return until();
+        },
+        60000);
+    return refusedSteps;
+}
+
+// After the trouble: the station ends at the speed confirmed before it (asked of the station), the app
+// shows that and so does the phone's last loco info; no refused drive was ever carried out or shown.
+void expectNothingReplayed(PhoneRig& rig, Z21TestClient& phone, const std::vector<std::uint8_t>& refused) {
+    QTest::qWait(1500); // a late copy of a drive would have arrived by now
+    EXPECT_EQ(rig.stationSpeed(), speedOf(40)) << "the station ends where it was before the trouble";
+    EXPECT_EQ(rig.confirmedSpeed(), speedOf(40));
+    ASSERT_TRUE(phone.locoInfo(V100Address).has_value());
+    EXPECT_EQ(phone.locoInfo(V100Address)->speed.step, 40) << "the phone ends showing the station's speed";
+    for (const z21::LocoInfo& info : phone.all<z21::LocoInfo>())
+        EXPECT_EQ(std::count(refused.begin(), refused.end(), info.speed.step), 0)
+            << "shown step " << int(info.speed.step) << ", which was refused";
+}
+
+// The station is read again after the connection was reset, and the CS2 protocol has no question for the
+// track power: until the station reports it, the phone is not told "on" (the Z21 has no "unknown"; it stays
+// "off"). A phone's own "power on" is carried out now and the station's report tells every phone "on".
+void expectToldOnAgain(PhoneRig& rig, Z21TestClient& phone, std::size_t onBefore) {
+    ASSERT_FALSE(rig.binding.railway()->power().has_value()) << "the station has not reported its power";
+    QTest::qWait(300);
+    EXPECT_EQ(phone.all<z21::TrackPowerOn>().size(), onBefore) << "never told on while it is not known";
+    phone.send(z21::SetTrackPowerOn{});
+    EXPECT_TRUE(waitFor([&] { return phone.all<z21::TrackPowerOn>().size() > onBefore; }))
+        << "told the power is on again once the station reports it";
+}
+
+class Z21StalledStation : public ::testing::TestWithParam<int> {};
+
+TEST_P(Z21StalledStation, DrivesAreRefusedNothingIsReplayedAndThePowerIsToldOnAgain) {
+    const int stallMs = GetParam();
+    PhoneRig rig;
+    ASSERT_TRUE(rig.start());
+    auto phone = phoneDrivingAt40(rig);
+    const std::size_t offBefore = phone->all<z21::TrackPowerOff>().size();
+
+    ASSERT_TRUE(rig.sim->stall());
+    QElapsedTimer stalled;
+    stalled.start();
+    const std::vector<std::uint8_t> refusedSteps =
+        keepDriving(rig, *phone, [&] { return stalled.elapsed() >= stallMs; });
+    EXPECT_GT(rig.z21.counters().refused, 0U) << "drives are refused while the station is not heard";
+    EXPECT_GT(phone->all<z21::TrackPowerOff>().size(), offBefore) << "answered with track power off";
+    const std::size_t onBefore = phone->all<z21::TrackPowerOn>().size();
+    const std::uint64_t refused = rig.z21.counters().refused;
+    ASSERT_TRUE(rig.sim->wake());
+
+    ASSERT_TRUE(rig.ready(stallMs + 6 * WaitMs)) << "the station is heard and read again";
+    expectToldOnAgain(rig, *phone, onBefore);
+    expectNothingReplayed(rig, *phone, refusedSteps);
+    phone->send(driveTo(60));
+    EXPECT_TRUE(waitFor([&] { return rig.confirmedSpeed() == speedOf(60); })) << "it drives again";
+    EXPECT_EQ(refusedSteps.size() + 1, refused) << "the first refused drive and every one after it";
+    std::cout << "    " << stallMs / 1000 << " s: " << refused << " drives refused during the stall"
+              << std::endl;
+}
+
+// 1 s: shorter than the 3 s after which the station counts as silent, longer than a command's give-up
+// (three sends 250 ms apart). 20 s: past the silence and the connection's reset.
+INSTANTIATE_TEST_SUITE_P(Stall, Z21StalledStation, ::testing::Values(1000, 20000),
+                         [](const auto& info) { return "For" + std::to_string(info.param / 1000) + "s"; });
+
+TEST(Z21StationKilled, ThePhoneIsToldPowerOffThenOnAgainWhenTheStationIsBack) {
+    PhoneRig rig;
+    ASSERT_TRUE(rig.start());
+    auto phone = phoneDrivingAt40(rig);
+    const std::size_t offBefore = phone->all<z21::TrackPowerOff>().size();
+    rig.sim.reset(); // killed
+    ASSERT_TRUE(waitFor([&] { return phone->all<z21::TrackPowerOff>().size() > offBefore; }))
+        << "told the power is off";
+    QTest::qWait(1000);
+    const std::size_t onBefore = phone->all<z21::TrackPowerOn>().size();
+    phone->send(driveTo(90));
+    ASSERT_TRUE(waitFor([&] { return rig.z21.counters().refused > 0; })) << "refused while it is gone";
+    ASSERT_TRUE(rig.startStation());
+    ASSERT_TRUE(rig.ready(6 * WaitMs));
+    expectToldOnAgain(rig, *phone, onBefore);
+    QTest::qWait(1500);
+    EXPECT_EQ(rig.stationSpeed(), 0) << "the refused drive never reached the new station";
+}
+
+} // namespace
+} // namespace stellwerk::e2e
