@@ -86,6 +86,7 @@ bool Dispatcher::remove(std::uint32_t locId) {
     journeys_.erase(locId);
     mustBeSeen_.erase(locId);
     stopAtStop_.erase(locId);
+    signalsToStop(locId);
     trains_.erase(found);
     event(AutomationEvent::Kind::Released, locId, block,
           name + " taken off \"" + blockName(block) + "\": no longer tracked");
@@ -141,7 +142,7 @@ void Dispatcher::takenByHand(std::uint32_t locId, const std::string& by) {
     train.mode = TrainMode::Manual;
     train.state = TrainState::Stopped;
     journeys_.erase(locId);
-    stopAtStop_.erase(locId);
+    stopAtStop_.erase(locId); // a signal it was given stays until it has passed it (entered())
     event(AutomationEvent::Kind::Manual, locId, tracking_.body(locId)->frontBlock,
           train.name + " is driven by " + by + ": automation leaves it, its blocks stay reserved");
 }
@@ -240,6 +241,7 @@ void Dispatcher::entered(const Sighting& sighting, Millis now) {
     ++blockMoves_;
     event(AutomationEvent::Kind::Entered, train.locId, sighting.block,
           train.name + " entered \"" + blockName(sighting.block) + "\"");
+    signalsToStop(train.locId); // the signal it passed is behind it
     const std::uint32_t owner = reservations_.blockOwner(sighting.block);
     if (owner != 0 && owner != train.locId && trains_.at(owner).mode == TrainMode::Automatic)
         stopTrain(trains_.at(owner), TrainState::Fault, AutomationEvent::Kind::Fault,

@@ -35,7 +35,9 @@ public:
         Millis retry = 500;          // looking again for a way when none was free
         int creepMm = 120;           // a block with one contact: the last millimetres at creep speed
         int stopMarginMm = 90;       // and the front stops this far before the block's far end
-        Millis prepare = 1500;       // at a schedule's stop: the next way is set this long before it departs
+        int signalProceed = 1;       // a signal's position for proceed (Hp1, green) and for stop (Hp0, red)
+        int signalStop = 0;
+        Millis prepare = 1500; // at a schedule's stop: the next way is set this long before it departs
     };
 
     explicit Dispatcher(const trackgraph::TrackGraph& graph) : Dispatcher(graph, Options{}) {}
@@ -156,6 +158,10 @@ private:
     bool mayTurn(const Train& train, const trackgraph::BlockEnd& front) const;
     void turn(Train& train);
     void stopTrain(Train& train, TrainState state, AutomationEvent::Kind kind, const std::string& why);
+    // The signals at the start of a departing train's way show proceed; behind it (or when it stops, or
+    // is no longer the automation's) they show stop again.
+    void clearSignals(const Train& train);
+    void signalsToStop(std::uint32_t locId);
     void giveBackWay(std::uint32_t locId);
     Millis expectNextContact(const Train& train, const Journey& journey, Millis now) const;
     // Output.
@@ -173,6 +179,7 @@ private:
     std::map<std::int64_t, int> positions_; // turnouts as the railway reports them
     std::set<std::uint32_t> mustBeSeen_;    // ran or were seen when the station fell silent
     std::set<std::uint32_t> stopAtStop_;    // running on to their next stop, then manual (stopAtNextStop)
+    std::map<std::uint32_t, std::vector<std::int64_t>> cleared_; // signals showing proceed for a train
     bool paused_ = false;
     int blockMoves_ = 0;
     int faults_ = 0;

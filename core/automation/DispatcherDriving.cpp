@@ -204,6 +204,7 @@ void Dispatcher::depart(Train& train, Journey& journey, Millis now) {
         worstDwellError_ = std::max(worstDwellError_, now - journey.dwellUntil);
     train.state = TrainState::Running;
     journey.lostAt = expectNextContact(train, journey, now);
+    clearSignals(train);
     command(DriveCommand::speedOf(train.locId, options_.speeds.travel));
     event(AutomationEvent::Kind::Departed, train.locId, tracking_.body(train.locId)->frontBlock,
           train.name + " departed for \"" + blockName(journey.path.destination()) + "\"");
@@ -340,6 +341,7 @@ void Dispatcher::stopAtNextStop(Millis /*now*/) {
 
 void Dispatcher::stopTrain(Train& train, TrainState state, AutomationEvent::Kind kind,
                            const std::string& why) {
+    signalsToStop(train.locId);
     command(DriveCommand::speedOf(train.locId, 0));
     train.state = state;
     if (kind == AutomationEvent::Kind::Fault || kind == AutomationEvent::Kind::Lost ||
@@ -347,6 +349,26 @@ void Dispatcher::stopTrain(Train& train, TrainState state, AutomationEvent::Kind
         ++faults_;
     const TrainBody* body = tracking_.body(train.locId);
     event(kind, train.locId, body ? body->frontBlock : 0, why);
+}
+
+void Dispatcher::clearSignals(const Train& train) {
+    const TrainBody* body = tracking_.body(train.locId);
+    if (!body)
+        return;
+    for (const trackgraph::SignalOnTrack& signal : graph_.block(body->frontBlock).signalsAlong)
+        if (signal.article && signal.towards == body->towards) {
+            command(DriveCommand::switching(*signal.article, options_.signalProceed));
+            cleared_[train.locId].push_back(*signal.article);
+        }
+}
+
+void Dispatcher::signalsToStop(std::uint32_t locId) {
+    const auto cleared = cleared_.find(locId);
+    if (cleared == cleared_.end())
+        return;
+    for (const std::int64_t article : cleared->second)
+        command(DriveCommand::switching(article, options_.signalStop));
+    cleared_.erase(cleared);
 }
 
 // Everything the train holds ahead of the track it stands on.

@@ -224,8 +224,14 @@ TEST_F(DispatcherTest, ATrainTakenByHandKeepsItsWayAndHandedBackSetsOutFromWhere
     EXPECT_EQ(dispatcher.train(Loco)->mode, TrainMode::Manual);
     EXPECT_EQ(count(Kind::Manual), 1);
     EXPECT_EQ(count(Kind::Fault), 0);
-    EXPECT_TRUE(commands.empty()) << "nothing is sent to a train driven by hand";
+    EXPECT_TRUE(std::none_of(commands.begin(), commands.end(), [](const DriveCommand& c) {
+        return c.kind == DriveCommand::Kind::Speed;
+    })) << "nothing is sent to a train driven by hand";
+    EXPECT_EQ(commands,
+              std::vector<DriveCommand>{DriveCommand::switching(7, dispatcher.options().signalStop)})
+        << "the signal it passed shows stop behind it";
     EXPECT_EQ(dispatcher.reservations().blockOwner(Block1), Loco);
+    commands.clear();
     dispatcher.handBack(Loco, 60000);
     dispatcher.tick(60000);
     remember();
@@ -236,6 +242,40 @@ TEST_F(DispatcherTest, ATrainTakenByHandKeepsItsWayAndHandedBackSetsOutFromWhere
     EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::SettingWay);
     EXPECT_EQ(dispatcher.reservations().blockOwner(Block2), Loco) << "its new way, on from Block 1";
     EXPECT_EQ(dispatcher.reservations().blockOwner(Gleis1), 0u);
+}
+
+// The signal at the start of the way (P1, keyboard 7, at the end of Gleis 1 the train faces) shows proceed
+// only once every turnout is confirmed, and stop again as soon as the train has entered the next block.
+TEST_F(DispatcherTest, TheSignalAtTheStartShowsProceedOnlyAtDepartureAndStopBehindTheTrain) {
+    const DriveCommand proceed = DriveCommand::switching(7, dispatcher.options().signalProceed);
+    const DriveCommand stop = DriveCommand::switching(7, dispatcher.options().signalStop);
+    EXPECT_EQ(std::count(commands.begin(), commands.end(), proceed), 0) << "turnouts not confirmed yet";
+    confirmTurnouts(100);
+    ASSERT_EQ(dispatcher.train(Loco)->state, TrainState::Running);
+    const auto shown = std::find(commands.begin(), commands.end(), proceed);
+    ASSERT_NE(shown, commands.end());
+    EXPECT_LT(shown - commands.begin(),
+              std::find(commands.begin(), commands.end(),
+                        DriveCommand::speedOf(Loco, dispatcher.options().speeds.travel)) -
+                  commands.begin())
+        << "proceed before the train moves";
+    EXPECT_EQ(std::count(commands.begin(), commands.end(), stop), 0);
+    dispatcher.contactChanged(contact(8), true, 2000); // the front in Ausfahrt Ost
+    remember();
+    EXPECT_EQ(std::count(commands.begin(), commands.end(), stop), 1);
+    EXPECT_EQ(std::count(commands.begin(), commands.end(), proceed), 1);
+}
+
+// A train stopped by a fault before it passed its signal: the signal shows stop again at once.
+TEST_F(DispatcherTest, ASignalGivenToATrainStoppedByAFaultShowsStopAgain) {
+    confirmTurnouts(100);
+    ASSERT_EQ(dispatcher.train(Loco)->state, TrainState::Running);
+    dispatcher.contactChanged(contact(3), true, 500); // a ghost in Block 1, on its way
+    remember();
+    ASSERT_EQ(dispatcher.train(Loco)->state, TrainState::Fault);
+    EXPECT_EQ(std::count(commands.begin(), commands.end(),
+                         DriveCommand::switching(7, dispatcher.options().signalStop)),
+              1);
 }
 
 } // namespace
