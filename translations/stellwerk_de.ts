@@ -2886,6 +2886,14 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>Automatic</source>
         <translation>Automatik</translation>
     </message>
+    <message>
+        <source>&amp;Phones and Tablets…</source>
+        <translation>&amp;Telefone und Tablets…</translation>
+    </message>
+    <message>
+        <source>Let the Z21 app, a WLANmaus, Engine Driver or WiThrottle drive the layout</source>
+        <translation>Die Anlage mit der Z21-App, einer WLANmaus, Engine Driver oder WiThrottle fahren</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::OrcDeviceView</name>
@@ -2943,6 +2951,74 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>OVERLOAD: %1</source>
         <translation>ÜBERLAST: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::PhoneStatus</name>
+    <message>
+        <source>Phones: %1</source>
+        <translation>Telefone: %1</translation>
+    </message>
+    <message>
+        <source>No phone or tablet is connected.</source>
+        <translation>Kein Telefon und kein Tablet ist verbunden.</translation>
+    </message>
+    <message>
+        <source>Connected:
+%1</source>
+        <translation>Verbunden:
+%1</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::PhonesDialog</name>
+    <message>
+        <source>Phones and Tablets</source>
+        <translation>Telefone und Tablets</translation>
+    </message>
+    <message>
+        <source>Phones and tablets drive the layout as throttles: the Z21 app and the WLANmaus through the Z21 server, Engine Driver and WiThrottle through the WiThrottle server.</source>
+        <translation>Telefone und Tablets fahren die Anlage als Handregler: die Z21-App und die WLANmaus über den Z21-Server, Engine Driver und WiThrottle über den WiThrottle-Server.</translation>
+    </message>
+    <message>
+        <source>Z21 server (Z21 app, WLANmaus)</source>
+        <translation>Z21-Server (Z21-App, WLANmaus)</translation>
+    </message>
+    <message>
+        <source>WiThrottle server (Engine Driver, WiThrottle)</source>
+        <translation>WiThrottle-Server (Engine Driver, WiThrottle)</translation>
+    </message>
+    <message>
+        <source>every phone in the network</source>
+        <translation>jedes Telefon im Netz</translation>
+    </message>
+    <message>
+        <source>Only these phones (addresses):</source>
+        <translation>Nur diese Telefone (Adressen):</translation>
+    </message>
+    <message>
+        <source>all network interfaces</source>
+        <translation>alle Netzwerkschnittstellen</translation>
+    </message>
+    <message>
+        <source>Listen on address:</source>
+        <translation>Auf Adresse hören:</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>Port:</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a network address of this computer (for example 192.168.1.20); leave it empty to listen on all of them.</source>
+        <translation>„%1“ ist keine Netzwerkadresse dieses Computers (zum Beispiel 192.168.1.20); leer lassen, um auf allen zu hören.</translation>
+    </message>
+    <message>
+        <source>The allowed phones must be network addresses, separated by commas (for example 192.168.1.30, 192.168.1.31).</source>
+        <translation>Die erlaubten Telefone müssen Netzwerkadressen sein, durch Kommas getrennt (zum Beispiel 192.168.1.30, 192.168.1.31).</translation>
+    </message>
+    <message>
+        <source>Could not start: %1. Another program may use the port; choose another one.</source>
+        <translation>Konnte nicht starten: %1. Vielleicht nutzt ein anderes Programm den Port; bitte einen anderen wählen.</translation>
     </message>
 </context>
 <context>

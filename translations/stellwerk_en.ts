@@ -2882,6 +2882,14 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>Automatic</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&amp;Phones and Tablets…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Let the Z21 app, a WLANmaus, Engine Driver or WiThrottle drive the layout</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::OrcDeviceView</name>
@@ -2938,6 +2946,73 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>OVERLOAD: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::PhoneStatus</name>
+    <message>
+        <source>Phones: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No phone or tablet is connected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connected:
+%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::PhonesDialog</name>
+    <message>
+        <source>Phones and Tablets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Phones and tablets drive the layout as throttles: the Z21 app and the WLANmaus through the Z21 server, Engine Driver and WiThrottle through the WiThrottle server.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z21 server (Z21 app, WLANmaus)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>WiThrottle server (Engine Driver, WiThrottle)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>every phone in the network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Only these phones (addresses):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>all network interfaces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Listen on address:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a network address of this computer (for example 192.168.1.20); leave it empty to listen on all of them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The allowed phones must be network addresses, separated by commas (for example 192.168.1.30, 192.168.1.31).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not start: %1. Another program may use the port; choose another one.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

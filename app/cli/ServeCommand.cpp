@@ -2,6 +2,7 @@
 
 #include "model/Railway.h"
 #include "model/Z21Addresses.h"
+#include "phones/ListenAddress.h"
 #include "station/StartupSequence.h"
 #include "withrottleserver/MdnsAnnouncement.h"
 #include "withrottleserver/WiThrottleServer.h"
@@ -16,32 +17,14 @@
 namespace stellwerk::cli {
 namespace {
 
-// Where one server listens: HOST:PORT, or PORT on every interface.
-struct Listen {
-    QHostAddress address = QHostAddress::Any;
-    quint16 port = 0;
-};
+using phones::ListenAddress;
 
 struct ServeOptions {
-    std::optional<Listen> z21;
-    std::optional<Listen> withrottle;
+    std::optional<ListenAddress> z21;
+    std::optional<ListenAddress> withrottle;
     int seconds = 0; // 0: until Ctrl-C
     bool json = false;
 };
-
-std::optional<Listen> listenOf(const std::string& text, quint16 defaultPort) {
-    Listen listen{QHostAddress::Any, defaultPort};
-    const QString value = QString::fromStdString(text);
-    const qsizetype colon = value.lastIndexOf(QLatin1Char(':'));
-    const QString host = colon >= 0 ? value.left(colon) : QString();
-    const QString port = colon >= 0 ? value.mid(colon + 1) : value;
-    if (!host.isEmpty() && !listen.address.setAddress(host))
-        return std::nullopt;
-    bool ok = true;
-    if (!port.isEmpty())
-        listen.port = quint16(port.toUInt(&ok));
-    return ok && port.toUInt() <= 65535 ? std::optional(listen) : std::nullopt;
-}
 
 Expected<ServeOptions, std::string> parseOptions(const std::vector<std::string>& arguments) {
     ServeOptions options;
@@ -51,11 +34,13 @@ Expected<ServeOptions, std::string> parseOptions(const std::vector<std::string>&
         if (word == "--json") {
             options.json = true;
         } else if (word == "--z21") {
-            options.z21 = listenOf(hasValue ? arguments[++i] : std::string(), 21105);
+            options.z21 =
+                ListenAddress::parse(hasValue ? QString::fromStdString(arguments[++i]) : QString(), 21105);
             if (!options.z21)
                 return std::string("serve: --z21: expected [HOST:]PORT");
         } else if (word == "--withrottle") {
-            options.withrottle = listenOf(hasValue ? arguments[++i] : std::string(), 12090);
+            options.withrottle =
+                ListenAddress::parse(hasValue ? QString::fromStdString(arguments[++i]) : QString(), 12090);
             if (!options.withrottle)
                 return std::string("serve: --withrottle: expected [HOST:]PORT");
         } else if (word == "--seconds" && hasValue) {
@@ -67,7 +52,7 @@ Expected<ServeOptions, std::string> parseOptions(const std::vector<std::string>&
         }
     }
     if (!options.z21 && !options.withrottle)
-        options.z21 = Listen{QHostAddress::Any, 21105};
+        options.z21 = ListenAddress{QHostAddress::Any, 21105};
     return options;
 }
 

@@ -10,6 +10,7 @@
 #include "model/Railway.h"
 #include "monitor/FrameDecoderPanel.h"
 #include "operation/Operation.h"
+#include "phones/PhoneServers.h"
 #include "shell/ApplicationInfo.h"
 #include "shell/LanguageSettings.h"
 #include "shell/MainWindow.h"
@@ -31,6 +32,7 @@
 #include <QTimer>
 #include <cstdio>
 #include <functional>
+#include <optional>
 
 namespace {
 
@@ -50,6 +52,8 @@ struct Options {
     QSize size;                  // the window's size (for screenshots); empty: as remembered
     bool reportGeometry = false; // print where the window and its status bar are on the screen, and quit
     QStringList furtherBuses;    // more buses to hold open beside the station's
+    std::optional<QString> z21;  // --z21 [HOST:]PORT: the Z21 server on for this run
+    std::optional<QString> withrottle; // --withrottle [HOST:]PORT: the WiThrottle server on for this run
 };
 
 QString rectText(const QRect& rect) {
@@ -166,6 +170,17 @@ Options parseOptions(const QCoreApplication& app) {
                                             "busMonitorPanel, throttlePanel, ...)."),
                              QStringLiteral("name"));
     parser.addOption(panel);
+    QCommandLineOption z21(QStringLiteral("z21"),
+                           QStringLiteral("Run the Z21 server for the Z21 app and WLANmaus on [HOST:]PORT "
+                                          "(21105: every interface) for this run, without changing the "
+                                          "settings."),
+                           QStringLiteral("[host:]port"));
+    parser.addOption(z21);
+    QCommandLineOption withrottle(QStringLiteral("withrottle"),
+                                  QStringLiteral("Run the WiThrottle server for Engine Driver and WiThrottle "
+                                                 "on [HOST:]PORT (12090: every interface) for this run."),
+                                  QStringLiteral("[host:]port"));
+    parser.addOption(withrottle);
     QCommandLineOption geometry(
         QStringLiteral("report-geometry"),
         QStringLiteral("Print where the window, its frame and its status bar are on the "
@@ -179,8 +194,9 @@ Options parseOptions(const QCoreApplication& app) {
                    parser.value(panel),
                    windowSize(parser.value(size)),
                    parser.isSet(geometry),
-                   parser.isSet(bus) ? parser.values(bus)
-                                     : stellwerk::ui::StationUrlSettings::furtherBuses()};
+                   parser.isSet(bus) ? parser.values(bus) : stellwerk::ui::StationUrlSettings::furtherBuses(),
+                   parser.isSet(z21) ? std::optional(parser.value(z21)) : std::nullopt,
+                   parser.isSet(withrottle) ? std::optional(parser.value(withrottle)) : std::nullopt};
 }
 
 void grabAndQuit(QWidget& window, const QString& file) {
@@ -230,6 +246,32 @@ void reportAndQuit(stellwerk::ui::MainWindow& window, const StationConnection& c
         else
             grabAndQuit(window, file);
     });
+}
+
+// The phone servers as saved, with --z21 and --withrottle switching theirs on for this run; nullopt (and
+// the reason printed) when a flag cannot be read.
+std::optional<stellwerk::phones::PhoneSettings> phoneSettings(QSettings& settings, const Options& options) {
+    using stellwerk::phones::ListenAddress;
+    using stellwerk::phones::PhoneSettings;
+    PhoneSettings chosen = PhoneSettings::load(settings);
+    const auto flag = [](const std::optional<QString>& text, quint16 port, bool& on, ListenAddress& listen) {
+        if (!text)
+            return true;
+        const auto read = ListenAddress::parse(*text, port);
+        on = on || read.has_value();
+        listen = read.value_or(listen);
+        return read.has_value();
+    };
+    if (!flag(options.z21, PhoneSettings::Z21Port, chosen.z21, chosen.z21Listen)) {
+        std::fprintf(stderr, "stellwerk: --z21: expected [HOST:]PORT\n");
+        return std::nullopt;
+    }
+    if (!flag(options.withrottle, PhoneSettings::WiThrottlePort, chosen.withrottle,
+              chosen.withrottleListen)) {
+        std::fprintf(stderr, "stellwerk: --withrottle: expected [HOST:]PORT\n");
+        return std::nullopt;
+    }
+    return chosen;
 }
 
 } // namespace
@@ -284,7 +326,17 @@ int main(int argc, char* argv[]) {
     operation.setStationName([&connection] { return connection.address().toStdString(); });
     QObject::connect(&railways, &stellwerk::binding::RailwayBinding::railwayChanged, &operation,
                      &stellwerk::operation::Operation::setRailway);
+    // The phones' servers (Z21, WiThrottle), off unless the settings or the flags switch them on.
+    const auto phoneChoice = phoneSettings(deviceFile, options);
+    if (!phoneChoice)
+        return 1;
+    stellwerk::phones::PhoneServers phones(deviceFile);
+    for (const QString& problem : phones.apply(*phoneChoice))
+        std::fprintf(stderr, "stellwerk: cannot start the phone server: %s\n", qPrintable(problem));
+    QObject::connect(&railways, &stellwerk::binding::RailwayBinding::railwayChanged, &phones,
+                     &stellwerk::phones::PhoneServers::setRailway);
     stellwerk::ui::MainWindow window(translations);
+    window.setPhoneServers(&phones);
     window.setConnection(&connection);
     window.setLayoutInUse(&layout);
     window.setOperation(&operation);

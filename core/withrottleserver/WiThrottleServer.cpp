@@ -84,9 +84,21 @@ void WiThrottleServer::stopAll() {
     clients_.clear();
 }
 
+bool WiThrottleServer::allows(const QHostAddress& peer) const {
+    return options_.allowedClients.isEmpty() ||
+           std::any_of(options_.allowedClients.cbegin(), options_.allowedClients.cend(),
+                       [&peer](const QHostAddress& allowed) { return allowed.isEqual(peer); });
+}
+
 void WiThrottleServer::accept() {
     while (QTcpSocket* socket = listener_->nextPendingConnection()) {
         socket->setParent(this);
+        if (!allows(socket->peerAddress())) {
+            ++counters_.notAllowed;
+            socket->abort();
+            socket->deleteLater();
+            continue;
+        }
         WiThrottleClient& client = clients_.emplace_back();
         client.socket = socket;
         client.peer = QStringLiteral("%1:%2").arg(socket->peerAddress().toString()).arg(socket->peerPort());

@@ -7,6 +7,7 @@
 
 #include <QElapsedTimer>
 #include <QHostAddress>
+#include <QList>
 #include <QObject>
 #include <QPointer>
 #include <QString>
@@ -36,6 +37,7 @@ struct WiThrottleServerOptions {
     int linesPerSecond = 100;                  // per client; more are dropped and counted
     std::size_t maxLineLength = withrottle::LineSplitter::DefaultMaxLineLength;
     std::string serverName = "Stellwerk";
+    QList<QHostAddress> allowedClients; // only these may connect; empty: every address
 };
 
 // What the server counted since it started.
@@ -44,8 +46,9 @@ struct WiThrottleCounters {
     std::uint64_t lines = 0;
     std::uint64_t unknownLines = 0; // ignored, as the protocol says
     std::uint64_t overlongLines = 0;
-    std::uint64_t limited = 0; // lines dropped by the flood limit
-    std::uint64_t refused = 0; // commands refused while the station is not heard
+    std::uint64_t limited = 0;    // lines dropped by the flood limit
+    std::uint64_t refused = 0;    // commands refused while the station is not heard
+    std::uint64_t notAllowed = 0; // connections closed at once: not from an allowed client
 };
 
 // One thing that happened to a client, for the log and the command line's serve.
@@ -104,6 +107,7 @@ signals:
 private:
     // WiThrottleServer.cpp: connections, the clients' lives and what they are sent.
     void accept();
+    bool allows(const QHostAddress& peer) const;
     void read(WiThrottleClient& client);
     void greet(WiThrottleClient& client);
     void dropSilent();

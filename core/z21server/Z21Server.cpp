@@ -76,6 +76,12 @@ void Z21Server::stopAll() {
     clients_.all().clear();
 }
 
+bool Z21Server::allows(const QHostAddress& from) const {
+    return options_.allowedClients.isEmpty() ||
+           std::any_of(options_.allowedClients.cbegin(), options_.allowedClients.cend(),
+                       [&from](const QHostAddress& allowed) { return allowed.isEqual(from); });
+}
+
 void Z21Server::readDatagrams() {
     while (socket_->hasPendingDatagrams()) {
         const QNetworkDatagram datagram = socket_->receiveDatagram(int(z21::MaxDatagramSize) + 1);
@@ -86,6 +92,10 @@ void Z21Server::readDatagrams() {
 
 void Z21Server::receive(const QByteArray& datagram, const QHostAddress& from, quint16 port) {
     ++counters_.datagrams;
+    if (!allows(from)) {
+        ++counters_.notAllowed;
+        return;
+    }
     bool isNew = false;
     Z21Client& client = clients_.heard(from, port, now(), &isNew);
     if (isNew)

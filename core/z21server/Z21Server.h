@@ -7,6 +7,7 @@
 
 #include <QElapsedTimer>
 #include <QHostAddress>
+#include <QList>
 #include <QObject>
 #include <QPointer>
 #include <QString>
@@ -32,6 +33,7 @@ struct Z21ServerOptions {
     std::chrono::milliseconds silence = 60s; // a client silent this long is dropped
     int datagramsPerSecond = 200;            // per client; more are dropped and counted
     std::uint32_t serialNumber = 0x5354454C; // "STEL"
+    QList<QHostAddress> allowedClients;      // only these may talk to the server; empty: every address
 };
 
 // What the server counted since it started.
@@ -43,6 +45,7 @@ struct Z21Counters {
     std::uint64_t limited = 0;        // datagrams dropped by the flood limit
     std::uint64_t refused = 0;        // commands refused while the station is not heard
     std::uint64_t unknown = 0;        // answered with "unknown command"
+    std::uint64_t notAllowed = 0;     // datagrams ignored: their sender is not an allowed client
 };
 
 // One thing that happened to a client, for the log and the command line's serve.
@@ -86,6 +89,7 @@ signals:
 private:
     // Z21Server.cpp: the socket, the clients' lives and the broadcasts.
     void readDatagrams();
+    bool allows(const QHostAddress& from) const;
     void receive(const QByteArray& datagram, const QHostAddress& from, quint16 port);
     void dropSilent();
     void goAway(const Z21Client& client, Z21Event::Kind why);

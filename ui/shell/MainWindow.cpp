@@ -19,6 +19,9 @@
 #include "locomotives/LocomotivePanel.h"
 #include "monitor/BusMonitorPanel.h"
 #include "monitor/FrameDecoderPanel.h"
+#include "phones/PhoneServers.h"
+#include "phonesettings/PhoneStatus.h"
+#include "phonesettings/PhonesDialog.h"
 #include "programming/ProgrammingPanel.h"
 #include "shell/AboutBox.h"
 #include "shell/ApplicationInfo.h"
@@ -234,6 +237,9 @@ void MainWindow::createStationMenu() {
     ToolIcons::apply(m_connectAction, ToolIcons::Tool::Connect, *this);
     m_toolBar->addSeparator();
     m_toolBar->addAction(m_connectAction);
+    m_phonesAction = m_stationMenu->addAction(QString(), this, &MainWindow::showPhonesDialog);
+    m_phonesAction->setObjectName(QStringLiteral("phonesAction"));
+    m_phonesAction->setEnabled(false);
     m_stationMenu->addSeparator();
     m_stopAction = m_stationMenu->addAction(QString(), m_stopGo, &StopGoButton::stopEverything);
     m_stopAction->setObjectName(QStringLiteral("stopAction"));
@@ -250,6 +256,19 @@ void MainWindow::createStationMenu() {
     m_stationMenu->addMenu(m_aftermath);
     connect(m_aftermath, &AftermathMenu::report, this,
             [this](const QString& sentence) { m_message->showMessage(sentence, 8000); });
+}
+
+void MainWindow::setPhoneServers(phones::PhoneServers* phones) {
+    m_phones = phones;
+    m_phonesAction->setEnabled(phones != nullptr);
+    m_phoneStatus->setPhoneServers(phones);
+}
+
+void MainWindow::showPhonesDialog() {
+    if (!m_phones)
+        return;
+    PhonesDialog dialog(*m_phones, this);
+    dialog.exec();
 }
 
 void MainWindow::setConnection(connection::StationConnection* station) {
@@ -375,8 +394,10 @@ void MainWindow::createStatusBar() {
     m_startupProgress = new StartupProgress(this);
     m_traffic = new TrafficStatus(this);
     m_power = new PowerStatus(this);
+    m_phoneStatus = new PhoneStatus(this);
     for (QWidget* part : {static_cast<QWidget*>(m_stationStatus), static_cast<QWidget*>(m_startupProgress),
-                          static_cast<QWidget*>(m_traffic), static_cast<QWidget*>(m_power)}) {
+                          static_cast<QWidget*>(m_traffic), static_cast<QWidget*>(m_phoneStatus),
+                          static_cast<QWidget*>(m_power)}) {
         part->setContentsMargins(8, 0, 8, 0); // room between the parts, as between a panel's lamps
         statusBar()->addPermanentWidget(part);
     }
@@ -390,6 +411,9 @@ void MainWindow::retranslate() {
     m_stationMenu->setTitle(tr("&Station"));
     m_connectAction->setText(tr("&Connect…"));
     m_connectAction->setStatusTip(tr("Choose the station to connect to, or the simulated one"));
+    m_phonesAction->setText(tr("&Phones and Tablets…"));
+    m_phonesAction->setStatusTip(
+        tr("Let the Z21 app, a WLANmaus, Engine Driver or WiThrottle drive the layout"));
     m_viewMenu->setTitle(tr("&View"));
     m_helpMenu->setTitle(tr("&Help"));
     m_guideAction->setText(tr("User &guide"));

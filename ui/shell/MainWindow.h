@@ -20,6 +20,9 @@ class Railway;
 namespace stellwerk::operation {
 class Operation;
 }
+namespace stellwerk::phones {
+class PhoneServers;
+}
 
 namespace stellwerk::ui {
 
@@ -38,6 +41,7 @@ class LayoutOverview;
 class LocomotivePanel;
 class LocomotivePictureBook;
 class PassingMessage;
+class PhoneStatus;
 class PowerStatus;
 class ProgrammingPanel;
 class StartupProgress;
@@ -83,6 +87,8 @@ public:
     EmergencyStopKeys* stopKeys() const { return m_stopKeys; }
     AftermathMenu* aftermathMenu() const { return m_aftermath; }
     CorrectionNotice* correctionNotice() const { return m_corrections; }
+    // The status bar's "Phones: N" (hidden while no phone server runs).
+    PhoneStatus* phoneStatus() const { return m_phoneStatus; }
 
     // The railway the panels show and STOP / GO acts on (null: none); see RailwayBinding.
     void setRailway(model::Railway* railway);
@@ -97,6 +103,12 @@ public:
     // shows or places trains: the Automatic panel (and the track plan, once it takes one).
     void setAutomation(automation::Automation* automation);
     connection::StationConnection* stationConnection() const { return m_connection; }
+    // The phone servers Station → Phones… sets up and the status bar counts the phones of (null: none; the
+    // menu entry is disabled). They must outlive the window. The Handhelds panel does not show the phones
+    // yet: this is where it is to be handed the servers once it can show them.
+    void setPhoneServers(phones::PhoneServers* phones);
+    // Opens Station → Phones…; OK restarts the servers as chosen and keeps the choice.
+    void showPhonesDialog();
 
     // Shows the window where it was left, or at the first start sized to the screen (FirstWindowSize).
     void showAtStart();
@@ -153,6 +165,7 @@ private:
     LayoutFileActions* m_layoutFiles = nullptr;
     QMenu* m_stationMenu = nullptr;
     QAction* m_connectAction = nullptr;
+    QAction* m_phonesAction = nullptr;
     QAction* m_stopAction = nullptr;
     StopKeyMenu* m_stopKeyMenu = nullptr;
     AftermathMenu* m_aftermath = nullptr;
@@ -167,6 +180,8 @@ private:
     StartupProgress* m_startupProgress = nullptr;
     TrafficStatus* m_traffic = nullptr;
     PowerStatus* m_power = nullptr;
+    PhoneStatus* m_phoneStatus = nullptr;
+    QPointer<phones::PhoneServers> m_phones;
     CorrectionNotice* m_corrections = nullptr;
     connection::StationConnection* m_connection = nullptr;
     QPointer<LocomotivePictureBook> m_pictures;

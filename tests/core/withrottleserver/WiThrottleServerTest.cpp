@@ -291,5 +291,22 @@ TEST_F(WiThrottleServerTest, SpeedStepsMapOntoTheStationsRange) {
     EXPECT_EQ(WiThrottleRailway::throttleSpeed(1000), 126);
 }
 
+TEST_F(WiThrottleServerTest, AConnectionFromAnAddressNotAllowedIsClosedAtOnce) {
+    options.allowedClients = {QHostAddress(QStringLiteral("127.0.0.2"))};
+    restart();
+    WiThrottleTestClient stranger(server->port()); // connects from 127.0.0.1
+    ASSERT_TRUE(waitFor([&] { return server->counters().notAllowed == 1; }));
+    EXPECT_TRUE(waitFor([&] { return !stranger.connected(); }));
+    EXPECT_EQ(server->clientCount(), 0U);
+    EXPECT_FALSE(has(WiThrottleEvent::Kind::Joined));
+
+    options.allowedClients = {QHostAddress::LocalHost};
+    restart();
+    auto phone = client();
+    EXPECT_TRUE(phone->connected());
+    EXPECT_EQ(server->clientCount(), 1U);
+    EXPECT_EQ(server->counters().notAllowed, 0U);
+}
+
 } // namespace
 } // namespace stellwerk::withrottleserver::test

@@ -233,5 +233,26 @@ TEST_F(Z21ServerTest, AFloodingClientIsLimitedAndAnotherIsStillServed) {
     EXPECT_LE(flood.all<z21::SerialNumber>().size(), 100U) << "at most a window or two of answers";
 }
 
+TEST_F(Z21ServerTest, DatagramsFromAnAddressNotAllowedAreIgnored) {
+    options.allowedClients = {QHostAddress(QStringLiteral("127.0.0.2"))};
+    server = std::make_unique<Z21Server>(addresses, options);
+    ASSERT_TRUE(server->listen());
+    server->setRailway(&bench.railway);
+    Z21TestClient stranger(server->port()); // sends from 127.0.0.1
+    stranger.send(z21::GetSerialNumber{});
+    ASSERT_TRUE(waitFor([&] { return server->counters().notAllowed == 1; }));
+    EXPECT_FALSE(stranger.waitFor<z21::SerialNumber>(200)) << "no answer to a stranger";
+    EXPECT_EQ(server->clients().size(), 0U);
+
+    options.allowedClients = {QHostAddress(QStringLiteral("127.0.0.2")), QHostAddress::LocalHost};
+    server = std::make_unique<Z21Server>(addresses, options);
+    ASSERT_TRUE(server->listen());
+    Z21TestClient allowed(server->port());
+    allowed.send(z21::GetSerialNumber{});
+    EXPECT_TRUE(allowed.waitFor<z21::SerialNumber>());
+    EXPECT_EQ(server->counters().notAllowed, 0U);
+    EXPECT_EQ(server->clients().size(), 1U);
+}
+
 } // namespace
 } // namespace stellwerk::z21server::test
