@@ -84,6 +84,14 @@ void WiThrottleServer::stopAll() {
     clients_.clear();
 }
 
+bool WiThrottleServer::dropClient(const QString& client) {
+    WiThrottleClient* found = find(client);
+    if (!found)
+        return false;
+    goAway(*found, WiThrottleEvent::Kind::Dropped);
+    return true;
+}
+
 void WiThrottleServer::accept() {
     while (QTcpSocket* socket = listener_->nextPendingConnection()) {
         socket->setParent(this);
@@ -139,6 +147,8 @@ void WiThrottleServer::read(WiThrottleClient& client) {
         }
         ++counters_.lines;
         ++client.lines;
+        client.lastLineAt = QDateTime::currentDateTime();
+        client.lastLine = QString::fromStdString(line).left(60);
         handle(client, withrottle::parseClientLine(line));
     }
 }

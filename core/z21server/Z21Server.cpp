@@ -76,6 +76,14 @@ void Z21Server::stopAll() {
     clients_.all().clear();
 }
 
+bool Z21Server::dropClient(const QString& client) {
+    const std::optional<Z21Client> gone = clients_.remove(client);
+    if (!gone)
+        return false;
+    goAway(*gone, Z21Event::Kind::Dropped);
+    return true;
+}
+
 void Z21Server::readDatagrams() {
     while (socket_->hasPendingDatagrams()) {
         const QNetworkDatagram datagram = socket_->receiveDatagram(int(z21::MaxDatagramSize) + 1);
