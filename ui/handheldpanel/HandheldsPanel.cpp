@@ -18,6 +18,7 @@
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTableView>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -42,7 +43,7 @@ HandheldsPanel::HandheldsPanel(QWidget* parent)
       m_model(new HandheldTableModel(this)), m_details(new HandheldDetails(this)),
       m_otherSource(new OtherThrottles(this)), m_others(new ThrottleTableModel(this)),
       m_othersTitle(new QLabel(this)), m_othersView(new QTableView(this)),
-      m_disconnect(new QPushButton(this)), m_othersClock(new QTimer(this)) {
+      m_disconnect(new QPushButton(this)), m_othersClock(new QTimer(this)), m_kinds(new QTabWidget(this)) {
     setObjectName(QStringLiteral("handheldsPanel"));
     m_role->setObjectName(QStringLiteral("handheldRole"));
     m_role->setWordWrap(true);
@@ -76,13 +77,13 @@ HandheldsPanel::HandheldsPanel(QWidget* parent)
     handheldsLayout->addLayout(top);
     handheldsLayout->addLayout(warning);
     handheldsLayout->addWidget(parts, 1);
-    auto* sections = new QSplitter(Qt::Vertical, this);
-    sections->addWidget(handhelds);
-    sections->addWidget(makeOthers());
-    sections->setChildrenCollapsible(false);
+    m_kinds->setObjectName(QStringLiteral("throttleKinds"));
+    m_kinds->setDocumentMode(true);
+    m_kinds->addTab(handhelds, QString());
+    m_kinds->addTab(makeOthers(), QString());
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
-    layout->addWidget(sections, 1);
+    layout->addWidget(m_kinds, 1);
     SideBySide::arrange(this, parts, 720);
     connect(m_actAsMaster, &QCheckBox::toggled, this, &HandheldsPanel::chooseRole);
     connect(m_model, &QAbstractItemModel::modelReset, this, &HandheldsPanel::updateDetails);
@@ -128,7 +129,7 @@ QWidget* HandheldsPanel::makeOthers() {
     title->addWidget(m_disconnect);
     auto* others = new QWidget(this);
     auto* layout = new QVBoxLayout(others);
-    layout->setContentsMargins(0, 4, 0, 0);
+    layout->setContentsMargins(0, 0, 0, 0);
     layout->addLayout(title);
     layout->addWidget(m_othersView, 1);
     connect(m_otherSource, &OtherThrottles::changed, this, &HandheldsPanel::refreshOthers);
@@ -154,6 +155,7 @@ void HandheldsPanel::refreshOthers() {
     const ThrottleRow* selected = rows.isEmpty() ? nullptr : m_others->row(rows.first().row());
     const QString key = selected ? selected->key : QString();
     m_others->show(m_otherSource->rows());
+    updateTabs();
     if (const int row = key.isEmpty() ? -1 : m_others->rowOf(key); row >= 0)
         m_othersView->selectRow(row);
     updateDisconnect();
@@ -215,7 +217,14 @@ void HandheldsPanel::setRailway(model::Railway* railway) {
 
 void HandheldsPanel::refresh() {
     m_model->show(m_master ? m_master->handhelds() : std::vector<mcanhandhelds::Handheld>{});
+    updateTabs();
     updateRole();
+}
+
+// Each tab says how many throttles it lists, so that a phone is seen from the MS1 tab too.
+void HandheldsPanel::updateTabs() {
+    m_kinds->setTabText(0, tr("MS1 handhelds (%1)").arg(m_model->rowCount()));
+    m_kinds->setTabText(1, tr("Phones and other throttles (%1)").arg(m_others->rowCount()));
 }
 
 QString HandheldsPanel::roleText() const {
@@ -303,12 +312,12 @@ void HandheldsPanel::retranslate() {
     m_silence->setText(tr("Make it quiet"));
     m_silence->setToolTip(tr("Tell it to stop sending; it stays in its boot loader"));
     m_details->retranslate();
-    m_othersTitle->setText(
-        tr("Other throttles: OpenRailCAN throttles, the Z21 app and WLANmaus, WiThrottle and "
-           "Engine Driver"));
+    m_othersTitle->setText(tr("Phones of the Z21 app and WLANmaus, Engine Driver and WiThrottle, and "
+                              "OpenRailCAN throttles. Select a phone to disconnect it."));
     m_disconnect->setText(tr("Disconnect"));
     m_disconnect->setToolTip(tr("Let the selected phone go: its locomotives are stopped"));
     m_others->retranslate();
+    updateTabs();
     updateRole();
 }
 

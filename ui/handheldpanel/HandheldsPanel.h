@@ -6,6 +6,7 @@
 class QCheckBox;
 class QLabel;
 class QPushButton;
+class QTabWidget;
 class QTableView;
 class QTimer;
 
@@ -69,6 +70,7 @@ private:
     QWidget* makeOthers();
     void refreshOthers();
     void updateDisconnect();
+    void updateTabs();
     void disconnectSelected();
 
     QPointer<connection::ConnectionHandhelds> m_handhelds;
@@ -87,6 +89,7 @@ private:
     QTableView* m_othersView;
     QPushButton* m_disconnect;
     QTimer* m_othersClock;
+    QTabWidget* m_kinds;
 };
 
 } // namespace stellwerk::ui

@@ -431,7 +431,7 @@ void MainWindow::retranslateDocks() {
     title(m_busMonitor, tr("Bus monitor"));
     title(m_frameDecoder, tr("Frame decoder"));
     title(m_automatic, tr("Automatic"));
-    title(m_handhelds, tr("Throttles"));
+    title(m_handhelds, tr("Handhelds and phones"));
     title(m_devices, tr("Devices"));
 }
 

@@ -24,6 +24,7 @@
 #include <QPixmap>
 #include <QPushButton>
 #include <QSettings>
+#include <QTabWidget>
 #include <QTableView>
 #include <QTest>
 #include <functional>
@@ -102,9 +103,11 @@ protected:
         ASSERT_TRUE(wiPhone->waitForText("MT+S16<;>"));
         wiPhone->send(withrottle::ThrottleAction{'T', "S16", withrottle::SetSpeed{50}});
         ASSERT_TRUE(waitUntil([&] { return confirmedSpeed(Taurus) > 0; }));
-        ASSERT_TRUE(waitUntil([&] { return rowOf(ThrottleRow::Kind::WiThrottle) >= 0; }));
-        ASSERT_TRUE(waitUntil(
-            [&] { return cell(rowOf(ThrottleRow::Kind::WiThrottle), 3) != QStringLiteral("none"); }));
+        ASSERT_TRUE(waitUntil([&] {
+            const int row = rowOf(ThrottleRow::Kind::WiThrottle);
+            return row >= 0 && cell(row, ThrottleTableModel::Locomotives) == locoName(Taurus) &&
+                   cell(row, ThrottleTableModel::LastMessage).contains(QStringLiteral("V50"));
+        }));
     }
 
     model::Railway* railway() const { return railways->railway(); }
@@ -165,6 +168,8 @@ TEST_F(ThrottlesPanelTest, EachPhoneIsARowWithKindAddressLocoAndLastMessage) {
             .contains(QStringLiteral("MTAS16<;>V50"));
     })) << cell(wiRow, ThrottleTableModel::LastMessage).toStdString();
     EXPECT_TRUE(cell(wiRow, ThrottleTableModel::LastMessage).contains(QLatin1Char(':'))) << "with its time";
+    EXPECT_EQ(panel->findChild<QTabWidget*>(QStringLiteral("throttleKinds"))->tabText(1),
+              QStringLiteral("Phones and other throttles (2)"));
 }
 
 TEST_F(ThrottlesPanelTest, DisconnectRemovesTheRowAndTheStationConfirmsSpeedZero) {
@@ -185,14 +190,19 @@ TEST_F(ThrottlesPanelTest, DisconnectRemovesTheRowAndTheStationConfirmsSpeedZero
 TEST_F(ThrottlesPanelTest, GermanTexts) {
     ASSERT_NO_FATAL_FAILURE(drive());
     ASSERT_TRUE(translations.select(Language::German));
+    auto* disconnect = panel->findChild<QPushButton*>(QStringLiteral("disconnectThrottle"));
+    ASSERT_TRUE(waitUntil([&] { return disconnect->text() == QStringLiteral("Trennen"); }))
+        << "widgets are told of the language once the event loop runs";
     const int z21Row = rowOf(ThrottleRow::Kind::Z21);
     EXPECT_EQ(cell(z21Row, ThrottleTableModel::Kind), QStringLiteral("Z21-App oder WLANmaus"));
     EXPECT_EQ(table().headerData(ThrottleTableModel::Locomotives, Qt::Horizontal, Qt::DisplayRole).toString(),
               QStringLiteral("Fährt"));
-    EXPECT_EQ(panel->findChild<QPushButton*>(QStringLiteral("disconnectThrottle"))->text(),
-              QStringLiteral("Trennen"));
+    EXPECT_EQ(disconnect->toolTip(),
+              QStringLiteral("Das ausgewählte Handy trennen: seine Loks werden angehalten"));
     EXPECT_EQ(cell(rowOf(ThrottleRow::Kind::WiThrottle), ThrottleTableModel::Kind),
               QStringLiteral("WiThrottle oder Engine Driver"));
+    EXPECT_EQ(panel->findChild<QTabWidget*>(QStringLiteral("throttleKinds"))->tabText(1),
+              QStringLiteral("Handys und andere Handregler (2)"));
 }
 
 // The whole window with the Throttles panel in front, two phones driving, in both languages and sizes.
@@ -200,6 +210,7 @@ TEST_F(ThrottlesPanelTest, ScreenshotWithTwoPhones) {
     ASSERT_NO_FATAL_FAILURE(drive());
     const QString folder = qEnvironmentVariable("STELLWERK_SCREENSHOT_DIR");
     ASSERT_TRUE(window->workspace()->showPanel(panel));
+    panel->findChild<QTabWidget*>(QStringLiteral("throttleKinds"))->setCurrentIndex(1);
     for (const Language language : {Language::English, Language::German}) {
         ASSERT_TRUE(translations.select(language));
         for (const QSize size : {QSize(1366, 768), QSize(1920, 1080)}) {
