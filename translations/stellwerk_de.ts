@@ -2188,6 +2188,26 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>Another master answers the handhelds on this bus: Stellwerk only watches them</source>
         <translation>Ein anderer Master antwortet den Handgeräten auf diesem Bus: Stellwerk beobachtet sie nur</translation>
     </message>
+    <message>
+        <source>MS1 handhelds (%1)</source>
+        <translation>MS1-Handgeräte (%1)</translation>
+    </message>
+    <message>
+        <source>Phones and other throttles (%1)</source>
+        <translation>Handys und andere Handregler (%1)</translation>
+    </message>
+    <message>
+        <source>Phones of the Z21 app and WLANmaus, Engine Driver and WiThrottle, and OpenRailCAN throttles. Select a phone to disconnect it.</source>
+        <translation>Handys mit der Z21-App, WLANmäuse, Engine Driver und WiThrottle sowie OpenRailCAN-Handregler. Ein Handy auswählen, um es zu trennen.</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Trennen</translation>
+    </message>
+    <message>
+        <source>Let the selected phone go: its locomotives are stopped</source>
+        <translation>Das ausgewählte Handy trennen: seine Loks werden angehalten</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::KeyList</name>
@@ -2871,10 +2891,6 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <translation>Alle Tasten, auf die das Stellpult reagiert</translation>
     </message>
     <message>
-        <source>Handhelds</source>
-        <translation>Handgeräte</translation>
-    </message>
-    <message>
         <source>Devices</source>
         <translation>Geräte</translation>
     </message>
@@ -2893,6 +2909,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>Let the Z21 app, a WLANmaus, Engine Driver or WiThrottle drive the layout</source>
         <translation>Die Anlage mit der Z21-App, einer WLANmaus, Engine Driver oder WiThrottle fahren</translation>
+    </message>
+    <message>
+        <source>Handhelds and phones</source>
+        <translation>Handregler und Handys</translation>
     </message>
 </context>
 <context>
@@ -2951,6 +2971,13 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>OVERLOAD: %1</source>
         <translation>ÜBERLAST: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::OtherThrottles</name>
+    <message>
+        <source>CAN bus</source>
+        <translation>CAN-Bus</translation>
     </message>
 </context>
 <context>
@@ -3810,6 +3837,45 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <message>
         <source>No throttle open. Open one for a locomotive below, or with “Add throttle”.</source>
         <translation>Kein Fahrpult offen. Unten eines für eine Lok öffnen oder mit „Fahrpult hinzufügen“.</translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::ThrottleTableModel</name>
+    <message>
+        <source>OpenRailCAN throttle</source>
+        <translation>OpenRailCAN-Handregler</translation>
+    </message>
+    <message>
+        <source>Z21 app or WLANmaus</source>
+        <translation>Z21-App oder WLANmaus</translation>
+    </message>
+    <message>
+        <source>WiThrottle or Engine Driver</source>
+        <translation>WiThrottle oder Engine Driver</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Drives</source>
+        <translation>Fährt</translation>
+    </message>
+    <message>
+        <source>Last message</source>
+        <translation>Letzte Nachricht</translation>
     </message>
 </context>
 <context>

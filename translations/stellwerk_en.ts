@@ -2184,6 +2184,26 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>Another master answers the handhelds on this bus: Stellwerk only watches them</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>MS1 handhelds (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Phones and other throttles (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Phones of the Z21 app and WLANmaus, Engine Driver and WiThrottle, and OpenRailCAN throttles. Select a phone to disconnect it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Let the selected phone go: its locomotives are stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::KeyList</name>
@@ -2867,10 +2887,6 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Handhelds</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Devices</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2888,6 +2904,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>Let the Z21 app, a WLANmaus, Engine Driver or WiThrottle drive the layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Handhelds and phones</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2946,6 +2966,13 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>OVERLOAD: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::OtherThrottles</name>
+    <message>
+        <source>CAN bus</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3804,6 +3831,45 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
     </message>
     <message>
         <source>No throttle open. Open one for a locomotive below, or with “Add throttle”.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stellwerk::ui::ThrottleTableModel</name>
+    <message>
+        <source>OpenRailCAN throttle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z21 app or WLANmaus</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>WiThrottle or Engine Driver</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drives</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Last message</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -64,6 +64,8 @@ const char* kindName(z21server::Z21Event::Kind kind) {
         return "logged-off";
     case z21server::Z21Event::Kind::TimedOut:
         return "timed-out";
+    case z21server::Z21Event::Kind::Dropped:
+        return "dropped";
     case z21server::Z21Event::Kind::Drove:
         return "drove";
     case z21server::Z21Event::Kind::TakenOver:
@@ -101,6 +103,8 @@ const char* kindName(withrottleserver::WiThrottleEvent::Kind kind) {
         return "left";
     case Kind::TimedOut:
         return "timed-out";
+    case Kind::Dropped:
+        return "dropped";
     }
     return "event";
 }

@@ -3,6 +3,7 @@
 #include "model/ThrottlePort.h"
 #include "withrottle/LineSplitter.h"
 
+#include <QDateTime>
 #include <QPointer>
 #include <QString>
 #include <QTcpSocket>
@@ -34,6 +35,8 @@ struct WiThrottleClient {
     bool heartbeatWatched = true;
     bool gone = false; // stopped and closed; taken out of the book once nothing uses it
     qint64 lastHeardMs = 0;
+    QDateTime lastLineAt;     // wall-clock time of the last line read, for the Throttles panel
+    QString lastLine;         // that line as it came, cut to 60 characters
     qint64 windowStartMs = 0; // the flood limit's one-second window
     int linesInWindow = 0;
     std::uint64_t lines = 0;

@@ -90,6 +90,14 @@ bool WiThrottleServer::allows(const QHostAddress& peer) const {
                        [&peer](const QHostAddress& allowed) { return allowed.isEqual(peer); });
 }
 
+bool WiThrottleServer::dropClient(const QString& client) {
+    WiThrottleClient* found = find(client);
+    if (!found)
+        return false;
+    goAway(*found, WiThrottleEvent::Kind::Dropped);
+    return true;
+}
+
 void WiThrottleServer::accept() {
     while (QTcpSocket* socket = listener_->nextPendingConnection()) {
         socket->setParent(this);
@@ -151,6 +159,8 @@ void WiThrottleServer::read(WiThrottleClient& client) {
         }
         ++counters_.lines;
         ++client.lines;
+        client.lastLineAt = QDateTime::currentDateTime();
+        client.lastLine = QString::fromStdString(line).left(60);
         handle(client, withrottle::parseClientLine(line));
     }
 }

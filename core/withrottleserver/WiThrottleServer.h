@@ -64,7 +64,8 @@ struct WiThrottleEvent {
         Flooding,
         Quit,
         Left,
-        TimedOut
+        TimedOut,
+        Dropped
     };
     Kind kind = Kind::Joined;
     QString client;
@@ -95,6 +96,9 @@ public:
     void setRailway(model::Railway* railway);
     // Stops every locomotive a client drives and closes every connection (the server is ending).
     void stopAll();
+    // Closes the client's connection (its WiThrottleClient::name()) and stops the locomotives it drives:
+    // the operator let it go. False for a client not connected now.
+    bool dropClient(const QString& client);
 
     const WiThrottleCounters& counters() const { return counters_; }
     // The clients connected now.

@@ -94,4 +94,46 @@ bool Z21Clients::admit(Z21Client& client, qint64 nowMs, int perSecond) {
     return true;
 }
 
+namespace {
+
+template <class... Ts>
+struct Named : Ts... {
+    using Ts::operator()...;
+};
+
+QString withAddress(const char* name, std::uint16_t address) {
+    return QStringLiteral("%1 %2").arg(QLatin1String(name)).arg(address);
+}
+
+} // namespace
+
+QString describeRequest(const z21::RequestBody& body) {
+    return std::visit(
+        Named{
+            [](const z21::GetLocoInfo& r) { return withAddress("LAN_X_GET_LOCO_INFO", r.address); },
+            [](const z21::SetLocoDrive& r) { return withAddress("LAN_X_SET_LOCO_DRIVE", r.address); },
+            [](const z21::SetLocoFunction& r) {
+                return withAddress("LAN_X_SET_LOCO_FUNCTION", r.address) +
+                       QStringLiteral(" F%1").arg(r.function);
+            },
+            [](const z21::SetLocoEmergencyStop& r) {
+                return withAddress("LAN_X_SET_LOCO_E_STOP", r.address);
+            },
+            [](const z21::GetTurnoutInfo& r) { return withAddress("LAN_X_GET_TURNOUT_INFO", r.address); },
+            [](const z21::SetTurnout& r) { return withAddress("LAN_X_SET_TURNOUT", r.address); },
+            [](const z21::SetTrackPowerOn&) { return QStringLiteral("LAN_X_SET_TRACK_POWER_ON"); },
+            [](const z21::SetTrackPowerOff&) { return QStringLiteral("LAN_X_SET_TRACK_POWER_OFF"); },
+            [](const z21::SetStop&) { return QStringLiteral("LAN_X_SET_STOP"); },
+            [](const z21::SetBroadcastFlags&) { return QStringLiteral("LAN_SET_BROADCASTFLAGS"); },
+            [](const z21::GetSystemState&) { return QStringLiteral("LAN_SYSTEMSTATE_GETDATA"); },
+            [](const z21::GetSerialNumber&) { return QStringLiteral("LAN_GET_SERIAL_NUMBER"); },
+            [](const z21::Logoff&) { return QStringLiteral("LAN_LOGOFF"); },
+            [](const z21::UnknownRequest& r) {
+                return QStringLiteral("unknown 0x%1").arg(r.header, 2, 16, QLatin1Char('0'));
+            },
+            [](const auto&) { return QStringLiteral("status request"); },
+        },
+        body);
+}
+
 } // namespace stellwerk::z21server

@@ -1,7 +1,9 @@
 #pragma once
 
 #include "z21/LocoSpeed.h"
+#include "z21/Requests.h"
 
+#include <QDateTime>
 #include <QHostAddress>
 #include <QString>
 #include <cstdint>
@@ -29,6 +31,8 @@ struct Z21Client {
     std::uint32_t flags = 0;
     std::deque<Subscription> subscriptions;
     qint64 lastHeardMs = 0;
+    QDateTime lastRequestAt;  // wall-clock time of the last request read, for the Throttles panel
+    QString lastRequest;      // that request's name in the spec with its address: "LAN_X_SET_LOCO_DRIVE 3"
     qint64 windowStartMs = 0; // the flood limit's one-second window
     int datagramsInWindow = 0;
     std::uint64_t requests = 0;
@@ -42,6 +46,9 @@ struct Z21Client {
     std::optional<Subscription> subscription(std::uint16_t locoAddress) const;
     bool follows(std::uint16_t locoAddress) const;
 };
+
+// A request as the specification names it, with the locomotive or turnout address where it has one.
+QString describeRequest(const z21::RequestBody& body);
 
 // The clients the server has heard, by address and port: who is new, who fell silent, who floods.
 class Z21Clients {

@@ -82,6 +82,14 @@ bool Z21Server::allows(const QHostAddress& from) const {
                        [&from](const QHostAddress& allowed) { return allowed.isEqual(from); });
 }
 
+bool Z21Server::dropClient(const QString& client) {
+    const std::optional<Z21Client> gone = clients_.remove(client);
+    if (!gone)
+        return false;
+    goAway(*gone, Z21Event::Kind::Dropped);
+    return true;
+}
+
 void Z21Server::readDatagrams() {
     while (socket_->hasPendingDatagrams()) {
         const QNetworkDatagram datagram = socket_->receiveDatagram(int(z21::MaxDatagramSize) + 1);

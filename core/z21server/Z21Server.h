@@ -50,7 +50,16 @@ struct Z21Counters {
 
 // One thing that happened to a client, for the log and the command line's serve.
 struct Z21Event {
-    enum class Kind : std::uint8_t { Joined, LoggedOff, TimedOut, Drove, TakenOver, Refused, Flooding };
+    enum class Kind : std::uint8_t {
+        Joined,
+        LoggedOff,
+        TimedOut,
+        Dropped,
+        Drove,
+        TakenOver,
+        Refused,
+        Flooding
+    };
     Kind kind = Kind::Joined;
     QString client;
     std::uint16_t address = 0; // the loco's Z21 address, where there is one
@@ -79,6 +88,9 @@ public:
     void setRailway(model::Railway* railway);
     // Stops every locomotive a client drives and forgets the clients (the server is ending).
     void stopAll();
+    // Forgets the client (its Z21Client::name()) and stops the locomotives it drives, as when it falls
+    // silent: the operator let it go. False for a client the server does not know.
+    bool dropClient(const QString& client);
 
     const Z21Counters& counters() const { return counters_; }
     const Z21Clients& clients() const { return clients_; }

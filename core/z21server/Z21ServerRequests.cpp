@@ -36,6 +36,8 @@ bool isPower(const z21::RequestBody& body) {
 void Z21Server::handle(Z21Client& client, const z21::Request& request) {
     ++counters_.requests;
     ++client.requests;
+    client.lastRequestAt = QDateTime::currentDateTime();
+    client.lastRequest = describeRequest(request.body);
     if (request.wrongChecksum) {
         ++counters_.wrongChecksums;
         ++client.wrongChecksums;

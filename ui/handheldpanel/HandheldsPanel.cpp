@@ -5,6 +5,8 @@
 #include "connection/ConnectionHandhelds.h"
 #include "handheldpanel/HandheldDetails.h"
 #include "handheldpanel/HandheldTableModel.h"
+#include "handheldpanel/OtherThrottles.h"
+#include "handheldpanel/ThrottleTableModel.h"
 #include "mcanhandhelds/HandheldMaster.h"
 #include "model/Railway.h"
 
@@ -16,7 +18,9 @@
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTableView>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace stellwerk::ui {
@@ -36,7 +40,10 @@ const mcanhandhelds::Handheld* inBootLoader(const HandheldTableModel& model) {
 HandheldsPanel::HandheldsPanel(QWidget* parent)
     : QWidget(parent), m_role(new QLabel(this)), m_actAsMaster(new QCheckBox(this)),
       m_bootLoader(new QLabel(this)), m_silence(new QPushButton(this)), m_view(new QTableView(this)),
-      m_model(new HandheldTableModel(this)), m_details(new HandheldDetails(this)) {
+      m_model(new HandheldTableModel(this)), m_details(new HandheldDetails(this)),
+      m_otherSource(new OtherThrottles(this)), m_others(new ThrottleTableModel(this)),
+      m_othersTitle(new QLabel(this)), m_othersView(new QTableView(this)),
+      m_disconnect(new QPushButton(this)), m_othersClock(new QTimer(this)), m_kinds(new QTabWidget(this)) {
     setObjectName(QStringLiteral("handheldsPanel"));
     m_role->setObjectName(QStringLiteral("handheldRole"));
     m_role->setWordWrap(true);
@@ -64,11 +71,19 @@ HandheldsPanel::HandheldsPanel(QWidget* parent)
     parts->setStretchFactor(0, 3);
     parts->setStretchFactor(1, 2);
     parts->setChildrenCollapsible(false);
+    auto* handhelds = new QWidget(this);
+    auto* handheldsLayout = new QVBoxLayout(handhelds);
+    handheldsLayout->setContentsMargins(0, 0, 0, 0);
+    handheldsLayout->addLayout(top);
+    handheldsLayout->addLayout(warning);
+    handheldsLayout->addWidget(parts, 1);
+    m_kinds->setObjectName(QStringLiteral("throttleKinds"));
+    m_kinds->setDocumentMode(true);
+    m_kinds->addTab(handhelds, QString());
+    m_kinds->addTab(makeOthers(), QString());
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
-    layout->addLayout(top);
-    layout->addLayout(warning);
-    layout->addWidget(parts, 1);
+    layout->addWidget(m_kinds, 1);
     SideBySide::arrange(this, parts, 720);
     connect(m_actAsMaster, &QCheckBox::toggled, this, &HandheldsPanel::chooseRole);
     connect(m_model, &QAbstractItemModel::modelReset, this, &HandheldsPanel::updateDetails);
@@ -96,6 +111,67 @@ HandheldsPanel::HandheldsPanel(QWidget* parent)
 }
 
 HandheldsPanel::~HandheldsPanel() = default;
+
+// The other throttles: a title, their table, and the Disconnect button for the selected phone.
+QWidget* HandheldsPanel::makeOthers() {
+    m_othersTitle->setObjectName(QStringLiteral("otherThrottlesTitle"));
+    m_othersTitle->setWordWrap(true);
+    m_othersView->setObjectName(QStringLiteral("otherThrottleTable"));
+    m_othersView->setModel(m_others);
+    m_othersView->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_othersView->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_othersView->verticalHeader()->hide();
+    m_othersView->horizontalHeader()->setStretchLastSection(true);
+    m_othersView->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_disconnect->setObjectName(QStringLiteral("disconnectThrottle"));
+    auto* title = new QHBoxLayout;
+    title->addWidget(m_othersTitle, 1);
+    title->addWidget(m_disconnect);
+    auto* others = new QWidget(this);
+    auto* layout = new QVBoxLayout(others);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addLayout(title);
+    layout->addWidget(m_othersView, 1);
+    connect(m_otherSource, &OtherThrottles::changed, this, &HandheldsPanel::refreshOthers);
+    connect(m_othersClock, &QTimer::timeout, this, &HandheldsPanel::refreshOthers);
+    m_othersClock->setInterval(1000); // the last messages of clients that only send heartbeats
+    m_othersClock->start();
+    connect(m_othersView->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &HandheldsPanel::updateDisconnect);
+    connect(m_others, &QAbstractItemModel::modelReset, this, &HandheldsPanel::updateDisconnect);
+    connect(m_disconnect, &QPushButton::clicked, this, &HandheldsPanel::disconnectSelected);
+    updateDisconnect();
+    return others;
+}
+
+void HandheldsPanel::setPhoneServers(z21server::Z21Server* z21,
+                                     withrottleserver::WiThrottleServer* withrottle) {
+    m_otherSource->setServers(z21, withrottle);
+}
+
+// Keeps the selected throttle selected when rows come and go.
+void HandheldsPanel::refreshOthers() {
+    const QModelIndexList rows = m_othersView->selectionModel()->selectedRows();
+    const ThrottleRow* selected = rows.isEmpty() ? nullptr : m_others->row(rows.first().row());
+    const QString key = selected ? selected->key : QString();
+    m_others->show(m_otherSource->rows());
+    updateTabs();
+    if (const int row = key.isEmpty() ? -1 : m_others->rowOf(key); row >= 0)
+        m_othersView->selectRow(row);
+    updateDisconnect();
+}
+
+void HandheldsPanel::updateDisconnect() {
+    const QModelIndexList rows = m_othersView->selectionModel()->selectedRows();
+    const ThrottleRow* selected = rows.isEmpty() ? nullptr : m_others->row(rows.first().row());
+    m_disconnect->setEnabled(selected && selected->canDisconnect);
+}
+
+void HandheldsPanel::disconnectSelected() {
+    const QModelIndexList rows = m_othersView->selectionModel()->selectedRows();
+    if (const ThrottleRow* selected = rows.isEmpty() ? nullptr : m_others->row(rows.first().row()))
+        m_otherSource->letGo(selected->key);
+}
 
 void HandheldsPanel::setHandhelds(connection::ConnectionHandhelds* handhelds) {
     if (m_handhelds)
@@ -131,6 +207,7 @@ void HandheldsPanel::setRailway(model::Railway* railway) {
     if (m_railway)
         disconnect(m_railway, nullptr, this, nullptr);
     m_railway = railway;
+    m_otherSource->setRailway(railway);
     if (m_railway) {
         connect(m_railway, &model::Railway::loaded, this, &HandheldsPanel::updateChoices);
         connect(m_railway, &QObject::destroyed, this, [this] { setRailway(nullptr); });
@@ -140,7 +217,14 @@ void HandheldsPanel::setRailway(model::Railway* railway) {
 
 void HandheldsPanel::refresh() {
     m_model->show(m_master ? m_master->handhelds() : std::vector<mcanhandhelds::Handheld>{});
+    updateTabs();
     updateRole();
+}
+
+// Each tab says how many throttles it lists, so that a phone is seen from the MS1 tab too.
+void HandheldsPanel::updateTabs() {
+    m_kinds->setTabText(0, tr("MS1 handhelds (%1)").arg(m_model->rowCount()));
+    m_kinds->setTabText(1, tr("Phones and other throttles (%1)").arg(m_others->rowCount()));
 }
 
 QString HandheldsPanel::roleText() const {
@@ -228,6 +312,12 @@ void HandheldsPanel::retranslate() {
     m_silence->setText(tr("Make it quiet"));
     m_silence->setToolTip(tr("Tell it to stop sending; it stays in its boot loader"));
     m_details->retranslate();
+    m_othersTitle->setText(tr("Phones of the Z21 app and WLANmaus, Engine Driver and WiThrottle, and "
+                              "OpenRailCAN throttles. Select a phone to disconnect it."));
+    m_disconnect->setText(tr("Disconnect"));
+    m_disconnect->setToolTip(tr("Let the selected phone go: its locomotives are stopped"));
+    m_others->retranslate();
+    updateTabs();
     updateRole();
 }
 

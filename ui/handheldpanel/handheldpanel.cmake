@@ -4,3 +4,8 @@ target_sources(stellwerk-ui PRIVATE
     handheldpanel/HandheldTableModel.cpp handheldpanel/HandheldTableModel.h
     handheldpanel/HandheldsPanel.cpp handheldpanel/HandheldsPanel.h
 )
+# The other throttles beside the MS1s: OpenRailCAN throttles and the phones of the Z21 and WiThrottle servers.
+target_sources(stellwerk-ui PRIVATE
+    handheldpanel/OtherThrottles.cpp handheldpanel/OtherThrottles.h
+    handheldpanel/ThrottleTableModel.cpp handheldpanel/ThrottleTableModel.h
+)

@@ -262,6 +262,14 @@ void MainWindow::setPhoneServers(phones::PhoneServers* phones) {
     m_phones = phones;
     m_phonesAction->setEnabled(phones != nullptr);
     m_phoneStatus->setPhoneServers(phones);
+    // The Handhelds panel lists the phones of the servers running now (started and stopped in Settings).
+    const auto showPhones = [this] {
+        m_handhelds->setPhoneServers(m_phones ? m_phones->z21() : nullptr,
+                                     m_phones ? m_phones->withrottle() : nullptr);
+    };
+    showPhones();
+    if (phones)
+        connect(phones, &phones::PhoneServers::serversChanged, this, showPhones);
 }
 
 void MainWindow::showPhonesDialog() {
@@ -455,7 +463,7 @@ void MainWindow::retranslateDocks() {
     title(m_busMonitor, tr("Bus monitor"));
     title(m_frameDecoder, tr("Frame decoder"));
     title(m_automatic, tr("Automatic"));
-    title(m_handhelds, tr("Handhelds"));
+    title(m_handhelds, tr("Handhelds and phones"));
     title(m_devices, tr("Devices"));
 }
 

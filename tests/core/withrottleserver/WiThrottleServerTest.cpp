@@ -187,6 +187,24 @@ TEST_F(WiThrottleServerTest, AClientThatKeepsItsHeartbeatStays) {
     EXPECT_FALSE(has(WiThrottleEvent::Kind::TimedOut));
 }
 
+TEST_F(WiThrottleServerTest, AClientDroppedByTheOperatorIsClosedAndItsLocoStopped) {
+    auto phone = client();
+    acquire(*phone);
+    phone->send(action("S3", SetSpeed{80}));
+    ASSERT_TRUE(waitFor([&] { return stationSpeed(V100) > 0; }));
+    ASSERT_EQ(server->clientCount(), 1U);
+    const WiThrottleClient& known = server->clients().front();
+    EXPECT_EQ(known.lastLine, QStringLiteral("MTAS3<;>V80"));
+    EXPECT_TRUE(known.lastLineAt.isValid());
+    const QString name = known.name();
+    EXPECT_FALSE(server->dropClient(QStringLiteral("withrottle 127.0.0.1:1"))) << "nobody by that name";
+    EXPECT_TRUE(server->dropClient(name));
+    EXPECT_EQ(server->clientCount(), 0U);
+    ASSERT_TRUE(waitFor([&] { return stationSpeed(V100) == 0; }));
+    ASSERT_TRUE(waitFor([&] { return !phone->connected(); })) << "the connection is closed";
+    EXPECT_TRUE(has(WiThrottleEvent::Kind::Dropped));
+}
+
 TEST_F(WiThrottleServerTest, ADisconnectStopsTheLoco) {
     auto phone = client();
     acquire(*phone);

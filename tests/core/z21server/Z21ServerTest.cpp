@@ -178,6 +178,23 @@ TEST_F(Z21ServerTest, ALogoffStopsTheClientsLocos) {
     EXPECT_TRUE(has(Z21Event::Kind::LoggedOff));
 }
 
+TEST_F(Z21ServerTest, AClientDroppedByTheOperatorIsForgottenAndItsLocoStopped) {
+    auto phone = client();
+    phone->send(z21::SetLocoDrive{V100Address, steps128(80)});
+    ASSERT_TRUE(waitFor([&] { return stationSpeed(V100) > 0; }));
+    ASSERT_EQ(server->clients().size(), 1U);
+    const Z21Client& known = server->clients().all().begin()->second;
+    EXPECT_EQ(known.lastRequest, QStringLiteral("LAN_X_SET_LOCO_DRIVE 3"));
+    EXPECT_TRUE(known.lastRequestAt.isValid());
+    const QString name = known.name();
+    EXPECT_FALSE(server->dropClient(QStringLiteral("z21 127.0.0.1:1"))) << "nobody by that name";
+    EXPECT_TRUE(server->dropClient(name));
+    EXPECT_EQ(server->clients().size(), 0U);
+    ASSERT_TRUE(waitFor([&] { return stationSpeed(V100) == 0; }));
+    EXPECT_TRUE(has(Z21Event::Kind::Dropped));
+    EXPECT_TRUE(bench.railway.throttlePort().owners().drivenBy(name).isEmpty());
+}
+
 TEST_F(Z21ServerTest, WhileTheStationIsNotHeardADriveIsRefusedToldAndNeverReplayed) {
     auto phone = client();
     bench.stall();
