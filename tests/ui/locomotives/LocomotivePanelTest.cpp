@@ -222,8 +222,9 @@ TEST_F(LocomotiveZ21AddressTest, AnMmLocomotivesZ21AddressIsEditedInTheListAndSa
     auto* editor = panel.table()->viewport()->findChild<QSpinBox*>();
     ASSERT_NE(editor, nullptr);
     EXPECT_EQ(editor->value(), 24) << "the editor starts at the address shown";
-    QTest::keyClick(editor, Qt::Key_Escape);
-    ASSERT_TRUE(panel.model()->setData(cell, 512)); // what the editor commits
+    editor->setValue(512);
+    QTest::keyClick(editor, Qt::Key_Return); // the delegate commits on the next turn of the event loop
+    ASSERT_TRUE(QTest::qWaitFor([&] { return book.addressOf(V100) == 512; }, 3000));
 
     EXPECT_EQ(cell.data().toString(), QStringLiteral("512"));
     EXPECT_EQ(book.addressOf(V100), 512);
