@@ -2453,6 +2453,34 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>MM2 %1</source>
         <translation>MM2 %1</translation>
     </message>
+    <message>
+        <source>The address the Z21 app and WLANmaus use for this locomotive; double-click to change it</source>
+        <translation>Die Adresse, unter der die Z21-App und die WLANmaus diese Lok kennen; zum Ändern doppelklicken</translation>
+    </message>
+    <message>
+        <source>A DCC locomotive has its own address on the Z21 too</source>
+        <translation>Eine DCC-Lok hat auch an der Z21 ihre eigene Adresse</translation>
+    </message>
+    <message>
+        <source>Z21 address</source>
+        <translation>Z21-Adresse</translation>
+    </message>
+    <message>
+        <source>A Z21 address is a number from %1 to %2; &apos;%3&apos; keeps %4.</source>
+        <translation>Eine Z21-Adresse ist eine Zahl von %1 bis %2; &apos;%3&apos; behält %4.</translation>
+    </message>
+    <message>
+        <source>Z21 address %1 is kept for another locomotive; &apos;%2&apos; keeps %3.</source>
+        <translation>Die Z21-Adresse %1 ist für eine andere Lok vergeben; &apos;%2&apos; behält %3.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; already has Z21 address %2; &apos;%3&apos; keeps %4.</source>
+        <translation>&apos;%1&apos; hat schon die Z21-Adresse %2; &apos;%3&apos; behält %4.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has Z21 address %2 now.</source>
+        <translation>&apos;%1&apos; hat jetzt die Z21-Adresse %2.</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::LocomotiveForm</name>

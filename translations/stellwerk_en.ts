@@ -2449,6 +2449,34 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>MM2 %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>The address the Z21 app and WLANmaus use for this locomotive; double-click to change it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A DCC locomotive has its own address on the Z21 too</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z21 address</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A Z21 address is a number from %1 to %2; &apos;%3&apos; keeps %4.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z21 address %1 is kept for another locomotive; &apos;%2&apos; keeps %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; already has Z21 address %2; &apos;%3&apos; keeps %4.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has Z21 address %2 now.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::LocomotiveForm</name>

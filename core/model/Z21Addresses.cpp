@@ -15,12 +15,12 @@ bool isDcc(std::uint32_t locId) {
     return cs2::LocId(locId).protocol() == cs2::Protocol::Dcc;
 }
 
-bool isBooked(std::uint32_t locId) {
+} // namespace
+
+bool Z21Addresses::isBooked(std::uint32_t locId) {
     const cs2::Protocol protocol = cs2::LocId(locId).protocol();
     return protocol == cs2::Protocol::Mm2 || protocol == cs2::Protocol::Mfx;
 }
-
-} // namespace
 
 void Z21Addresses::cover(const std::vector<std::uint32_t>& locIds) {
     for (const std::uint32_t locId : locIds) {

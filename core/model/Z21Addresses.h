@@ -23,6 +23,9 @@ public:
 
     enum class Refusal : std::uint8_t { None, OutOfRange, Taken, DccKeepsItsAddress };
 
+    // Whether a locomotive takes its Z21 address from this book (MM and mfx ones), so that it can be changed.
+    static bool isBooked(std::uint32_t locId);
+
     // Gives every MM and mfx locomotive of `locIds` that has none an address, and forgets nothing (a
     // locomotive that is gone may come back). DCC locomotives keep theirs.
     void cover(const std::vector<std::uint32_t>& locIds);

@@ -1,6 +1,7 @@
 #include "phones/PhoneServers.h"
 
 #include "model/Railway.h"
+#include "withrottleserver/MdnsAnnouncement.h"
 #include "withrottleserver/WiThrottleServer.h"
 #include "z21server/Z21Server.h"
 
@@ -27,6 +28,7 @@ QStringList PhoneServers::apply(const PhoneSettings& chosen) {
     if (withrottle_)
         withrottle_->stopAll();
     z21_.reset();
+    announcement_.reset();
     withrottle_.reset();
     QStringList problems;
     if (chosen.z21)
@@ -75,7 +77,13 @@ QString PhoneServers::startWiThrottle() {
     connect(withrottle_.get(), &withrottleserver::WiThrottleServer::event, this,
             &PhoneServers::clientsMayHaveChanged);
     withrottle_->setRailway(railway_);
+    announcement_ = std::make_unique<withrottleserver::MdnsAnnouncement>();
+    announcement_->announce(QStringLiteral("Stellwerk"), withrottle_->port());
     return {};
+}
+
+QString PhoneServers::announcement() const {
+    return announcement_ ? announcement_->why() : QString();
 }
 
 void PhoneServers::setRailway(model::Railway* railway) {

@@ -14,8 +14,9 @@ namespace stellwerk::model {
 class Railway;
 }
 namespace stellwerk::withrottleserver {
+class MdnsAnnouncement;
 class WiThrottleServer;
-}
+} // namespace stellwerk::withrottleserver
 namespace stellwerk::z21server {
 class Z21Server;
 }
@@ -24,7 +25,8 @@ namespace stellwerk::phones {
 
 // The desktop's phone servers (issue 35): the Z21 and WiThrottle servers run as the phone settings say
 // (both off by default), restarted when those change, in front of the railway in use, sharing the book of
-// Z21 addresses that is read from and written to the program's settings.
+// Z21 addresses that is read from and written to the program's settings. The WiThrottle server is announced
+// over mDNS while it runs, as `stellwerk-cli serve` does.
 class PhoneServers final : public QObject {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(PhoneServers)
@@ -47,6 +49,8 @@ public:
     z21server::Z21Server* z21() const { return z21_.get(); }
     withrottleserver::WiThrottleServer* withrottle() const { return withrottle_.get(); }
     bool running() const { return z21_ || withrottle_; }
+    // What the mDNS announcement of the WiThrottle server says: announced, or why not (empty: no server).
+    QString announcement() const;
     // The phones connected now, by the names the servers know them by ("z21 127.0.0.1:5000").
     QStringList clients() const;
 
@@ -70,6 +74,7 @@ private:
     QPointer<model::Railway> railway_;
     std::unique_ptr<z21server::Z21Server> z21_;
     std::unique_ptr<withrottleserver::WiThrottleServer> withrottle_;
+    std::unique_ptr<withrottleserver::MdnsAnnouncement> announcement_; // ends before the server
 };
 
 } // namespace stellwerk::phones

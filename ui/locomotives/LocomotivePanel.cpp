@@ -78,7 +78,9 @@ void LocomotivePanel::setUpTable() {
     m_table->setModel(m_model);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
-    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    // Only the Z21 address of an MM or mfx locomotive is editable (LocomotiveFileModel::flags).
+    m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
+    m_table->setColumnHidden(LocomotiveFileModel::Z21Address, true);
     m_table->setDragEnabled(true); // a locomotive dragged onto a block of the plan is placed there
     m_table->setDragDropMode(QAbstractItemView::DragOnly);
     m_table->setAlternatingRowColors(true);
@@ -117,6 +119,30 @@ void LocomotivePanel::connectActions() {
     save->setContext(Qt::WidgetWithChildrenShortcut);
     auto* remove = new QShortcut(QKeySequence::Delete, m_table, this, &LocomotivePanel::askAndRemove);
     remove->setContext(Qt::WidgetShortcut);
+    // F2 in the list edits the selected locomotive's Z21 address, whichever cell is current.
+    auto* editZ21 = new QShortcut(QKeySequence(Qt::Key_F2), m_table, this, [this] {
+        const QModelIndexList rows = m_table->selectionModel()->selectedRows();
+        if (!rows.isEmpty())
+            m_table->edit(m_model->index(rows.first().row(), LocomotiveFileModel::Z21Address));
+    });
+    editZ21->setContext(Qt::WidgetShortcut);
+    connect(m_model, &LocomotiveFileModel::z21AddressChanged, this, [this](const QString& sentence) {
+        if (m_saveZ21)
+            m_saveZ21();
+        showMessage(sentence, false);
+    });
+    connect(m_model, &LocomotiveFileModel::z21AddressRefused, this,
+            [this](const QString& sentence) { showMessage(sentence, true); });
+    connect(m_model, &LocomotiveFileModel::z21AddressesCovered, this, [this] {
+        if (m_saveZ21)
+            m_saveZ21();
+    });
+}
+
+void LocomotivePanel::setZ21Addresses(model::Z21Addresses* book, std::function<void()> save) {
+    m_saveZ21 = std::move(save);
+    m_model->setZ21Addresses(book);
+    m_table->setColumnHidden(LocomotiveFileModel::Z21Address, book == nullptr);
 }
 
 void LocomotivePanel::setRailway(model::Railway* railway) {

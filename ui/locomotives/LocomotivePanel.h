@@ -4,6 +4,7 @@
 
 #include <QPointer>
 #include <QWidget>
+#include <functional>
 #include <optional>
 
 class QLabel;
@@ -12,7 +13,8 @@ class QTableView;
 
 namespace stellwerk::model {
 class Railway;
-}
+class Z21Addresses;
+} // namespace stellwerk::model
 
 namespace stellwerk::ui {
 
@@ -23,7 +25,9 @@ class LocomotivePictureBook;
 // The Locomotives page: the station's locomotives from lokomotive.cs2 in a list, an editor for the
 // selected one (name, decoder, address, function keys) that refuses bad values with a reason, new and
 // delete, and saving the edited file into a CS2 configuration folder (config/lokomotive.cs2). The
-// railway's locomotives follow every applied edit; nothing is sent to the station.
+// railway's locomotives follow every applied edit; nothing is sent to the station. With the phone servers'
+// book, the list shows each locomotive's Z21 address and an MM or mfx one's is changed in place (saved at
+// once, a taken or impossible one refused with a reason).
 class LocomotivePanel final : public QWidget {
     Q_OBJECT
     Q_DISABLE_COPY_MOVE(LocomotivePanel)
@@ -33,6 +37,9 @@ public:
 
     // The railway whose lokomotive.cs2 the page edits (null: none).
     void setRailway(model::Railway* railway);
+    // The book of Z21 addresses the list shows and edits, and what saves it after each change (null: the
+    // column is hidden).
+    void setZ21Addresses(model::Z21Addresses* book, std::function<void()> save);
     // The locomotives' pictures for the list and the form.
     void setPictures(LocomotivePictureBook* pictures);
 
@@ -99,6 +106,7 @@ private:
     QPushButton* m_apply;
     QPushButton* m_revert;
     QPushButton* m_save;
+    std::function<void()> m_saveZ21;
     bool m_adding = false;
     bool m_replacing = false; // our own edit makes the railway reload: keep the editor as it is
     QString m_lastFolder;

@@ -270,6 +270,14 @@ void MainWindow::setPhoneServers(phones::PhoneServers* phones) {
     showPhones();
     if (phones)
         connect(phones, &phones::PhoneServers::serversChanged, this, showPhones);
+    // The Locomotives panel shows and edits the phones' Z21 addresses, saved with the settings at once.
+    m_locomotivePanel->setZ21Addresses(phones ? &phones->addresses() : nullptr, [this] {
+        if (m_phones)
+            m_phones->saveAddresses();
+    });
+    if (phones)
+        connect(phones, &QObject::destroyed, m_locomotivePanel,
+                [panel = m_locomotivePanel] { panel->setZ21Addresses(nullptr, {}); });
 }
 
 void MainWindow::showPhonesDialog() {

@@ -7,6 +7,7 @@
 #include "locomotives/LocomotiveFileModel.h"
 #include "locomotives/LocomotiveForm.h"
 #include "model/Railway.h"
+#include "model/Z21Addresses.h"
 #include "shell/Translations.h"
 #include "support/StationTestSupport.h"
 
@@ -16,6 +17,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSettings>
 #include <QSpinBox>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -177,4 +179,80 @@ TEST(LocomotivePanelWithoutStation, SaysSoAndOffersNothingToSave) {
     EXPECT_TRUE(std::any_of(labels.begin(), labels.end(), [](const QLabel* label) {
         return label->text() == QStringLiteral("No station connected.");
     }));
+}
+
+// Issue 35: the Z21 address column with the phone servers' book, saved in the settings at each change.
+class LocomotiveZ21AddressTest : public LocomotivePanelTest {
+protected:
+    void SetUp() override {
+        LocomotivePanelTest::SetUp();
+        panel.setZ21Addresses(&book, [this] {
+            QSettings settings(settingsFile(), QSettings::IniFormat);
+            book.save(settings);
+        });
+    }
+    QString settingsFile() const { return dir.filePath(QStringLiteral("stellwerk.ini")); }
+    // The Z21 address of `locomotive` as the settings hold it now.
+    std::optional<std::uint16_t> saved(quint32 locId) const {
+        QSettings settings(settingsFile(), QSettings::IniFormat);
+        return model::Z21Addresses::load(settings).addressOf(locId);
+    }
+    QModelIndex z21Cell(const QString& name) {
+        EXPECT_TRUE(panel.selectLocomotive(name));
+        const int row = panel.table()->selectionModel()->selectedRows().value(0).row();
+        return panel.model()->index(row, LocomotiveFileModel::Z21Address);
+    }
+
+    QTemporaryDir dir;
+    model::Z21Addresses book;
+};
+
+TEST_F(LocomotiveZ21AddressTest, AnMmLocomotivesZ21AddressIsEditedInTheListAndSavedAtOnce) {
+    EXPECT_FALSE(panel.table()->isColumnHidden(LocomotiveFileModel::Z21Address));
+    const QModelIndex cell = z21Cell(QStringLiteral("V 100 2023"));
+    EXPECT_EQ(cell.data().toString(), QStringLiteral("24")) << "an MM locomotive starts on its MM address";
+    EXPECT_EQ(saved(V100), 24) << "the addresses given are kept with the settings";
+    ASSERT_TRUE(panel.model()->flags(cell) & Qt::ItemIsEditable);
+
+    panel.show();
+    panel.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&panel));
+    panel.table()->setFocus();
+    QTest::keyClick(panel.table(), Qt::Key_F2); // F2 edits the selected locomotive's Z21 address
+    auto* editor = panel.table()->viewport()->findChild<QSpinBox*>();
+    ASSERT_NE(editor, nullptr);
+    EXPECT_EQ(editor->value(), 24) << "the editor starts at the address shown";
+    editor->setValue(512);
+    QTest::keyClick(editor, Qt::Key_Return); // the delegate commits on the next turn of the event loop
+    ASSERT_TRUE(QTest::qWaitFor([&] { return book.addressOf(V100) == 512; }, 3000));
+
+    EXPECT_EQ(cell.data().toString(), QStringLiteral("512"));
+    EXPECT_EQ(book.addressOf(V100), 512);
+    EXPECT_EQ(saved(V100), 512);
+    EXPECT_EQ(panel.messageText(), QStringLiteral("'V 100 2023' has Z21 address 512 now."));
+}
+
+TEST_F(LocomotiveZ21AddressTest, ATakenOrImpossibleZ21AddressIsRefusedWithASentence) {
+    const QModelIndex cell = z21Cell(QStringLiteral("V 100 2023"));
+    EXPECT_FALSE(panel.model()->setData(cell, 3)); // BR 212 DB is DCC 3
+    EXPECT_EQ(panel.messageText(),
+              QStringLiteral("'BR 212 DB' already has Z21 address 3; 'V 100 2023' keeps 24."));
+    EXPECT_FALSE(panel.model()->setData(cell, 10000));
+    EXPECT_EQ(panel.messageText(),
+              QStringLiteral("A Z21 address is a number from 1 to 9999; 'V 100 2023' keeps 24."));
+    EXPECT_FALSE(panel.model()->setData(cell, 0));
+    EXPECT_EQ(cell.data().toString(), QStringLiteral("24"));
+    EXPECT_EQ(saved(V100), 24) << "nothing refused is saved";
+}
+
+TEST_F(LocomotiveZ21AddressTest, ADccLocomotiveShowsItsOwnAddressAndCannotBeChanged) {
+    const QModelIndex cell = z21Cell(QStringLiteral("BR 212 DB"));
+    EXPECT_EQ(cell.data().toString(), QStringLiteral("3"));
+    EXPECT_FALSE(panel.model()->flags(cell) & Qt::ItemIsEditable);
+    EXPECT_FALSE(panel.model()->setData(cell, 77));
+    EXPECT_EQ(cell.data().toString(), QStringLiteral("3"));
+}
+
+TEST_F(LocomotivePanelTest, WithoutPhoneServersTheZ21ColumnIsHidden) {
+    EXPECT_TRUE(panel.table()->isColumnHidden(LocomotiveFileModel::Z21Address));
 }
