@@ -2303,6 +2303,10 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
         <source>In a dialog, menu or popup: closes it, and nothing else</source>
         <translation>In einem Dialog, Menü oder Popup: schließt es, sonst nichts</translation>
     </message>
+    <message>
+        <source>Locomotives: change the selected locomotive&apos;s Z21 address</source>
+        <translation>Loks: die Z21-Adresse der gewählten Lok ändern</translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::LanguageMenu</name>

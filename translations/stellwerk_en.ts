@@ -2299,6 +2299,10 @@ can://socketcan/can0 — a Gleisbox through a CAN adapter</source>
         <source>In a dialog, menu or popup: closes it, and nothing else</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Locomotives: change the selected locomotive&apos;s Z21 address</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stellwerk::ui::LanguageMenu</name>

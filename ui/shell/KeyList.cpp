@@ -106,6 +106,7 @@ QList<KeyUse> KeyList::panelKeys() {
         {both(Qt::Key_Return, Qt::Key_Enter), tr("Turnout keyboard: switch the key that has the focus")},
         {keyText(QKeySequence(QKeySequence::Save)), tr("Locomotives: save the changes to a folder")},
         {keyText(QKeySequence(QKeySequence::Delete)), tr("Locomotives: remove the selected locomotive")},
+        {keyText(Qt::Key_F2), tr("Locomotives: change the selected locomotive's Z21 address")},
     };
 }
 

@@ -30,8 +30,8 @@ QSet<QString> readmeOptions() {
         return {};
     QSet<QString> options;
     static const QRegularExpression call(
-        QStringLiteral("(?:^|[\\s`/])stellwerk((?: --?[a-z][a-z-]*(?: [^\\s`-][^\\s`]*)?)+)"));
-    static const QRegularExpression option(QStringLiteral("--[a-z][a-z-]*"));
+        QStringLiteral("(?:^|[\\s`/])stellwerk((?: --?[a-z][a-z0-9-]*(?: [^\\s`-][^\\s`]*)?)+)"));
+    static const QRegularExpression option(QStringLiteral("--[a-z][a-z0-9-]*"));
     for (auto calls = call.globalMatch(QString::fromUtf8(readme.readAll())); calls.hasNext();)
         for (auto found = option.globalMatch(calls.next().captured(1)); found.hasNext();)
             options.insert(found.next().captured());
