@@ -3,6 +3,7 @@
 // --place, the CLI drives the trains automatically for a few seconds, prints its events as JSON lines and a
 // summary, and the simulator's referee (GET /accidents) counts no accident.
 
+#include "CliApplication.h"
 #include "SimProgram.h"
 
 #include <QCoreApplication>
@@ -17,14 +18,6 @@
 
 namespace stellwerk::cli {
 namespace {
-
-void ensureApplication() {
-    static int argc = 1;
-    static char name[] = "stellwerk-cli-tests";
-    static char* argv[] = {name, nullptr};
-    if (!QCoreApplication::instance())
-        new QCoreApplication(argc, argv);
-}
 
 std::uint16_t freePort() {
     QTcpServer server;
@@ -48,7 +41,7 @@ QJsonObject accidentsOn(std::uint16_t httpPort) {
 const QStringList DemoTrains{"--place", "mfx:1=1", "--place", "mfx:2=4", "--place", "mm2:24=2"};
 
 TEST(AutoRunCommand, ThreeTrainsRunOnTheDemoWithoutAccidentAndASummaryEndsTheRun) {
-    ensureApplication();
+    test::ensureApplication();
     const std::uint16_t http = freePort();
     support::SimProgram sim(QStringList{"--listen", "127.0.0.1", "--udp-port", "0", "--udp-reply-host",
                                         "127.0.0.1", "--tcp-port", "0", "--http-port", QString::number(http),
@@ -85,7 +78,7 @@ TEST(AutoRunCommand, ThreeTrainsRunOnTheDemoWithoutAccidentAndASummaryEndsTheRun
 // --schedule: the BR 218 runs from Gleis 1 to its one stop, Ausfahrt Ost, and stays; the file then says it
 // has run its schedule (next 1 of 1), so a run started again does not send it anywhere.
 TEST(AutoRunCommand, AScheduleFileSendsTheTrainToItsStopAndRecordsWhereItIs) {
-    ensureApplication();
+    test::ensureApplication();
     QTemporaryDir folder;
     const QString path = folder.filePath("schedules.json");
     QFile file(path);
@@ -114,7 +107,7 @@ TEST(AutoRunCommand, AScheduleFileSendsTheTrainToItsStopAndRecordsWhereItIs) {
 }
 
 TEST(AutoRunCommand, APlacementTheCommandCannotReadIsAUsageError) {
-    ensureApplication();
+    test::ensureApplication();
     QProcess cli;
     cli.start(STELLWERK_CLI, {"--station", "tcp://127.0.0.1:1", "auto", "run", "--place", "mfx:1=3:x"});
     support::runEventsUntil([&] { return cli.state() == QProcess::NotRunning; }, 10000);

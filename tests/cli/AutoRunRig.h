@@ -6,6 +6,7 @@
 // as another control program or a second Central Station holds one) that hears every frame and sends its
 // own.
 
+#include "CliApplication.h"
 #include "SimProgram.h"
 #include "cs2/Codec.h"
 #include "transport/FrameAssembler.h"
@@ -24,14 +25,6 @@
 #include <vector>
 
 namespace stellwerk::cli::test {
-
-inline void ensureApplication() {
-    static int argc = 1;
-    static char name[] = "stellwerk-cli-tests";
-    static char* argv[] = {name, nullptr};
-    if (!QCoreApplication::instance())
-        new QCoreApplication(argc, argv);
-}
 
 inline std::uint16_t freePort() {
     QTcpServer server;

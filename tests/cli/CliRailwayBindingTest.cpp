@@ -2,6 +2,7 @@
 // its session itself (StationClient, as `handhelds` and `resync` do) tells the binding what happens, and
 // the railway is loaded and the layout in use holds the demo's pages and graph as in the window.
 
+#include "CliApplication.h"
 #include "StationClient.h"
 #include "binding/RailwayBinding.h"
 #include "model/LayoutInUse.h"
@@ -20,16 +21,8 @@ using namespace stellwerk;
 
 namespace {
 
-void ensureApplication() {
-    static int argc = 1;
-    static char name[] = "stellwerk-cli-tests";
-    static char* argv[] = {name, nullptr};
-    if (!QCoreApplication::instance())
-        new QCoreApplication(argc, argv);
-}
-
 TEST(CliRailwayBinding, ACommandsOwnSessionLoadsTheRailwayAndTheLayoutInUse) {
-    ensureApplication();
+    stellwerk::cli::test::ensureApplication();
     sim::SimulatedStation station(sim::StationLayout::demo());
     sim::StationServerSettings settings;
     settings.listenAddress = QHostAddress::LocalHost;

@@ -2,6 +2,7 @@
 // TCP: as the master it prints one line per event (JSON lines with --json), drives the station with what
 // the handheld does, and leaves the railway as it was when it ends; as a watcher it only listens.
 
+#include "CliApplication.h"
 #include "CliTestSupport.h"
 #include "StationCommand.h"
 #include "sim/SimulatedBus.h"
@@ -27,14 +28,6 @@ namespace {
 
 using test::Outcome;
 
-void ensureApplication() {
-    static int argc = 1;
-    static char name[] = "stellwerk-cli-tests";
-    static char* argv[] = {name, nullptr};
-    if (!QCoreApplication::instance())
-        new QCoreApplication(argc, argv);
-}
-
 std::vector<std::string> lines(const std::string& text) {
     std::vector<std::string> result;
     std::istringstream in(text);
@@ -47,7 +40,7 @@ std::vector<std::string> lines(const std::string& text) {
 // The MS1 takes the first locomotive of its stack once it has read it, and drives at step 64.
 class HandheldCommandTest : public ::testing::Test {
 protected:
-    static void SetUpTestSuite() { ensureApplication(); }
+    static void SetUpTestSuite() { test::ensureApplication(); }
 
     void SetUp() override {
         bus.attach(station);

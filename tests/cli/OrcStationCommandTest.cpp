@@ -2,6 +2,7 @@
 // an 8-output decoder and a 32-input encoder there, reached over loopback TCP. The exit status says
 // whether a device answered (0) or none did (1); the simulated devices show what really happened.
 
+#include "CliApplication.h"
 #include "CliTestSupport.h"
 #include "OrcCommand.h"
 #include "StationCommand.h"
@@ -26,17 +27,9 @@ using test::Outcome;
 constexpr std::uint32_t DecoderUid = 0x3A2E0101; // bus id 0x0101
 constexpr std::uint32_t EncoderUid = 0x3A2E0102; // bus id 0x0102
 
-void ensureApplication() {
-    static int argc = 1;
-    static char name[] = "stellwerk-cli-tests";
-    static char* argv[] = {name, nullptr};
-    if (!QCoreApplication::instance())
-        new QCoreApplication(argc, argv);
-}
-
 class OrcStationCommandTest : public ::testing::Test {
 protected:
-    static void SetUpTestSuite() { ensureApplication(); }
+    static void SetUpTestSuite() { test::ensureApplication(); }
 
     void SetUp() override {
         bus.attach(station);

@@ -2,6 +2,7 @@
 // The exit status says whether the module answered (0 done, 1 no answer, 4 refused); the module's own
 // register file shows what really happened.
 
+#include "CliApplication.h"
 #include "CliTestSupport.h"
 #include "RoCommand.h"
 #include "StationCommand.h"
@@ -22,19 +23,11 @@ namespace {
 
 using test::Outcome;
 
-void ensureApplication() {
-    static int argc = 1;
-    static char name[] = "stellwerk-cli-tests";
-    static char* argv[] = {name, nullptr};
-    if (!QCoreApplication::instance())
-        new QCoreApplication(argc, argv);
-}
-
 const std::string Module1 = "req=0x01FE0001,resp=0x01FF0001";
 
 class RoStationCommandTest : public ::testing::Test {
 protected:
-    static void SetUpTestSuite() { ensureApplication(); }
+    static void SetUpTestSuite() { test::ensureApplication(); }
 
     void SetUp() override {
         bus.attach(station);

@@ -1,9 +1,11 @@
 // `stellwerk-cli --station URL serve --z21 HOST:PORT` / `--withrottle HOST:PORT` against the real
 // stellwerk-sim: a Z21 or WiThrottle client of the tests' own drives the demo's MM loco 24 on its address 24,
-// the command prints one line per client event, and ends after --seconds with exit 0.
+// the command prints one line per client event, and ends after --seconds with exit 0, or on Ctrl+C (SIGINT),
+// leaving every locomotive its clients drove standing at the station.
 
 #include "../core/withrottleserver/WiThrottleTestClient.h"
 #include "../core/z21server/Z21TestClient.h"
+#include "CliApplication.h"
 #include "SimProgram.h"
 
 #include <QCoreApplication>
@@ -12,18 +14,11 @@
 #include <QProcess>
 #include <QTcpServer>
 #include <QUdpSocket>
+#include <csignal>
 #include <gtest/gtest.h>
 
 namespace stellwerk::cli {
 namespace {
-
-void ensureApplication() {
-    static int argc = 1;
-    static char name[] = "stellwerk-cli-tests";
-    static char* argv[] = {name, nullptr};
-    if (!QCoreApplication::instance())
-        new QCoreApplication(argc, argv);
-}
 
 quint16 freeTcpPort() {
     QTcpServer server;
@@ -38,7 +33,7 @@ quint16 freeUdpPort() {
 }
 
 TEST(ServeCommand, AZ21ClientDrivesTheDemosLocoAndEachClientEventIsALine) {
-    ensureApplication();
+    test::ensureApplication();
     support::SimProgram sim(QStringList{"--listen", "127.0.0.1", "--udp-port", "0", "--udp-reply-host",
                                         "127.0.0.1", "--tcp-port", "0", "--http-port", "0"});
     ASSERT_NE(sim.tcpPort(), 0) << sim.output().toStdString();
@@ -79,7 +74,7 @@ TEST(ServeCommand, AZ21ClientDrivesTheDemosLocoAndEachClientEventIsALine) {
 }
 
 TEST(ServeCommand, AWiThrottleClientDrivesTheDemosLocoAndLeavingStopsIt) {
-    ensureApplication();
+    test::ensureApplication();
     support::SimProgram sim(QStringList{"--listen", "127.0.0.1", "--udp-port", "0", "--udp-reply-host",
                                         "127.0.0.1", "--tcp-port", "0", "--http-port", "0"});
     ASSERT_NE(sim.tcpPort(), 0) << sim.output().toStdString();
@@ -113,6 +108,58 @@ TEST(ServeCommand, AWiThrottleClientDrivesTheDemosLocoAndLeavingStopsIt) {
     EXPECT_EQ(cli.exitCode(), 0);
     EXPECT_TRUE(out.contains("named: withrottle 127.0.0.1:")) << out.toStdString();
     EXPECT_TRUE(out.contains("mdns: server (")) << "announced, or the log says why not";
+}
+
+// What the station itself says of the demo's loco 24 (`resync` asks the station and prints each loco).
+QString stationLine24(quint16 stationPort) {
+    QProcess resync;
+    resync.start(STELLWERK_CLI,
+                 QStringList{"--station", QStringLiteral("tcp://127.0.0.1:%1").arg(stationPort), "resync"});
+    if (!resync.waitForFinished(20000))
+        return {};
+    for (const QString& line : QString::fromUtf8(resync.readAllStandardOutput()).split('\n'))
+        if (line.contains("(0x0018):"))
+            return line;
+    return {};
+}
+
+TEST(ServeCommand, CtrlCEndsItAndStopsTheLocomotivesItsClientsDrove) {
+    test::ensureApplication();
+    support::SimProgram sim(QStringList{"--listen", "127.0.0.1", "--udp-port", "0", "--udp-reply-host",
+                                        "127.0.0.1", "--tcp-port", "0", "--http-port", "0"});
+    ASSERT_NE(sim.tcpPort(), 0) << sim.output().toStdString();
+    const quint16 z21Port = freeUdpPort();
+    QProcess cli;
+    cli.start(STELLWERK_CLI,
+              QStringList{"--station", QStringLiteral("tcp://127.0.0.1:%1").arg(sim.tcpPort()), "serve",
+                          "--z21", QStringLiteral("127.0.0.1:%1").arg(z21Port), "--seconds", "120"});
+    QByteArray out;
+    ASSERT_TRUE(support::runEventsUntil(
+        [&] {
+            out += cli.readAllStandardOutput();
+            return out.contains("listening: ");
+        },
+        15000))
+        << out.toStdString() << cli.readAllStandardError().toStdString();
+    z21server::test::Z21TestClient phone(z21Port);
+    phone.send(z21::SetBroadcastFlags{z21::broadcast::DrivingAndSwitching});
+    phone.send(z21::SetLocoDrive{24, {z21::SpeedStepMode::Steps128, true, 40, false}});
+    ASSERT_TRUE(support::runEventsUntil(
+        [&] {
+            const auto info = phone.locoInfo(24);
+            return info && info->speed.step == 40;
+        },
+        10000))
+        << "the station confirmed the speed";
+    ASSERT_FALSE(stationLine24(sim.tcpPort()).contains(": speed 0,")) << "the loco runs before Ctrl+C";
+
+    ::kill(pid_t(cli.processId()), SIGINT);
+    ASSERT_TRUE(support::runEventsUntil([&] { return cli.state() == QProcess::NotRunning; }, 10000))
+        << "Ctrl+C ends serve long before its 120 s";
+    EXPECT_EQ(cli.exitStatus(), QProcess::NormalExit);
+    EXPECT_EQ(cli.exitCode(), 0);
+    EXPECT_TRUE(stationLine24(sim.tcpPort()).contains(": speed 0,"))
+        << "the station ends with the phone's loco standing: " << stationLine24(sim.tcpPort()).toStdString();
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 // `stellwerk-cli --station URL orc find|watch` on its TCP port, as a user runs them. What the central finds
 // and sees is what the simulator's options put on its bus.
 
+#include "CliApplication.h"
 #include "SimProgram.h"
 
 #include <QCoreApplication>
@@ -10,14 +11,6 @@
 
 namespace stellwerk::cli {
 namespace {
-
-void ensureApplication() {
-    static int argc = 1;
-    static char name[] = "stellwerk-cli-tests";
-    static char* argv[] = {name, nullptr};
-    if (!QCoreApplication::instance())
-        new QCoreApplication(argc, argv);
-}
 
 struct CliRun {
     int status = -1;
@@ -34,7 +27,7 @@ CliRun orc(std::uint16_t port, const QStringList& arguments) {
 }
 
 TEST(SimOrcCommand, OrcFindListsWhatTheSimulatorsOptionsPutOnItsBus) {
-    ensureApplication();
+    test::ensureApplication();
     support::SimProgram sim(QStringList{"--orc-booster", "--orc-decoders", "2", "--orc-encoders", "1"} +
                             support::Quiet);
     const std::uint16_t port = sim.tcpPort();
@@ -50,7 +43,7 @@ TEST(SimOrcCommand, OrcFindListsWhatTheSimulatorsOptionsPutOnItsBus) {
 }
 
 TEST(SimOrcCommand, OrcWatchShowsTheEncodersInputsAndTheBoostersOverload) {
-    ensureApplication();
+    test::ensureApplication();
     support::SimProgram sim(QStringList{"--orc-booster", "--orc-overload-after", "300", "--orc-encoders", "1",
                                         "--orc-encoder-toggle", "200"} +
                             support::Quiet);

@@ -3,6 +3,7 @@
 
 #include "StationCommand.h"
 
+#include "CliApplication.h"
 #include "CliTestSupport.h"
 #include "PingOnlyDevice.h"
 #include "cs2/Codec.h"
@@ -33,16 +34,8 @@ constexpr std::uint32_t GleisboxUid = 0x47431001;
 
 // The cli tests run on gtest_main; the station commands need an application for their event loop. It is
 // never deleted: Qt objects of other tests may outlive any owner we could give it.
-void ensureApplication() {
-    static int argc = 1;
-    static char name[] = "stellwerk-cli-tests";
-    static char* argv[] = {name, nullptr};
-    if (!QCoreApplication::instance())
-        new QCoreApplication(argc, argv);
-}
-
 // A UDP port nobody uses right now (the system's choice, released again).
-std::uint16_t freeUdpPort() {
+std::uint16_t freeStationUdpPort() {
     QUdpSocket probe;
     EXPECT_TRUE(probe.bind(QHostAddress::LocalHost, 0));
     return probe.localPort();
@@ -56,13 +49,13 @@ std::size_t countLines(const std::string& text) {
 // replies go to `cliUdpPort_`, where the command line listens (udp://...?listen=).
 class StationCommandTest : public ::testing::Test {
 protected:
-    static void SetUpTestSuite() { ensureApplication(); }
+    static void SetUpTestSuite() { test::ensureApplication(); }
 
     void SetUp() override {
         sim::SimulatedStation::Options options;
         options.gleisbox = true;
         station_ = std::make_unique<sim::SimulatedStation>(sim::StationLayout::demo(), options);
-        cliUdpPort_ = freeUdpPort();
+        cliUdpPort_ = freeStationUdpPort();
         sim::StationServerSettings settings;
         settings.listenAddress = QHostAddress::LocalHost;
         settings.udpPort = 0;
@@ -369,9 +362,9 @@ TEST_F(StationCommandTest, TheProgramExitsWithZeroWhenTheStationAcknowledged) {
 // ---- failures -----------------------------------------------------------------------------------------
 
 TEST_F(StationCommandTest, NobodyAnsweringIsNotAcknowledged) {
-    const std::uint16_t silent = freeUdpPort();
+    const std::uint16_t silent = freeStationUdpPort();
     const std::string url =
-        "udp://127.0.0.1:" + std::to_string(silent) + "?listen=" + std::to_string(freeUdpPort());
+        "udp://127.0.0.1:" + std::to_string(silent) + "?listen=" + std::to_string(freeStationUdpPort());
     const Outcome result = run(url, {"speed", "mfx:5", "500"});
     EXPECT_EQ(result.status, 1);
     EXPECT_EQ(result.out, "");
