@@ -193,7 +193,9 @@ TEST_P(Z21StalledStation, DrivesAreRefusedNothingIsReplayedAndThePowerIsToldOnAg
     expectNothingReplayed(rig, *phone, refusedSteps);
     phone->send(driveTo(60));
     EXPECT_TRUE(waitFor([&] { return rig.confirmedSpeed() == speedOf(60); })) << "it drives again";
-    EXPECT_EQ(refusedSteps.size() + 1, refused) << "the first refused drive and every one after it";
+    // Every drive sent after the first refusal was seen is refused too; one or more sent before that was
+    // seen (the loop looks every 100 ms, a loaded machine may answer later) count as refused as well.
+    EXPECT_GE(refused, refusedSteps.size() + 1) << "the first refused drive and every one after it";
     std::cout << "    " << stallMs / 1000 << " s: " << refused << " drives refused during the stall"
               << std::endl;
 }
