@@ -19,6 +19,8 @@ target_sources(stellwerk-model PRIVATE
     model/Programmer.h
     model/Railway.cpp
     model/Railway.h
+    model/RailwayFollower.cpp
+    model/RailwayFollower.h
     model/RailwayHandhelds.cpp
     model/RailwayDevices.cpp
     model/RailwayDevices.h

@@ -12,7 +12,7 @@ namespace stellwerk::withrottleserver {
 WiThrottleServer::WiThrottleServer(model::Z21Addresses& addresses, WiThrottleServerOptions options,
                                    QObject* parent)
     : QObject(parent), addresses_(addresses), options_(std::move(options)), listener_(new QTcpServer(this)),
-      heartbeatTimer_(new QTimer(this)) {
+      heartbeatTimer_(new QTimer(this)), follower_(railwayChanges()) {
     clock_.start();
     connect(listener_, &QTcpServer::newConnection, this, &WiThrottleServer::accept);
     const auto tick =
@@ -50,31 +50,32 @@ std::size_t WiThrottleServer::clientCount() const {
 void WiThrottleServer::setRailway(model::Railway* railway) {
     if (railway_ == railway)
         return;
-    if (railway_) {
-        railway_->disconnect(this);
-        railway_->throttlePort().owners().disconnect(this);
-    }
     railway_ = railway;
-    wiRailway_.reset();
-    if (railway) {
-        wiRailway_ = std::make_unique<WiThrottleRailway>(*railway, addresses_);
+    wiRailway_ = railway ? std::make_unique<WiThrottleRailway>(*railway, addresses_) : nullptr;
+    if (wiRailway_)
         wiRailway_->coverLocomotives();
-        connect(railway, &model::Railway::loaded, this, [this] { wiRailway_->coverLocomotives(); });
-        connect(railway, &model::Railway::locomotivesChanged, this, &WiThrottleServer::locosChanged);
-        connect(railway, &model::Railway::locomotiveCommandAcknowledged, this,
-                [this](quint32 loco) { locosChanged({loco}); });
-        connect(railway, &model::Railway::accessoriesChanged, this, &WiThrottleServer::turnoutsChanged);
-        connect(railway, &model::Railway::routeFinished, this, &WiThrottleServer::routesChanged);
-        connect(railway, &model::Railway::powerChanged, this, &WiThrottleServer::powerChanged);
-        connect(railway, &model::Railway::stateReportedChanged, this, &WiThrottleServer::powerChanged);
-        connect(&railway->throttlePort().owners(), &model::LocoOwners::takenOver, this,
-                &WiThrottleServer::takenOver);
-        connect(railway, &QObject::destroyed, this, [this] {
-            wiRailway_.reset();
-            powerChanged();
-        });
-    }
+    follower_.follow(railway);
     powerChanged();
+}
+
+model::RailwayFollower::Changes WiThrottleServer::railwayChanges() {
+    model::RailwayFollower::Changes changes;
+    changes.loaded = [this] {
+        if (wiRailway_)
+            wiRailway_->coverLocomotives();
+    };
+    changes.locomotives = [this](const QList<quint32>& locIds) { locosChanged(locIds); };
+    changes.accessories = [this](const QList<qint64>& numbers) { turnoutsChanged(numbers); };
+    changes.routeFinished = [this] { routesChanged(); };
+    changes.power = [this] { powerChanged(); };
+    changes.takenOver = [this](quint32 locId, const QString& from, const QString& to) {
+        takenOver(locId, from, to);
+    };
+    changes.gone = [this] {
+        wiRailway_.reset();
+        powerChanged();
+    };
+    return changes;
 }
 
 void WiThrottleServer::stopAll() {

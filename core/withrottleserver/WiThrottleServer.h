@@ -1,5 +1,6 @@
 #pragma once
 
+#include "model/RailwayFollower.h"
 #include "withrottle/ClientMessages.h"
 #include "withrottle/ServerLines.h"
 #include "withrottleserver/WiThrottleClient.h"
@@ -126,6 +127,7 @@ private:
     void routesChanged();
     void powerChanged();
     void takenOver(quint32 locId, const QString& from, const QString& to);
+    model::RailwayFollower::Changes railwayChanges();
     void tell(WiThrottleEvent::Kind kind, const WiThrottleClient& client, const QString& detail = {});
     qint64 now() const { return clock_.elapsed(); }
     int heartbeatSeconds() const;
@@ -154,6 +156,7 @@ private:
     WiThrottleCounters counters_;
     QPointer<model::Railway> railway_;
     std::unique_ptr<WiThrottleRailway> wiRailway_;
+    model::RailwayFollower follower_; // last: it lets go of the railway before the rest is gone
 };
 
 } // namespace stellwerk::withrottleserver

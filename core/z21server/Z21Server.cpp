@@ -15,7 +15,7 @@ namespace stellwerk::z21server {
 
 Z21Server::Z21Server(model::Z21Addresses& addresses, Z21ServerOptions options, QObject* parent)
     : QObject(parent), addresses_(addresses), options_(std::move(options)), socket_(new QUdpSocket(this)),
-      silenceTimer_(new QTimer(this)) {
+      silenceTimer_(new QTimer(this)), follower_(railwayChanges()) {
     clock_.start();
     connect(socket_, &QUdpSocket::readyRead, this, &Z21Server::readDatagrams);
     const auto tick =
@@ -44,29 +44,32 @@ quint16 Z21Server::port() const {
 void Z21Server::setRailway(model::Railway* railway) {
     if (railway_ == railway)
         return;
-    if (railway_)
-        railway_->disconnect(this);
     railway_ = railway;
-    z21Railway_.reset();
-    if (railway) {
-        z21Railway_ = std::make_unique<Z21Railway>(*railway, addresses_);
+    z21Railway_ = railway ? std::make_unique<Z21Railway>(*railway, addresses_) : nullptr;
+    if (z21Railway_)
         z21Railway_->coverLocomotives();
-        connect(railway, &model::Railway::loaded, this, [this] { z21Railway_->coverLocomotives(); });
-        connect(railway, &model::Railway::locomotivesChanged, this, &Z21Server::locosChanged);
-        connect(railway, &model::Railway::locomotiveCommandAcknowledged, this,
-                [this](quint32 loco) { locosChanged({loco}); });
-        connect(railway, &model::Railway::accessoriesChanged, this, &Z21Server::turnoutsChanged);
-        connect(railway, &model::Railway::addressesChanged, this, &Z21Server::turnoutsChanged);
-        connect(railway, &model::Railway::powerChanged, this, &Z21Server::powerChanged);
-        connect(railway, &model::Railway::stateReportedChanged, this, &Z21Server::powerChanged);
-        connect(&railway->throttlePort().owners(), &model::LocoOwners::takenOver, this,
-                &Z21Server::takenOver);
-        connect(railway, &QObject::destroyed, this, [this] {
-            z21Railway_.reset();
-            powerChanged();
-        });
-    }
+    follower_.follow(railway);
     powerChanged();
+}
+
+model::RailwayFollower::Changes Z21Server::railwayChanges() {
+    model::RailwayFollower::Changes changes;
+    changes.loaded = [this] {
+        if (z21Railway_)
+            z21Railway_->coverLocomotives();
+    };
+    changes.locomotives = [this](const QList<quint32>& locIds) { locosChanged(locIds); };
+    changes.accessories = [this](const QList<qint64>& numbers) { turnoutsChanged(numbers); };
+    changes.addresses = changes.accessories;
+    changes.power = [this] { powerChanged(); };
+    changes.takenOver = [this](quint32 locId, const QString& from, const QString& to) {
+        takenOver(locId, from, to);
+    };
+    changes.gone = [this] {
+        z21Railway_.reset();
+        powerChanged();
+    };
+    return changes;
 }
 
 void Z21Server::stopAll() {

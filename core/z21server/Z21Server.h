@@ -1,5 +1,6 @@
 #pragma once
 
+#include "model/RailwayFollower.h"
 #include "z21/Replies.h"
 #include "z21/Requests.h"
 #include "z21server/Z21Clients.h"
@@ -112,6 +113,7 @@ private:
     void turnoutsChanged(const QList<qint64>& keyboardNumbers);
     void powerChanged();
     void takenOver(quint32 locId, const QString& from, const QString& to);
+    model::RailwayFollower::Changes railwayChanges();
     void tell(Z21Event::Kind kind, const Z21Client& client, std::uint16_t address = 0,
               const QString& detail = {});
     qint64 now() const { return clock_.elapsed(); }
@@ -138,6 +140,7 @@ private:
     Z21Counters counters_;
     QPointer<model::Railway> railway_;
     std::unique_ptr<Z21Railway> z21Railway_;
+    model::RailwayFollower follower_; // last: it lets go of the railway before the rest is gone
 };
 
 } // namespace stellwerk::z21server
