@@ -2936,7 +2936,7 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     </message>
     <message>
         <source>&amp;Phones and Tablets…</source>
-        <translation>&amp;Telefone und Tablets…</translation>
+        <translation>&amp;Handys und Tablets…</translation>
     </message>
     <message>
         <source>Let the Z21 app, a WLANmaus, Engine Driver or WiThrottle drive the layout</source>
@@ -3016,11 +3016,11 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <name>stellwerk::ui::PhoneStatus</name>
     <message>
         <source>Phones: %1</source>
-        <translation>Telefone: %1</translation>
+        <translation>Handys: %1</translation>
     </message>
     <message>
         <source>No phone or tablet is connected.</source>
-        <translation>Kein Telefon und kein Tablet ist verbunden.</translation>
+        <translation>Kein Handy und kein Tablet ist verbunden.</translation>
     </message>
     <message>
         <source>Connected:
@@ -3033,11 +3033,11 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     <name>stellwerk::ui::PhonesDialog</name>
     <message>
         <source>Phones and Tablets</source>
-        <translation>Telefone und Tablets</translation>
+        <translation>Handys und Tablets</translation>
     </message>
     <message>
         <source>Phones and tablets drive the layout as throttles: the Z21 app and the WLANmaus through the Z21 server, Engine Driver and WiThrottle through the WiThrottle server.</source>
-        <translation>Telefone und Tablets fahren die Anlage als Handregler: die Z21-App und die WLANmaus über den Z21-Server, Engine Driver und WiThrottle über den WiThrottle-Server.</translation>
+        <translation>Handys und Tablets fahren die Anlage als Handregler: die Z21-App und die WLANmaus über den Z21-Server, Engine Driver und WiThrottle über den WiThrottle-Server.</translation>
     </message>
     <message>
         <source>Z21 server (Z21 app, WLANmaus)</source>
@@ -3049,11 +3049,11 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     </message>
     <message>
         <source>every phone in the network</source>
-        <translation>jedes Telefon im Netz</translation>
+        <translation>jedes Handy im Netz</translation>
     </message>
     <message>
         <source>Only these phones (addresses):</source>
-        <translation>Nur diese Telefone (Adressen):</translation>
+        <translation>Nur diese Handys (Adressen):</translation>
     </message>
     <message>
         <source>all network interfaces</source>
@@ -3073,7 +3073,7 @@ can://socketcan/can0 — eine Gleisbox über einen CAN-Adapter</translation>
     </message>
     <message>
         <source>The allowed phones must be network addresses, separated by commas (for example 192.168.1.30, 192.168.1.31).</source>
-        <translation>Die erlaubten Telefone müssen Netzwerkadressen sein, durch Kommas getrennt (zum Beispiel 192.168.1.30, 192.168.1.31).</translation>
+        <translation>Die erlaubten Handys müssen Netzwerkadressen sein, durch Kommas getrennt (zum Beispiel 192.168.1.30, 192.168.1.31).</translation>
     </message>
     <message>
         <source>Could not start: %1. Another program may use the port; choose another one.</source>

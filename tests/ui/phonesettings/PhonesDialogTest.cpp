@@ -1,16 +1,20 @@
 // Issue 35: Station → Phones… writes the phone settings and starts the servers at once on a free loopback
-// port; Escape changes nothing; the status bar counts the phones of a real Z21 client on loopback.
+// port; Escape changes nothing; the status bar counts the phones of a real Z21 client on loopback. The dialog
+// in English and German, its whole text shown on a 1366x768 screen (saved as
+// docs/screenshots/phones-dialog*.png when STELLWERK_SCREENSHOT_DIR names a folder).
 
 #include "phonesettings/PhonesDialog.h"
 
 #include "../../core/z21server/Z21TestClient.h"
 #include "phones/PhoneServers.h"
 #include "phonesettings/PhoneStatus.h"
+#include "shell/Translations.h"
 #include "z21server/Z21Server.h"
 
 #include <QCheckBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPixmap>
 #include <QSettings>
 #include <QSpinBox>
 #include <QTcpServer>
@@ -126,6 +130,40 @@ TEST_F(PhonesDialogTest, TheStatusBarCountsTheConnectedPhones) {
 
     servers.apply({});
     EXPECT_TRUE(status.isHidden());
+}
+
+// Both servers on with a list of allowed phones, as a user fills it in: every label is shown whole (none is
+// narrower than its text) and the dialog fits a 1366x768 screen, in both languages.
+TEST_F(PhonesDialogTest, FitsASmallScreenInEnglishAndGerman) {
+    phones::PhoneSettings chosen;
+    chosen.z21 = true;
+    chosen.withrottle = true;
+    chosen.allowedClients = {QHostAddress(QStringLiteral("192.168.1.30")),
+                             QHostAddress(QStringLiteral("192.168.1.31"))};
+    chosen.save(settings);
+    const QString folder = qEnvironmentVariable("STELLWERK_SCREENSHOT_DIR");
+    Translations translations;
+    for (const Language language : {Language::English, Language::German}) {
+        ASSERT_TRUE(translations.select(language));
+        PhonesDialog dialog(servers);
+        dialog.show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(&dialog));
+        EXPECT_LE(dialog.width(), 1366 * 2 / 3) << "a dialog, not a window";
+        EXPECT_LE(dialog.height(), 768 - 80) << "fits under a panel and title bar";
+        for (const QLabel* label : dialog.findChildren<QLabel*>()) {
+            if (!label->isVisible() || label->wordWrap() || label->text().isEmpty())
+                continue;
+            EXPECT_GE(label->width(), label->fontMetrics().horizontalAdvance(label->text()) - 2)
+                << label->text().toStdString() << " is cut off";
+        }
+        if (language == Language::German) {
+            EXPECT_EQ(dialog.windowTitle(), QStringLiteral("Handys und Tablets"));
+        }
+        if (!folder.isEmpty()) {
+            const QString suffix = language == Language::German ? QStringLiteral("-de") : QString();
+            EXPECT_TRUE(dialog.grab().save(folder + QStringLiteral("/phones-dialog%1.png").arg(suffix)));
+        }
+    }
 }
 
 } // namespace
