@@ -50,3 +50,33 @@ seed_test_costs() {
     mkdir -p "$1/Testing/Temporary"
     cp "$(dirname "${BASH_SOURCE[0]}")/../tests/long-tests.txt" "$costs"
 }
+
+# The tests that mostly wait (an outage or a stalled station of 20 s: 10 s and more in
+# tests/long-tests.txt), as one ctest regular expression.
+waiting_tests_regex() {
+    local names
+    names=$(awk '$3 >= 10 {print $1}' "$(dirname "${BASH_SOURCE[0]}")/../tests/long-tests.txt" |
+        sed 's/\./\\./g' | paste -sd '|')
+    printf '^(%s)$' "$names"
+}
+
+# Runs ctest with the given arguments (a --test-dir or --preset and a selection) as two runs at once: the
+# waiting tests two at a time, beside the others on every core. A single `ctest -j` would hold a core for
+# each waiting test and leave it idle for its 20 s. The waiting tests' report follows the others'; fails
+# when either run fails.
+run_split_ctest() {
+    local regex log waiting status=0 waiting_status=0
+    regex=$(waiting_tests_regex)
+    # Listing the tests first lets each test program list its tests once (gtest discovery at test time):
+    # two ctest runs discovering at once would both write the list, and each test would run twice.
+    ctest "$@" --show-only >/dev/null
+    log=$(mktemp)
+    ctest "$@" -j2 --tests-regex "$regex" >"$log" 2>&1 &
+    waiting=$!
+    ctest "$@" -j"$(nproc)" --exclude-regex "$regex" || status=$?
+    wait "$waiting" || waiting_status=$?
+    say "The waiting tests (outages, stalled stations), run beside the others"
+    cat "$log"
+    rm -f "$log"
+    [[ $status -eq 0 && $waiting_status -eq 0 ]]
+}

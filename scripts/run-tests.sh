@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets up and builds Stellwerk with warnings as errors (scripts/setup.sh --werror), then runs every test
-# with ctest. The last lines printed are ctest's summary, and the exit code is ctest's.
+# with ctest: the tests that mostly wait (20 s outages) beside the others (scripts/common.sh). The last
+# lines printed are the waiting tests' summary; the exit code is 1 when a test of either run failed.
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -15,5 +16,5 @@ seed_test_costs build
 export QT_QPA_PLATFORM=offscreen
 
 printf '==> Running the tests\n'
-# Each test picks its own free ports, so they run one per core.
-exec ctest --test-dir build --output-on-failure -j"$(nproc)"
+# Each test picks its own free ports, so they run one per core, and the waiting ones beside them.
+run_split_ctest --test-dir build --output-on-failure

@@ -37,4 +37,7 @@ source scripts/common.sh
 seed_test_costs build-sanitize
 
 printf '==> Running the tests under AddressSanitizer and UndefinedBehaviorSanitizer\n'
-exec ctest --preset sanitize -j"$(nproc)" "${selection[@]}"
+if [[ ${selection[0]:-} == --tests-regex ]]; then
+    exec ctest --preset sanitize -j"$(nproc)" "${selection[@]}"
+fi
+run_split_ctest --preset sanitize "${selection[@]}"
