@@ -23,7 +23,7 @@ namespace {
 using namespace test;
 
 constexpr std::uint32_t Br218 = 0x4001, Ice = 0x4002, V100 = 0x0018;
-const QStringList DemoTrains{"--place", "mfx:1=1", "--place", "mfx:2=4", "--place", "mm2:24=2"};
+const QStringList ThreeTrains{"--place", "mfx:1=1", "--place", "mfx:2=4", "--place", "mm2:24=2"};
 const QStringList OneTrain{"--place", "mfx:1=1"};
 
 // The demo's blocks by the contact each holds (device 0).
@@ -152,12 +152,12 @@ bool everyTrainStoppedOnReturn(AutoRunProcess& run, std::size_t from) {
 // on, neither enters the blocks the BR 218 holds.
 TEST(AutoRunFaults, AnotherProgramDrivingATrainMakesItManualAndNothingEntersItsBlocks) {
     ensureApplication();
-    DemoStation station(DemoTrains);
+    DemoStation station(ThreeTrains);
     ASSERT_NE(station.port(), 0) << station.program().output().toStdString();
     BusNeighbour neighbour;
     ASSERT_TRUE(neighbour.connectTo(station.port()));
     AutoRunProcess run;
-    run.start(station.port(), DemoTrains + QStringList{"--seconds", "60"});
+    run.start(station.port(), ThreeTrains + QStringList{"--seconds", "60"});
     ASSERT_TRUE(run.waitForEvent("departed", loc(Br218))) << run.log();
     std::set<int> held;
     for (const QJsonObject& event : run.events())
@@ -250,13 +250,13 @@ TEST(AutoRunFaults, AGhostOnTheReservedWayStopsTheTrain) {
 // the fault names the turnout.
 TEST(AutoRunFaults, ATurnoutNeverConfirmedKeepsTheTrainAndGivesItsWayBack) {
     ensureApplication();
-    DemoStation station(DemoTrains);
+    DemoStation station(ThreeTrains);
     ASSERT_NE(station.port(), 0) << station.program().output().toStdString();
     FrameEater eater(station.port(), turnout2Answer);
     BusNeighbour neighbour;
     ASSERT_TRUE(neighbour.connectTo(station.port()));
     AutoRunProcess run;
-    run.start(eater.port(), DemoTrains + QStringList{"--seconds", "60"});
+    run.start(eater.port(), ThreeTrains + QStringList{"--seconds", "60"});
     ASSERT_TRUE(run.waitForEvent("reserved", loc(Br218))) << run.log();
     ASSERT_TRUE(run.waitForEvent("fault", loc(Br218), 30000)) << run.log();
     EXPECT_TRUE(run.waitFor([](const QJsonObject& e) {
@@ -304,12 +304,12 @@ TEST(AutoRunFaults, ATrainNotSeenArrivingInTimeIsLostAndStopped) {
 // broken gateway's bytes): dropped, and the trains run on without accident or fault.
 TEST(AutoRunFaults, GarbageOnTheBusWhileTrainsRunChangesNothing) {
     ensureApplication();
-    DemoStation station(DemoTrains);
+    DemoStation station(ThreeTrains);
     ASSERT_NE(station.port(), 0) << station.program().output().toStdString();
     e2e::JunkRelay relay(station.port());
     ASSERT_TRUE(relay.listening());
     AutoRunProcess run;
-    run.start(relay.port(), DemoTrains + QStringList{"--seconds", "12"});
+    run.start(relay.port(), ThreeTrains + QStringList{"--seconds", "12"});
     QTimer junk;
     QObject::connect(&junk, &QTimer::timeout, [&] { relay.injectToApp(QByteArray(26, '\xFF')); });
     junk.start(100);
@@ -345,12 +345,12 @@ class AutoRunStall : public ::testing::TestWithParam<int> {};
 TEST_P(AutoRunStall, TheTrainsStandAfterTheOutageAndNothingIsReplayed) {
     const int stallMs = GetParam();
     ensureApplication();
-    DemoStation station(DemoTrains);
+    DemoStation station(ThreeTrains);
     ASSERT_NE(station.port(), 0) << station.program().output().toStdString();
     BusNeighbour neighbour;
     ASSERT_TRUE(neighbour.connectTo(station.port()));
     AutoRunProcess run;
-    run.start(station.port(), DemoTrains + QStringList{"--seconds", "120"});
+    run.start(station.port(), ThreeTrains + QStringList{"--seconds", "120"});
     ASSERT_TRUE(trainsDeparted(run, 2)) << run.log();
     const std::size_t before = run.events().size();
     ASSERT_TRUE(station.program().stall());
@@ -395,10 +395,10 @@ INSTANTIATE_TEST_SUITE_P(Outage, AutoRunStall, ::testing::Values(1000, 20000),
 TEST(AutoRunFaults, AStationKilledAndStartedAgainMovesNothing) {
     ensureApplication();
     const std::uint16_t port = freePort();
-    auto station = std::make_unique<DemoStation>(DemoTrains, port);
+    auto station = std::make_unique<DemoStation>(ThreeTrains, port);
     ASSERT_EQ(station->port(), port) << station->program().output().toStdString();
     AutoRunProcess run;
-    run.start(port, DemoTrains + QStringList{"--seconds", "120"});
+    run.start(port, ThreeTrains + QStringList{"--seconds", "120"});
     ASSERT_TRUE(trainsDeparted(run, 2)) << run.log();
     EXPECT_EQ(station->accidents(), 0);
     const std::size_t before = run.events().size();
@@ -406,7 +406,7 @@ TEST(AutoRunFaults, AStationKilledAndStartedAgainMovesNothing) {
     ASSERT_TRUE(run.waitFor(
         [&](const QJsonObject&) { return linesSaying(run, "stopped-unknown", before) >= 3; }, 10000))
         << run.log();
-    station = std::make_unique<DemoStation>(DemoTrains, port);
+    station = std::make_unique<DemoStation>(ThreeTrains, port);
     ASSERT_EQ(station->port(), port) << station->program().output().toStdString();
     BusNeighbour neighbour;
     ASSERT_TRUE(neighbour.connectTo(port));

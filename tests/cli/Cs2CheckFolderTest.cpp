@@ -2,6 +2,7 @@
 // headers read as what the file's name says.
 
 #include "CliTestSupport.h"
+#include "CommandRuns.h"
 #include "Cs2Command.h"
 
 #include <QTemporaryDir>
@@ -10,18 +11,13 @@
 #include <gtest/gtest.h>
 #include <sstream>
 
-using stellwerk::cli::runCs2;
 using stellwerk::cli::test::corpus;
 using stellwerk::cli::test::Outcome;
 namespace fs = std::filesystem;
 
-namespace {
+using stellwerk::cli::test::cs2Command;
 
-Outcome cs2(std::vector<std::string> arguments) {
-    std::ostringstream out, err;
-    const int status = runCs2(arguments, out, err);
-    return {status, out.str(), err.str()};
-}
+namespace {
 
 // A scratch layout folder: config/<path> for each file.
 class ScratchFolder {
@@ -42,7 +38,7 @@ const std::string gbertFolder = "GBert__railroad/can2udp/files/maerklin";
 
 TEST(Cs2CheckFolder, ACorpusFolderIsCheckedFileByFileAndAsAWhole) {
     const std::string folder = corpus(gbertFolder);
-    const Outcome outcome = cs2({"check", folder});
+    const Outcome outcome = cs2Command({"check", folder});
     EXPECT_EQ(outcome.status, 0) << outcome.out;
     const std::string config = folder + "/config/";
     for (const std::string& line : {config + "gleisbild.cs2: ok - track plan index (gleisbild.cs2): 1 page\n",
@@ -65,7 +61,7 @@ TEST(Cs2CheckFolder, MissingPagesAndADamagedHeaderAreWarningsOfAUsableFolder) {
     folder.add("gleisbild.cs2", "[gleisbild]\nseite\n .id=1\n .name=Bahnhof\nseite\n .id=2\n .name=Bw\n");
     folder.add("gleisbilder/Bahnhof.cs2", "Bau [gleisbildseite]\nelement\n .id=0x102\n .typ=gerade\n");
     folder.add("magnetartikel.cs2", "[magnetart\nartikel\n .id=1\n .typ=rechtsweiche\n");
-    const Outcome outcome = cs2({"check", folder.path()});
+    const Outcome outcome = cs2Command({"check", folder.path()});
     EXPECT_EQ(outcome.status, 0) << outcome.out;
     const std::string config = folder.config().string() + "/";
     for (const std::string& line :
@@ -85,7 +81,7 @@ TEST(Cs2CheckFolder, MissingPagesAndADamagedHeaderAreWarningsOfAUsableFolder) {
 TEST(Cs2CheckFolder, AFolderWithoutTrackPlanIsNotUsable) {
     ScratchFolder folder;
     folder.add("lokomotive.cs2", "[lokomotive]\nlokomotive\n .name=V 100\n");
-    const Outcome outcome = cs2({"check", folder.path()});
+    const Outcome outcome = cs2Command({"check", folder.path()});
     EXPECT_EQ(outcome.status, 1);
     EXPECT_NE(outcome.out.find(folder.path() +
                                ": not usable - there is no track plan (config/gleisbild.cs2, or pages in "
@@ -98,7 +94,7 @@ TEST(Cs2CheckFolder, AFolderWithoutTrackPlanIsNotUsable) {
 TEST(Cs2CheckFolder, PagesWithoutTheirIndexAreCheckedAndTheIndexReportedMissing) {
     ScratchFolder folder;
     folder.add("gleisbilder/Bahnhof.cs2", "[gleisbildseite]\nelement\n .id=0x101\n .typ=gerade\n");
-    const Outcome outcome = cs2({"check", folder.path()});
+    const Outcome outcome = cs2Command({"check", folder.path()});
     EXPECT_EQ(outcome.status, 0) << outcome.out;
     for (const std::string& line :
          {std::string("gleisbild.cs2: warning: the track plan index is missing; the 1 page file(s) in "
@@ -114,7 +110,7 @@ TEST(Cs2CheckFolder, AnUnusableFileMakesTheFolderUnusable) {
     ScratchFolder folder;
     folder.add("gleisbild.cs2", "[gleisbild]\nseite\n .id=1\n .name=Bahnhof\n");
     folder.add("gleisbilder/Bahnhof.cs2", "[conf]\nelement\n .id=1\n");
-    const Outcome outcome = cs2({"check", folder.path()});
+    const Outcome outcome = cs2Command({"check", folder.path()});
     EXPECT_EQ(outcome.status, 1) << outcome.out;
     EXPECT_NE(outcome.out.find(folder.path() + ": not usable as a layout"), std::string::npos) << outcome.out;
 }

@@ -1,29 +1,13 @@
 #include "DecodeCommand.h"
 
 #include "../core/mcan/SeedTrace.h"
+#include "CommandRuns.h"
 #include "can/FrameText.h"
 
 #include <gtest/gtest.h>
 #include <sstream>
 
-using stellwerk::cli::runDecode;
-
-namespace {
-
-struct Run {
-    int status;
-    std::string out;
-    std::string err;
-};
-
-Run decode(std::vector<std::string> arguments, const std::string& input = {}) {
-    std::istringstream in(input);
-    std::ostringstream out, err;
-    const int status = runDecode(arguments, in, out, err);
-    return {status, out.str(), err.str()};
-}
-
-} // namespace
+using stellwerk::cli::test::decode;
 
 TEST(CliDecode, ArgumentsInEveryNotationGiveOneLineEach) {
     const auto run = decode({"00004711 5 00 00 00 00 00", "00004711#0000000000", "00004711050000000000000000",

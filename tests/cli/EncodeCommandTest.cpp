@@ -1,25 +1,11 @@
 #include "EncodeCommand.h"
 
+#include "CommandRuns.h"
+
 #include <gtest/gtest.h>
 #include <sstream>
 
-using stellwerk::cli::runEncode;
-
-namespace {
-
-struct Run {
-    int status;
-    std::string out;
-    std::string err;
-};
-
-Run encode(std::vector<std::string> arguments) {
-    std::ostringstream out, err;
-    const int status = runEncode(arguments, out, err);
-    return {status, out.str(), err.str()};
-}
-
-} // namespace
+using stellwerk::cli::test::encode;
 
 TEST(CliEncode, PrintsAllThreeNotations) {
     const auto run = encode({"loco.speed", "protocol=dcc", "address=3", "speed=288"});

@@ -1,36 +1,14 @@
 // stellwerk-cli decode and encode with OpenRailCAN frames (ORC notes A4.2 vectors, Derived; notes C7).
 
+#include "CommandRuns.h"
 #include "DecodeCommand.h"
 #include "EncodeCommand.h"
 
 #include <gtest/gtest.h>
 #include <sstream>
 
-using stellwerk::cli::runDecode;
-using stellwerk::cli::runEncode;
-
-namespace {
-
-struct Run {
-    int status;
-    std::string out;
-    std::string err;
-};
-
-Run decode(std::vector<std::string> arguments) {
-    std::istringstream in;
-    std::ostringstream out, err;
-    const int status = runDecode(arguments, in, out, err);
-    return {status, out.str(), err.str()};
-}
-
-Run encode(std::vector<std::string> arguments) {
-    std::ostringstream out, err;
-    const int status = runEncode(arguments, out, err);
-    return {status, out.str(), err.str()};
-}
-
-} // namespace
+using stellwerk::cli::test::decode;
+using stellwerk::cli::test::encode;
 
 // Notes A4.2 V5 (Derived): on a station's bus (auto), a frame M-CAN cannot read but ORC can is ORC.
 TEST(CliOrcDecode, DerivedDecoderSwitchReadsAsOrcByDefault) {

@@ -1,31 +1,16 @@
 // `stellwerk-cli encode ro.*` and `decode --ro-module`: RO requests and answers (seed 004) as payloads and
 // frames, with the document's examples.
+#include "CommandRuns.h"
 #include "DecodeCommand.h"
 #include "EncodeCommand.h"
 
 #include <gtest/gtest.h>
 #include <sstream>
 
+using stellwerk::cli::test::decode;
+using stellwerk::cli::test::encode;
+
 namespace {
-
-struct Run {
-    int status;
-    std::string out;
-    std::string err;
-};
-
-Run encode(std::vector<std::string> arguments) {
-    std::ostringstream out, err;
-    const int status = stellwerk::cli::runEncode(arguments, out, err);
-    return {status, out.str(), err.str()};
-}
-
-Run decode(std::vector<std::string> arguments, const std::string& input = {}) {
-    std::istringstream in(input);
-    std::ostringstream out, err;
-    const int status = stellwerk::cli::runDecode(arguments, in, out, err);
-    return {status, out.str(), err.str()};
-}
 
 // 004 §3.4 "Beispiel für das Beschreiben der ersten 16 Relais".
 TEST(CliRo, EncodeSection3_4_RelayExample) {

@@ -29,7 +29,7 @@ std::vector<sim::TrainPlacement> demoTrains() {
     return sim::demoPlacements();
 }
 
-void otherController(sim::SimulatedStation& station, cs2::MessageBody body) {
+void otherControllerSends(sim::SimulatedStation& station, cs2::MessageBody body) {
     station.receive(cs2::encode(cs2::Message{0, false, 0x2F11, std::move(body)}));
 }
 
@@ -92,7 +92,7 @@ TEST(Automation, AnExternalSwitchOfAReservedTurnoutStopsTheTrain) {
         rig.run(AutomationRig::Step);
     ASSERT_EQ(rig.count(Kind::Departed, Br218), 1) << rig.eventLog();
     ASSERT_TRUE(rig.automation->dispatcher().reservations().turnoutOwner(2).has_value());
-    otherController(rig.rig.station, cs2::AccessorySwitch{cs2::LocId(0x3001), 0, 1, std::nullopt});
+    otherControllerSends(rig.rig.station, cs2::AccessorySwitch{cs2::LocId(0x3001), 0, 1, std::nullopt});
     ASSERT_TRUE(waitFor([&] { return rig.railway->accessory(2)->position() == 0; }));
     rig.run(std::chrono::milliseconds(500));
     EXPECT_EQ(rig.count(Kind::Fault, Br218), 1) << rig.eventLog();
@@ -130,7 +130,7 @@ TEST(Automation, AnotherControllerDrivingAnAutomaticTrainMakesItManualUntilHande
         rig.run(AutomationRig::Step);
     ASSERT_EQ(dispatcher.train(Br218)->state, TrainState::Running) << rig.eventLog();
     const int destination = *dispatcher.train(Br218)->destination;
-    otherController(rig.rig.station, cs2::LocoSpeed{cs2::LocId(Br218), 300});
+    otherControllerSends(rig.rig.station, cs2::LocoSpeed{cs2::LocId(Br218), 300});
     ASSERT_TRUE(waitFor([&] { return rig.railway->locomotive(Br218)->speed() == 300; }));
     rig.settle();
     EXPECT_EQ(dispatcher.train(Br218)->mode, automation::TrainMode::Manual);
@@ -138,7 +138,7 @@ TEST(Automation, AnotherControllerDrivingAnAutomaticTrainMakesItManualUntilHande
     for (int i = 0; i < 400 && rig.movement->position(Br218)->block != destination; ++i)
         rig.run(AutomationRig::Step);
     ASSERT_EQ(rig.movement->position(Br218)->block, destination);
-    otherController(rig.rig.station, cs2::LocoSpeed{cs2::LocId(Br218), 0});
+    otherControllerSends(rig.rig.station, cs2::LocoSpeed{cs2::LocId(Br218), 0});
     ASSERT_TRUE(waitFor([&] { return rig.railway->locomotive(Br218)->speed() == 0; }));
     const int iceMoves = rig.count(Kind::Entered, Ice);
     rig.run(std::chrono::seconds(30));
@@ -169,7 +169,7 @@ TEST(Automation, AStopByAnotherControllerHeardTogetherWithTheDepartureMakesTheTr
                                  decoded ? std::get_if<cs2::LocoSpeed>(&decoded->body) : nullptr;
                              if (!stopped && speed && decoded->response && speed->speed.value_or(0) > 0) {
                                  stopped = true;
-                                 otherController(rig.rig.station, cs2::LocoSpeed{cs2::LocId(Br218), 0});
+                                 otherControllerSends(rig.rig.station, cs2::LocoSpeed{cs2::LocId(Br218), 0});
                              }
                          }
                      });

@@ -26,7 +26,7 @@ namespace {
 constexpr std::uint32_t ThrottleUid = 0x3A2E0400; // bus id 0x0400, a throttle (device type 1)
 
 // Whether the frames carry the CS2 command that sets the locomotive's speed.
-bool setsSpeed(const std::vector<can::CanFrame>& frames, std::uint32_t locId, std::uint16_t speed) {
+bool framesSetSpeed(const std::vector<can::CanFrame>& frames, std::uint32_t locId, std::uint16_t speed) {
     for (const can::CanFrame& frame : frames) {
         const auto message = cs2::decode(frame);
         const auto* body = message ? std::get_if<cs2::LocoSpeed>(&message->body) : nullptr;
@@ -187,7 +187,7 @@ TEST_P(ThrottleStationGoneMidCommand, TheGivenUpSpeedNeverArrivesAndTheThrottleD
     ASSERT_TRUE(app.ready());
     QObject::connect(&app.connection.buses(), &connection::ConnectionBuses::stationFramesSeen,
                      &app.connection, [&](const std::vector<can::CanFrame>& frames, bool outgoing) {
-                         if (outgoing && station.server && setsSpeed(frames, MfxLoco, 777))
+                         if (outgoing && station.server && framesSetSpeed(frames, MfxLoco, 777))
                              station.stopServer(); // the station goes with the command on its way
                      });
 

@@ -15,15 +15,15 @@ using namespace test;
 using Kind = AutomationEvent::Kind;
 using trackgraph::End;
 
-constexpr std::uint32_t Loco = 0x4001;
+constexpr std::uint32_t DispatchedLoco = 0x4001;
 
 // BR 218 on Gleis 1 (contact 1) facing b, automatic, with its first way reserved (turnouts 2 and 3 straight).
 class DispatcherTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        ASSERT_EQ(dispatcher.place(Loco, "BR 218", 200, 1, End::B), std::nullopt);
+        ASSERT_EQ(dispatcher.place(DispatchedLoco, "BR 218", 200, 1, End::B), std::nullopt);
         dispatcher.occupancyRead({contact(1)});
-        dispatcher.setMode(Loco, TrainMode::Automatic, 0);
+        dispatcher.setMode(DispatchedLoco, TrainMode::Automatic, 0);
         dispatcher.tick(0);
         remember();
     }
@@ -56,10 +56,10 @@ protected:
 
 TEST_F(DispatcherTest, ATrainDepartsOnlyWhenEveryTurnoutOfItsWayIsConfirmed) {
     EXPECT_EQ(commands,
-              (std::vector<DriveCommand>{DriveCommand::speedOf(Loco, 0), DriveCommand::switching(2, 1),
-                                         DriveCommand::switching(3, 1)}));
-    EXPECT_EQ(dispatcher.reservations().blockOwner(AusfahrtOst), Loco);
-    EXPECT_EQ(dispatcher.reservations().blockOwner(Block1), Loco);
+              (std::vector<DriveCommand>{DriveCommand::speedOf(DispatchedLoco, 0),
+                                         DriveCommand::switching(2, 1), DriveCommand::switching(3, 1)}));
+    EXPECT_EQ(dispatcher.reservations().blockOwner(AusfahrtOst), DispatchedLoco);
+    EXPECT_EQ(dispatcher.reservations().blockOwner(Block1), DispatchedLoco);
     dispatcher.turnoutSwitched(2, 1, true, 100);
     dispatcher.tick(2000);
     remember();
@@ -70,8 +70,8 @@ TEST_F(DispatcherTest, ATrainDepartsOnlyWhenEveryTurnoutOfItsWayIsConfirmed) {
     EXPECT_FALSE(sentSpeedAbove(0)) << "the turnout still moves";
     dispatcher.tick(2000 + dispatcher.options().settle);
     remember();
-    EXPECT_EQ(commands.back(), DriveCommand::speedOf(Loco, dispatcher.options().speeds.travel));
-    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Running);
+    EXPECT_EQ(commands.back(), DriveCommand::speedOf(DispatchedLoco, dispatcher.options().speeds.travel));
+    EXPECT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Running);
 }
 
 TEST_F(DispatcherTest, ATurnoutNeverConfirmedGivesTheWayBackWithoutDeparting) {
@@ -80,16 +80,16 @@ TEST_F(DispatcherTest, ATurnoutNeverConfirmedGivesTheWayBackWithoutDeparting) {
         dispatcher.turnoutSwitched(2, 1, false, now);
         dispatcher.tick(now);
         remember();
-        if (dispatcher.train(Loco)->state == TrainState::Fault)
+        if (dispatcher.train(DispatchedLoco)->state == TrainState::Fault)
             break;
     }
-    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Fault);
+    EXPECT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Fault);
     EXPECT_EQ(count(Kind::Fault), 1);
     EXPECT_EQ(std::count(commands.begin(), commands.end(), DriveCommand::switching(2, 1)),
               dispatcher.options().switchAttempts);
     EXPECT_FALSE(sentSpeedAbove(0));
-    EXPECT_EQ(dispatcher.reservations().blocksOf(Loco), std::vector<int>{Gleis1});
-    EXPECT_TRUE(dispatcher.reservations().connectionsOf(Loco).empty());
+    EXPECT_EQ(dispatcher.reservations().blocksOf(DispatchedLoco), std::vector<int>{Gleis1});
+    EXPECT_TRUE(dispatcher.reservations().connectionsOf(DispatchedLoco).empty());
 }
 
 TEST_F(DispatcherTest, TheTrackBehindIsGivenBackBlockByBlockOnceTheTrainHasLeftIt) {
@@ -97,16 +97,18 @@ TEST_F(DispatcherTest, TheTrackBehindIsGivenBackBlockByBlockOnceTheTrainHasLeftI
     dispatcher.contactChanged(contact(8), true, 1000); // the front in Ausfahrt Ost
     remember();
     EXPECT_EQ(count(Kind::Entered), 1);
-    EXPECT_EQ(dispatcher.reservations().blockOwner(Gleis1), Loco) << "its contact is still occupied";
+    EXPECT_EQ(dispatcher.reservations().blockOwner(Gleis1), DispatchedLoco)
+        << "its contact is still occupied";
     dispatcher.contactChanged(contact(3), true, 2000); // the front in Block 1
     dispatcher.contactChanged(contact(1), false, 2100);
     remember();
     EXPECT_EQ(dispatcher.reservations().blockOwner(Gleis1), 0u);
-    EXPECT_EQ(dispatcher.reservations().blockOwner(AusfahrtOst), Loco) << "contact 8 is still occupied";
+    EXPECT_EQ(dispatcher.reservations().blockOwner(AusfahrtOst), DispatchedLoco)
+        << "contact 8 is still occupied";
     dispatcher.contactChanged(contact(8), false, 2500);
     remember();
     EXPECT_EQ(dispatcher.reservations().blockOwner(AusfahrtOst), 0u);
-    EXPECT_EQ(dispatcher.reservations().blockOwner(Block1), Loco);
+    EXPECT_EQ(dispatcher.reservations().blockOwner(Block1), DispatchedLoco);
     EXPECT_EQ(count(Kind::Released), 2);
     EXPECT_EQ(dispatcher.blockMoves(), 2);
 }
@@ -117,18 +119,18 @@ TEST_F(DispatcherTest, AGhostOnTheReservedWayStopsTheTrainAndAGhostElsewhereIsOn
     remember();
     EXPECT_EQ(count(Kind::Ghost), 1);
     EXPECT_TRUE(dispatcher.tracking().isGhost(Block3));
-    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Running);
+    EXPECT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Running);
     dispatcher.contactChanged(contact(3), true,
                               1100); // Block 1, reserved for the BR 218, before it got there
     remember();
-    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Fault);
-    EXPECT_EQ(commands.back(), DriveCommand::speedOf(Loco, 0));
+    EXPECT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Fault);
+    EXPECT_EQ(commands.back(), DriveCommand::speedOf(DispatchedLoco, 0));
 }
 
 TEST_F(DispatcherTest, AfterStopNothingStartsUntilTheUserResumes) {
     dispatcher.halt("STOP");
     remember();
-    EXPECT_EQ(commands.back(), DriveCommand::speedOf(Loco, 0));
+    EXPECT_EQ(commands.back(), DriveCommand::speedOf(DispatchedLoco, 0));
     commands.clear();
     confirmTurnouts(100);
     dispatcher.tick(60000);
@@ -138,34 +140,34 @@ TEST_F(DispatcherTest, AfterStopNothingStartsUntilTheUserResumes) {
     dispatcher.tick(60000);
     remember();
     EXPECT_EQ(commands,
-              (std::vector<DriveCommand>{DriveCommand::speedOf(Loco, 0), DriveCommand::switching(2, 1),
-                                         DriveCommand::switching(3, 1)}));
+              (std::vector<DriveCommand>{DriveCommand::speedOf(DispatchedLoco, 0),
+                                         DriveCommand::switching(2, 1), DriveCommand::switching(3, 1)}));
 }
 
 TEST_F(DispatcherTest, WhileTheStationIsSilentTheTrainIsUnknownAndStaysStoppedWhenItReturns) {
     confirmTurnouts(100);
-    ASSERT_EQ(dispatcher.train(Loco)->state, TrainState::Running);
+    ASSERT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Running);
     commands.clear();
     dispatcher.stationLost();
     dispatcher.tick(5000);
     remember();
-    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Unknown);
+    EXPECT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Unknown);
     EXPECT_TRUE(commands.empty()) << "nothing is sent to a silent station";
     EXPECT_NE(events.back().text.find("BR 218 is stopped-unknown"), std::string::npos) << events.back().text;
     dispatcher.occupancyRead({contact(1)}); // back: still on Gleis 1
     dispatcher.stationBack();
     dispatcher.tick(6000);
     remember();
-    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Unknown);
-    EXPECT_EQ(commands, std::vector<DriveCommand>{DriveCommand::speedOf(Loco, 0)})
+    EXPECT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Unknown);
+    EXPECT_EQ(commands, std::vector<DriveCommand>{DriveCommand::speedOf(DispatchedLoco, 0)})
         << "told to stop (the station may have kept it running), nothing replayed";
     EXPECT_NE(events.back().text.find("stays until automation is resumed"), std::string::npos);
     commands.clear();
     dispatcher.resume(7000);
     remember();
-    EXPECT_EQ(commands, std::vector<DriveCommand>{DriveCommand::speedOf(Loco, 0)});
-    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Waiting);
-    EXPECT_EQ(dispatcher.reservations().blocksOf(Loco), std::vector<int>{Gleis1});
+    EXPECT_EQ(commands, std::vector<DriveCommand>{DriveCommand::speedOf(DispatchedLoco, 0)});
+    EXPECT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Waiting);
+    EXPECT_EQ(dispatcher.reservations().blocksOf(DispatchedLoco), std::vector<int>{Gleis1});
 }
 
 // The BR 218 stands in Block 1 past its only contact (it stopped by the distance), unseen: when the station
@@ -179,12 +181,12 @@ TEST_F(DispatcherTest, ATrainThatStoodUnseenIsWhereItStoodWhenTheStationReturns)
     dispatcher.tick(60000);                              // stopped by the distance in Block 1
     dispatcher.contactChanged(contact(3), false, 61000); // its contact behind it
     remember();
-    ASSERT_EQ(dispatcher.tracking().body(Loco)->frontBlock, Block1);
-    ASSERT_EQ(dispatcher.train(Loco)->state, TrainState::Waiting) << events.back().text;
+    ASSERT_EQ(dispatcher.tracking().body(DispatchedLoco)->frontBlock, Block1);
+    ASSERT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Waiting) << events.back().text;
     dispatcher.stationLost();
     dispatcher.occupancyRead({});
     remember();
-    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Unknown);
+    EXPECT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Unknown);
     EXPECT_EQ(count(Kind::Lost), 0);
 }
 
@@ -192,7 +194,7 @@ TEST_F(DispatcherTest, ATrainNotSeenWhereItStoodWhenTheStationReturnsIsLost) {
     dispatcher.stationLost();
     dispatcher.occupancyRead({contact(5)});
     remember();
-    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Lost);
+    EXPECT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Lost);
     EXPECT_EQ(count(Kind::Lost), 1);
     EXPECT_EQ(count(Kind::Ghost), 1);
 }
@@ -201,8 +203,8 @@ TEST_F(DispatcherTest, ATrainThatDoesNotArriveInTimeIsLost) {
     confirmTurnouts(100);
     dispatcher.tick(10 * 60 * 1000);
     remember();
-    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Lost);
-    EXPECT_EQ(commands.back(), DriveCommand::speedOf(Loco, 0));
+    EXPECT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Lost);
+    EXPECT_EQ(commands.back(), DriveCommand::speedOf(DispatchedLoco, 0));
 }
 
 // Mixed operation: a throttle takes the running BR 218; the automation sends it nothing more, its way stays
@@ -210,9 +212,9 @@ TEST_F(DispatcherTest, ATrainThatDoesNotArriveInTimeIsLost) {
 // way it held ahead and sets out anew from there.
 TEST_F(DispatcherTest, ATrainTakenByHandKeepsItsWayAndHandedBackSetsOutFromWhereItStands) {
     confirmTurnouts(100);
-    ASSERT_EQ(dispatcher.train(Loco)->state, TrainState::Running);
+    ASSERT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Running);
     commands.clear();
-    dispatcher.takenByHand(Loco, "a throttle");
+    dispatcher.takenByHand(DispatchedLoco, "a throttle");
     dispatcher.contactChanged(contact(8), true, 2000);
     ASSERT_TRUE(dispatcher.reservations().turnoutOwner(2).has_value());
     dispatcher.turnoutReported(2, 0, 2500);            // behind its front, under its body
@@ -221,7 +223,7 @@ TEST_F(DispatcherTest, ATrainTakenByHandKeepsItsWayAndHandedBackSetsOutFromWhere
     dispatcher.contactChanged(contact(8), false, 3200);
     dispatcher.tick(60000);
     remember();
-    EXPECT_EQ(dispatcher.train(Loco)->mode, TrainMode::Manual);
+    EXPECT_EQ(dispatcher.train(DispatchedLoco)->mode, TrainMode::Manual);
     EXPECT_EQ(count(Kind::Manual), 1);
     EXPECT_EQ(count(Kind::Fault), 0);
     EXPECT_TRUE(std::none_of(commands.begin(), commands.end(), [](const DriveCommand& c) {
@@ -230,17 +232,17 @@ TEST_F(DispatcherTest, ATrainTakenByHandKeepsItsWayAndHandedBackSetsOutFromWhere
     EXPECT_EQ(commands,
               std::vector<DriveCommand>{DriveCommand::switching(7, dispatcher.options().signalStop)})
         << "the signal it passed shows stop behind it";
-    EXPECT_EQ(dispatcher.reservations().blockOwner(Block1), Loco);
+    EXPECT_EQ(dispatcher.reservations().blockOwner(Block1), DispatchedLoco);
     commands.clear();
-    dispatcher.handBack(Loco, 60000);
+    dispatcher.handBack(DispatchedLoco, 60000);
     dispatcher.tick(60000);
     remember();
-    EXPECT_EQ(dispatcher.train(Loco)->mode, TrainMode::Automatic);
+    EXPECT_EQ(dispatcher.train(DispatchedLoco)->mode, TrainMode::Automatic);
     EXPECT_EQ(count(Kind::Automatic), 1);
     ASSERT_FALSE(commands.empty());
-    EXPECT_EQ(commands.front(), DriveCommand::speedOf(Loco, 0));
-    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::SettingWay);
-    EXPECT_EQ(dispatcher.reservations().blockOwner(Block2), Loco) << "its new way, on from Block 1";
+    EXPECT_EQ(commands.front(), DriveCommand::speedOf(DispatchedLoco, 0));
+    EXPECT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::SettingWay);
+    EXPECT_EQ(dispatcher.reservations().blockOwner(Block2), DispatchedLoco) << "its new way, on from Block 1";
     EXPECT_EQ(dispatcher.reservations().blockOwner(Gleis1), 0u);
 }
 
@@ -251,12 +253,12 @@ TEST_F(DispatcherTest, TheSignalAtTheStartShowsProceedOnlyAtDepartureAndStopBehi
     const DriveCommand stop = DriveCommand::switching(7, dispatcher.options().signalStop);
     EXPECT_EQ(std::count(commands.begin(), commands.end(), proceed), 0) << "turnouts not confirmed yet";
     confirmTurnouts(100);
-    ASSERT_EQ(dispatcher.train(Loco)->state, TrainState::Running);
+    ASSERT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Running);
     const auto shown = std::find(commands.begin(), commands.end(), proceed);
     ASSERT_NE(shown, commands.end());
     EXPECT_LT(shown - commands.begin(),
               std::find(commands.begin(), commands.end(),
-                        DriveCommand::speedOf(Loco, dispatcher.options().speeds.travel)) -
+                        DriveCommand::speedOf(DispatchedLoco, dispatcher.options().speeds.travel)) -
                   commands.begin())
         << "proceed before the train moves";
     EXPECT_EQ(std::count(commands.begin(), commands.end(), stop), 0);
@@ -269,10 +271,10 @@ TEST_F(DispatcherTest, TheSignalAtTheStartShowsProceedOnlyAtDepartureAndStopBehi
 // A train stopped by a fault before it passed its signal: the signal shows stop again at once.
 TEST_F(DispatcherTest, ASignalGivenToATrainStoppedByAFaultShowsStopAgain) {
     confirmTurnouts(100);
-    ASSERT_EQ(dispatcher.train(Loco)->state, TrainState::Running);
+    ASSERT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Running);
     dispatcher.contactChanged(contact(3), true, 500); // a ghost in Block 1, on its way
     remember();
-    ASSERT_EQ(dispatcher.train(Loco)->state, TrainState::Fault);
+    ASSERT_EQ(dispatcher.train(DispatchedLoco)->state, TrainState::Fault);
     EXPECT_EQ(std::count(commands.begin(), commands.end(),
                          DriveCommand::switching(7, dispatcher.options().signalStop)),
               1);

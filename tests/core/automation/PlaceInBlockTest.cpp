@@ -15,7 +15,7 @@ using trackgraph::End;
 
 constexpr std::uint32_t Br218 = 0x4001, Ice = 0x4002;
 
-int count(const std::vector<AutomationEvent>& events, Kind kind) {
+int countOf(const std::vector<AutomationEvent>& events, Kind kind) {
     return int(std::count_if(events.begin(), events.end(), [kind](const auto& e) { return e.kind == kind; }));
 }
 
@@ -31,7 +31,7 @@ TEST(PlaceInBlock, ATrainStandsInTheBlockFacingTheEndGivenAndHoldsIt) {
     EXPECT_EQ(dispatcher.reservations().blocksOf(Br218), std::vector<int>{Gleis2});
     EXPECT_EQ(dispatcher.train(Br218)->mode, TrainMode::Manual);
     const std::vector<AutomationEvent> events = dispatcher.takeEvents();
-    ASSERT_EQ(count(events, Kind::Placed), 1);
+    ASSERT_EQ(countOf(events, Kind::Placed), 1);
     EXPECT_EQ(events.back().block, Gleis2);
     EXPECT_EQ(events.back().text, "BR 218 placed in \"Gleis 2\" facing end a");
 }

@@ -13,15 +13,15 @@ using namespace test;
 using Kind = AutomationEvent::Kind;
 using trackgraph::End;
 
-constexpr std::uint32_t Loco = 0x4001;
+constexpr std::uint32_t TurningLoco = 0x4001;
 
 class TurnTest : public ::testing::Test {
 protected:
     void start(std::int64_t contactNumber, End towards, Schedule schedule) {
-        ASSERT_EQ(dispatcher.place(Loco, "BR 218", 200, contactNumber, towards), std::nullopt);
-        ASSERT_EQ(dispatcher.setSchedule(Loco, std::move(schedule)), std::nullopt);
+        ASSERT_EQ(dispatcher.place(TurningLoco, "BR 218", 200, contactNumber, towards), std::nullopt);
+        ASSERT_EQ(dispatcher.setSchedule(TurningLoco, std::move(schedule)), std::nullopt);
         dispatcher.occupancyRead({contact(contactNumber)});
-        dispatcher.setMode(Loco, TrainMode::Automatic, now);
+        dispatcher.setMode(TurningLoco, TrainMode::Automatic, now);
     }
     // Every turnout switched is confirmed at once.
     void runTo(Millis until) {
@@ -51,7 +51,8 @@ protected:
         return text;
     }
     bool reversed() const {
-        return std::find(commands.begin(), commands.end(), DriveCommand::reverse(Loco)) != commands.end();
+        return std::find(commands.begin(), commands.end(), DriveCommand::reverse(TurningLoco)) !=
+               commands.end();
     }
 
     Dispatcher dispatcher{demo()};
@@ -64,7 +65,7 @@ protected:
 TEST_F(TurnTest, ATrainTurnsAtATerminusAndRunsOutTheWayItCame) {
     start(1, End::B, Schedule{{{"Abstellgleis", 2000, 0}, {"Gleis 2", 2000, 0}}, false, 0});
     runTo(1000);
-    ASSERT_EQ(dispatcher.train(Loco)->destination, Abstellgleis);
+    ASSERT_EQ(dispatcher.train(TurningLoco)->destination, Abstellgleis);
     contactTo(8, true); // Ausfahrt Ost
     contactTo(9, true); // Abstellgleis
     contactTo(1, false);
@@ -72,10 +73,10 @@ TEST_F(TurnTest, ATrainTurnsAtATerminusAndRunsOutTheWayItCame) {
     runTo(now + 10000); // to its stop by the distance, and the dwell
     EXPECT_EQ(count(Kind::Reversed), 1) << log();
     EXPECT_TRUE(reversed());
-    EXPECT_EQ(dispatcher.tracking().body(Loco)->towards, End::A);
-    EXPECT_EQ(dispatcher.train(Loco)->destination, Gleis2);
-    EXPECT_EQ(dispatcher.reservations().blockOwner(AusfahrtOst), Loco);
-    EXPECT_EQ(dispatcher.reservations().blockOwner(Gleis2), Loco);
+    EXPECT_EQ(dispatcher.tracking().body(TurningLoco)->towards, End::A);
+    EXPECT_EQ(dispatcher.train(TurningLoco)->destination, Gleis2);
+    EXPECT_EQ(dispatcher.reservations().blockOwner(AusfahrtOst), TurningLoco);
+    EXPECT_EQ(dispatcher.reservations().blockOwner(Gleis2), TurningLoco);
 }
 
 // On Block 2 facing a, to Block 1 right ahead: push-pull or not, a train with a way forwards does not turn.
@@ -85,7 +86,7 @@ TEST_F(TurnTest, APushPullTrainWithAWayForwardsDoesNotTurn) {
     start(4, End::A, toBlock1); // Block 2, facing Block 1: forwards
     runTo(1000);
     EXPECT_FALSE(reversed());
-    EXPECT_EQ(dispatcher.train(Loco)->destination, Block1);
+    EXPECT_EQ(dispatcher.train(TurningLoco)->destination, Block1);
 }
 
 TEST_F(TurnTest, APushPullTrainTurnsWhenItsStopLiesOnlyBehindIt) {
@@ -95,12 +96,12 @@ TEST_F(TurnTest, APushPullTrainTurnsWhenItsStopLiesOnlyBehindIt) {
     start(1, End::A, toSiding);
     runTo(3000);
     EXPECT_FALSE(reversed());
-    EXPECT_EQ(dispatcher.train(Loco)->state, TrainState::Waiting);
-    dispatcher.setPushPull(Loco, true);
+    EXPECT_EQ(dispatcher.train(TurningLoco)->state, TrainState::Waiting);
+    dispatcher.setPushPull(TurningLoco, true);
     runTo(4000);
     EXPECT_TRUE(reversed());
-    EXPECT_EQ(dispatcher.tracking().body(Loco)->towards, End::B);
-    EXPECT_EQ(dispatcher.train(Loco)->destination, Abstellgleis);
+    EXPECT_EQ(dispatcher.tracking().body(TurningLoco)->towards, End::B);
+    EXPECT_EQ(dispatcher.train(TurningLoco)->destination, Abstellgleis);
 }
 
 } // namespace

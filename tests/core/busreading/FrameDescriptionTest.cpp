@@ -11,7 +11,7 @@ namespace {
 
 using can::CanFrame;
 
-const BusProfile Station = BusProfile::centralStation();
+const BusProfile CentralStationBus = BusProfile::centralStation();
 
 // Document 3.3: loco speed 288 for the DCC loco 3 (Loc-ID 0xC003) from hash 0x4711.
 CanFrame locoSpeed() {
@@ -20,7 +20,7 @@ CanFrame locoSpeed() {
 }
 
 TEST(FrameDescription, ACs2FrameIsDescribedByTheCs2Codec) {
-    const FrameDescription description(locoSpeed(), Station);
+    const FrameDescription description(locoSpeed(), CentralStationBus);
     EXPECT_EQ(description.protocol(), Protocol::Cs2);
     EXPECT_EQ(description.protocolName(), "cs2");
     EXPECT_EQ(description.name(), "loco.speed");
@@ -40,7 +40,7 @@ TEST(FrameDescription, ACs2FrameIsDescribedByTheCs2Codec) {
 
 TEST(FrameDescription, AFrameThatDoesNotDecodeKeepsItsIntendedNameAndSaysWhy) {
     const std::uint8_t data[] = {0x00, 0x00, 0xC0, 0x03, 0x01};
-    const FrameDescription description(CanFrame::extendedFrame(0x00084711, data), Station);
+    const FrameDescription description(CanFrame::extendedFrame(0x00084711, data), CentralStationBus);
     EXPECT_EQ(description.protocol(), Protocol::Cs2);
     EXPECT_EQ(description.name(), "loco.speed");
     EXPECT_FALSE(description.decoded());
@@ -52,12 +52,12 @@ TEST(FrameDescription, AFrameThatDoesNotDecodeKeepsItsIntendedNameAndSaysWhy) {
 
 TEST(FrameDescription, AResponseIsMarked) {
     const std::uint8_t data[] = {0x00, 0x00, 0xC0, 0x03, 0x01, 0x20};
-    EXPECT_TRUE(FrameDescription(CanFrame::extendedFrame(0x00094711, data), Station).isResponse());
+    EXPECT_TRUE(FrameDescription(CanFrame::extendedFrame(0x00094711, data), CentralStationBus).isResponse());
 }
 
 TEST(FrameDescription, AForeignFrameIsShownNotDecoded) {
     const std::uint8_t data[] = {0x01, 0x02};
-    const FrameDescription description(CanFrame::standard(0x123, data), Station);
+    const FrameDescription description(CanFrame::standard(0x123, data), CentralStationBus);
     EXPECT_EQ(description.protocol(), Protocol::Foreign);
     EXPECT_EQ(description.name(), "foreign");
     EXPECT_FALSE(description.decoded());
@@ -76,7 +76,7 @@ TEST(FrameDescription, OnABusWithoutCs2EvenACs2FrameIsForeign) {
 }
 
 TEST(FrameDescription, MessageNamesComeFromTheProtocolsOfTheBus) {
-    const std::vector<std::string_view> names = messageNames(Station);
+    const std::vector<std::string_view> names = messageNames(CentralStationBus);
     EXPECT_NE(std::find(names.begin(), names.end(), "loco.speed"), names.end());
     EXPECT_NE(std::find(names.begin(), names.end(), "system.go"), names.end());
     const auto poll = std::find(names.begin(), names.end(), "mcan.poll");
@@ -91,7 +91,7 @@ TEST(FrameDescription, MessageNamesComeFromTheProtocolsOfTheBus) {
 // M-CAN notes B§4.2, trace #82: the MS1 (node 43) polls its master (node 42) on the poll handle.
 TEST(FrameDescription, AnMcanFrameIsDescribedByTheMcanCodec) {
     const std::uint8_t data[] = {0x00, 0x00, 0x00, 0x2A};
-    const FrameDescription description(CanFrame::extendedFrame(0x0C0007AB, data), Station);
+    const FrameDescription description(CanFrame::extendedFrame(0x0C0007AB, data), CentralStationBus);
     EXPECT_EQ(description.protocol(), Protocol::Mcan);
     EXPECT_EQ(description.protocolName(), "mcan");
     EXPECT_EQ(description.name(), "mcan.poll");
@@ -113,7 +113,8 @@ TEST(FrameDescription, AnMcanFrameIsDescribedByTheMcanCodec) {
 
 TEST(FrameDescription, AnMcanFrameOfNoDocumentedFormIsUnknownWithItsReason) {
     const std::uint8_t data[] = {0x00, 0x00};
-    const FrameDescription description(CanFrame::extendedFrame(0x10000281, data), Station); // trace #2
+    const FrameDescription description(CanFrame::extendedFrame(0x10000281, data),
+                                       CentralStationBus); // trace #2
     EXPECT_EQ(description.protocol(), Protocol::Mcan);
     EXPECT_EQ(description.name(), "mcan.unknown");
     EXPECT_FALSE(description.decoded());
@@ -124,17 +125,19 @@ TEST(FrameDescription, AnMcanFrameOfNoDocumentedFormIsUnknownWithItsReason) {
 // the bus-busy frame and CS2 frames to none.
 TEST(FrameDescription, AnMcanFrameNamesTheSlaveNodeOfItsPair) {
     const std::uint8_t answer[] = {0x40, 0x2B, 0x00, 0x00, 0x00, 0x08, 0x00, 0x01};
-    const FrameDescription fromMaster(CanFrame::extendedFrame(0x18000A2A, answer), Station); // trace #18
+    const FrameDescription fromMaster(CanFrame::extendedFrame(0x18000A2A, answer),
+                                      CentralStationBus); // trace #18
     ASSERT_TRUE(fromMaster.handheld());
     EXPECT_EQ(fromMaster.handheld()->node, 43);
     const std::uint8_t grant[] = {0x00, 0x02, 0x04, 0xB3, 0x00, 0x02, 0xAB, 0x00};
-    const FrameDescription granted(CanFrame::extendedFrame(0x1C03B0FE, grant), Station); // trace #16
+    const FrameDescription granted(CanFrame::extendedFrame(0x1C03B0FE, grant),
+                                   CentralStationBus); // trace #16
     ASSERT_TRUE(granted.handheld());
     EXPECT_EQ(granted.handheld()->node, 43);
-    EXPECT_FALSE(FrameDescription(CanFrame::extendedFrame(0x1C00007E, {}), Station).handheld());
+    EXPECT_FALSE(FrameDescription(CanFrame::extendedFrame(0x1C00007E, {}), CentralStationBus).handheld());
     const std::uint8_t zeros[8] = {};
-    EXPECT_FALSE(FrameDescription(CanFrame::extendedFrame(0x380, zeros), Station).handheld());
-    EXPECT_FALSE(FrameDescription(locoSpeed(), Station).handheld());
+    EXPECT_FALSE(FrameDescription(CanFrame::extendedFrame(0x380, zeros), CentralStationBus).handheld());
+    EXPECT_FALSE(FrameDescription(locoSpeed(), CentralStationBus).handheld());
 }
 
 TEST(LocoReference, ReadsALocIdOrAProtocolWithAnAddress) {

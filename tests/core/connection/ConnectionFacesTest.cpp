@@ -1,5 +1,6 @@
 // The faces a StationConnection hands out (issue 33): each follows the connection as it opens and closes,
 // and tells its own users, so that a panel holding one face needs nothing else of the connection.
+#include "ConnectionWaits.h"
 #include "EmbeddedStationSupport.h"
 #include "connection/StationConnection.h"
 #include "mcanhandhelds/HandheldMaster.h"
@@ -19,15 +20,12 @@ using connection::HandheldRole;
 using connection::StationConnection;
 using State = StationConnection::State;
 
+using namespace stellwerk::connection::test;
+
 namespace {
 
-constexpr int ReadyMs = 10000;
 // Nothing listens on port 1 of the loopback: a connection there is open (it keeps trying) but never ready.
 const QString Unreachable = QStringLiteral("tcp://127.0.0.1:1");
-
-bool ready(const StationConnection& connection) {
-    return QTest::qWaitFor([&] { return connection.state() == State::Ready; }, ReadyMs);
-}
 
 DeviceSettings oneModule(const std::string& name) {
     DeviceSettings devices;

@@ -3,6 +3,7 @@
 // away and comes back, or says garbage, leaves the station as it was; an address that cannot be read
 // opens nothing.
 
+#include "ConnectionWaits.h"
 #include "EmbeddedStationSupport.h"
 #include "ModuleBusPeer.h"
 #include "connection/StationConnection.h"
@@ -20,18 +21,9 @@ using connection::ConnectionBuses;
 using connection::StationConnection;
 using State = StationConnection::State;
 
+using namespace stellwerk::connection::test;
+
 namespace {
-
-constexpr int ReadyMs = 10000;
-constexpr int ReconnectMs = 12000; // the transport's back-off is at most 5 s, plus an attempt
-
-bool waitUntil(const std::function<bool()>& done, int timeoutMs) {
-    return QTest::qWaitFor(done, timeoutMs);
-}
-
-bool ready(const StationConnection& connection) {
-    return waitUntil([&] { return connection.state() == State::Ready; }, ReadyMs);
-}
 
 // "System stop" as a CS2 frame: on the further bus it must not stop anything.
 can::CanFrame systemStop() {

@@ -4,6 +4,7 @@
 // station's or a further one) goes away and comes back. The devices are simulated peers behind real
 // loopback sockets.
 
+#include "ConnectionWaits.h"
 #include "DeviceBusPeer.h"
 #include "EmbeddedStationSupport.h"
 #include "connection/DeviceSessions.h"
@@ -29,16 +30,12 @@ using connection::StationConnection;
 using romodule::RoModuleSession;
 using State = StationConnection::State;
 
+using namespace stellwerk::connection::test;
+
 namespace {
 
-constexpr int ReadyMs = 10000;
-constexpr int ReconnectMs = 12000; // the transport's back-off is at most 5 s, plus an attempt
 constexpr std::uint32_t DecoderUid = 0x3A2E0007;
 constexpr std::uint32_t EncoderUid = 0x3A2E0008;
-
-bool waitUntil(const std::function<bool()>& done, int timeoutMs = ReadyMs) {
-    return QTest::qWaitFor(done, timeoutMs);
-}
 
 RoModuleSettings simulatorModule(std::uint16_t n, int bus) {
     RoModuleSettings module;

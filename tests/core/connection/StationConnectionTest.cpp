@@ -1,5 +1,6 @@
 #include "connection/StationConnection.h"
 
+#include "ConnectionWaits.h"
 #include "EmbeddedStationSupport.h"
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
@@ -22,10 +23,9 @@ using connection::LoadingStep;
 using connection::StationConnection;
 using State = StationConnection::State;
 
-namespace {
+using namespace stellwerk::connection::test;
 
-// The start-up lists devices for half a second, then downloads and asks; generous for a loaded machine.
-constexpr int ReadyMs = 10000;
+namespace {
 
 // Every state the connection went through, in order.
 class StateRecorder {

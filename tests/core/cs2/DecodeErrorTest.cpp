@@ -9,21 +9,21 @@ using test::frame;
 
 namespace {
 
-DecodeError errorOf(const CanFrame& input) {
+DecodeError decodeErrorOf(const CanFrame& input) {
     const auto result = decode(input);
     EXPECT_FALSE(result.hasValue()) << formatDocument(input) << " decoded as " << messageName(result->body);
     return result ? DecodeError{DecodeErrorKind::TooShort, 0, 0, {}} : result.error();
 }
 
 DecodeErrorKind kindOf(std::string_view text) {
-    return errorOf(frame(text)).kind;
+    return decodeErrorOf(frame(text)).kind;
 }
 
 } // namespace
 
 TEST(DecodeError, DlcAboveEightIsRejected) {
     CanFrame broken{0x00004711, 12, {0, 0, 0, 0, 0}};
-    const DecodeError error = errorOf(broken);
+    const DecodeError error = decodeErrorOf(broken);
     EXPECT_EQ(error.kind, DecodeErrorKind::DlcOutOfRange);
     EXPECT_EQ(error.dlc, 12);
     EXPECT_NE(error.message().find("DLC 12 is above 8"), std::string::npos) << error.message();
@@ -31,12 +31,12 @@ TEST(DecodeError, DlcAboveEightIsRejected) {
 
 TEST(DecodeError, DlcAboveEightFromTheNetworkFormIsRejected) {
     std::array<std::uint8_t, 13> bytes{0x00, 0x08, 0x47, 0x11, 0x0F};
-    EXPECT_EQ(errorOf(CanFrame::fromNetwork(bytes)).kind, DecodeErrorKind::DlcOutOfRange);
+    EXPECT_EQ(decodeErrorOf(CanFrame::fromNetwork(bytes)).kind, DecodeErrorKind::DlcOutOfRange);
 }
 
 TEST(DecodeError, IdentifierBeyond29BitsIsRejected) {
     std::array<std::uint8_t, 13> bytes{0xE0, 0x08, 0x47, 0x11, 0x00};
-    EXPECT_EQ(errorOf(CanFrame::fromNetwork(bytes)).kind, DecodeErrorKind::IdOutOfRange);
+    EXPECT_EQ(decodeErrorOf(CanFrame::fromNetwork(bytes)).kind, DecodeErrorKind::IdOutOfRange);
 }
 
 TEST(DecodeError, TooShortForItsCommand) {
@@ -76,7 +76,7 @@ TEST(DecodeError, ReservedValues) {
 }
 
 TEST(DecodeError, MessagesNameTheCommandRuleAndLength) {
-    const DecodeError error = errorOf(frame("00084711 5 00 00 C0 03 01"));
+    const DecodeError error = decodeErrorOf(frame("00084711 5 00 00 C0 03 01"));
     EXPECT_EQ(error.command, 0x04);
     EXPECT_EQ(error.dlc, 5);
     EXPECT_EQ(error.message(), "unexpected length 5: loco.speed has 4 (query) or 6 data bytes");

@@ -11,18 +11,18 @@ using namespace stellwerk::cs2;
 
 namespace {
 
-std::string fieldText(const Field& field) {
+std::string fieldText(const stellwerk::cs2::Field& field) {
     switch (field.format) {
-    case FieldFormat::Hex: {
+    case stellwerk::cs2::FieldFormat::Hex: {
         char buffer[24];
         std::snprintf(buffer, sizeof buffer, "0x%llX", static_cast<unsigned long long>(field.number));
         return buffer;
     }
-    case FieldFormat::Bool:
+    case stellwerk::cs2::FieldFormat::Bool:
         return field.number ? "true" : "false";
-    case FieldFormat::Text:
+    case stellwerk::cs2::FieldFormat::Text:
         return field.text;
-    case FieldFormat::Decimal:
+    case stellwerk::cs2::FieldFormat::Decimal:
         break;
     }
     return std::to_string(field.number);

@@ -26,14 +26,14 @@ constexpr std::string_view threeStates = "[magnetartikel]\n"
                                          " .id=5\n"
                                          " .stellung=2\n";
 
-using Read = ReadModel<AccessoryStatusFile>;
+using ReadStatusFile = ReadModel<AccessoryStatusFile>;
 
-Read readText(std::string_view text) {
+ReadStatusFile readStatusFile(std::string_view text) {
     return readAs<AccessoryStatusFile>(text, "magnetartikel.sr2");
 }
 
 TEST(AccessoryStatusFile, EmptyStatusFileAsServedByRailControl) {
-    Read read = readText(emptyStatus);
+    ReadStatusFile read = readStatusFile(emptyStatus);
     EXPECT_TRUE(read.diagnostics.empty()) << read.diagnostics.formatAll();
     EXPECT_TRUE(read.file.states.empty());
     EXPECT_EQ(read.file.versionMinor, 1);
@@ -41,7 +41,7 @@ TEST(AccessoryStatusFile, EmptyStatusFileAsServedByRailControl) {
 }
 
 TEST(AccessoryStatusFile, StatesAreRead) {
-    Read read = readText(threeStates);
+    ReadStatusFile read = readStatusFile(threeStates);
     EXPECT_TRUE(read.diagnostics.empty()) << read.diagnostics.formatAll();
     ASSERT_EQ(read.file.states.size(), 3u);
     EXPECT_EQ(read.file.states[0].id, 1);
@@ -57,7 +57,7 @@ TEST(AccessoryStatusFile, StatesAreRead) {
 }
 
 TEST(AccessoryStatusFile, ChangingOneStateChangesOnlyItsLine) {
-    Read read = readText(threeStates);
+    ReadStatusFile read = readStatusFile(threeStates);
     read.file.states[0].position = 0;
     read.file.states[1].position = 1;
     EXPECT_EQ(read.file.write().serialize(),
@@ -66,7 +66,7 @@ TEST(AccessoryStatusFile, ChangingOneStateChangesOnlyItsLine) {
 }
 
 TEST(AccessoryStatusFile, AddedAndRemovedStatesReadBackTheSame) {
-    Read read = readText(threeStates);
+    ReadStatusFile read = readStatusFile(threeStates);
     read.file.states.erase(read.file.states.begin());
     AccessoryState added;
     added.id = 9;
@@ -75,7 +75,7 @@ TEST(AccessoryStatusFile, AddedAndRemovedStatesReadBackTheSame) {
     const std::string written = read.file.write().serialize();
     EXPECT_EQ(written, "[magnetartikel]\nversion\n .minor=1\nartikel\n .id=2\nartikel\n .id=5\n .stellung=2\n"
                        "artikel\n .id=9\n .stellung=3\n");
-    Read again = readText(written);
+    ReadStatusFile again = readStatusFile(written);
     EXPECT_TRUE(again.diagnostics.empty()) << again.diagnostics.formatAll();
     ASSERT_EQ(again.file.states.size(), 3u);
     EXPECT_EQ(again.file.states[2].id, 9);
@@ -92,8 +92,9 @@ TEST(AccessoryStatusFile, NewStatusFileLooksLikeTheStations) {
 }
 
 TEST(AccessoryStatusFile, ProblemsAreReported) {
-    Read read = readText("[magnetartikel]\nartikel\n .id=1\n .stellung=rot\n .zeit=5\n"
-                         "artikel\n .id=1\n .zeit=6\nartikel\n .stellung=1\nfahrstrasse\n .id=1\n");
+    ReadStatusFile read =
+        readStatusFile("[magnetartikel]\nartikel\n .id=1\n .stellung=rot\n .zeit=5\n"
+                       "artikel\n .id=1\n .zeit=6\nartikel\n .stellung=1\nfahrstrasse\n .id=1\n");
     ASSERT_EQ(read.diagnostics.count(), 5u) << read.diagnostics.formatAll();
     EXPECT_EQ(read.diagnostics.items()[0].line, 5);
     EXPECT_EQ(read.diagnostics.items()[0].message, "unknown key '.zeit' in artikel records");
@@ -110,13 +111,13 @@ TEST(AccessoryStatusFile, ProblemsAreReported) {
 }
 
 TEST(AccessoryStatusFile, OtherSectionIsReported) {
-    Read read = readText("[gleisbild]\nversion\n .minor=1\n");
+    ReadStatusFile read = readStatusFile("[gleisbild]\nversion\n .minor=1\n");
     ASSERT_EQ(read.diagnostics.count(), 1u);
     EXPECT_EQ(read.diagnostics.items()[0].message, "section [gleisbild] instead of [magnetartikel]");
 }
 
 TEST(AccessoryStatusFile, JsonListsTheStates) {
-    EXPECT_EQ(toJson(readText(threeStates).file), R"({
+    EXPECT_EQ(toJson(readStatusFile(threeStates).file), R"({
   "file": "magnetartikel.sr2",
   "version": {
     "major": null,

@@ -30,11 +30,6 @@ inline std::vector<can::CanFrame> framesOfLog(std::string_view corpusPath) {
     return frames;
 }
 
-inline std::string readCorpus(std::string_view corpusPath) {
-    std::ifstream in(corpusFile(corpusPath), std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 // Feeds every frame and returns everything the receiver finished, then what finish() adds.
 inline std::vector<StreamOutcome> receiveAll(ConfigStreamReceiver& receiver,
                                              const std::vector<can::CanFrame>& frames) {

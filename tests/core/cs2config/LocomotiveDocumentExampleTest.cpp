@@ -45,7 +45,7 @@ constexpr std::string_view basicFormat = "[lokomotive]\n"
 
 using ReadText = ReadModel<LocomotiveFile>;
 
-ReadText readText(std::string_view text) {
+ReadText readExampleText(std::string_view text) {
     return readAs<LocomotiveFile>(text, "lokomotive.cs2");
 }
 
@@ -58,7 +58,7 @@ std::string withBlock(std::string_view block) {
 }
 
 TEST(LocomotiveDocumentExample, BasicFormatReadsEveryField) {
-    const ReadText read = readText(basicFormat);
+    const ReadText read = readExampleText(basicFormat);
     EXPECT_TRUE(read.diagnostics.empty()) << read.diagnostics.formatAll();
     ASSERT_EQ(read.file.locomotives.size(), 1u);
     const Locomotive& locomotive = read.file.locomotives.front();
@@ -91,13 +91,13 @@ TEST(LocomotiveDocumentExample, BasicFormatReadsEveryField) {
 }
 
 TEST(LocomotiveDocumentExample, BasicFormatWritesBackUnchanged) {
-    const ReadText read = readText(basicFormat);
+    const ReadText read = readExampleText(basicFormat);
     EXPECT_EQ(read.file.write().serialize(), basicFormat);
 }
 
 // 8.1.1: "version" with .major and .minor; current values 0 and 3; only once in a file.
 TEST(LocomotiveDocumentExample, VersionSection) {
-    const ReadText read = readText(basicFormat);
+    const ReadText read = readExampleText(basicFormat);
     ASSERT_TRUE(read.file.version);
     EXPECT_EQ(read.file.version->major, 0);
     EXPECT_EQ(read.file.version->minor, 3);
@@ -106,7 +106,7 @@ TEST(LocomotiveDocumentExample, VersionSection) {
 TEST(LocomotiveDocumentExample, VersionSectionOnlyOnce) {
     std::string text(basicFormat);
     text += "version\n.major=1\n.minor=0\n";
-    const ReadText read = readText(text);
+    const ReadText read = readExampleText(text);
     ASSERT_EQ(read.diagnostics.items().size(), 1u) << read.diagnostics.formatAll();
     EXPECT_EQ(read.diagnostics.items()[0].line, 34);
     EXPECT_EQ(read.diagnostics.items()[0].message,
@@ -116,7 +116,7 @@ TEST(LocomotiveDocumentExample, VersionSectionOnlyOnce) {
 
 // 8.1.2: "session" .id, the mfx registration counter.
 TEST(LocomotiveDocumentExample, SessionSection) {
-    ReadText read = readText(basicFormat);
+    ReadText read = readExampleText(basicFormat);
     EXPECT_EQ(read.file.session, 24);
     read.file.session = 25;
     EXPECT_NE(read.file.write().serialize().find("session\n.id=25\n"), std::string::npos);
@@ -124,9 +124,9 @@ TEST(LocomotiveDocumentExample, SessionSection) {
 
 // 8.1.3.1: ..nr 0 -> F0 .. 15 -> F15, ..typ icon, ..dauer 0 latching / -1 momentary / else timed.
 TEST(LocomotiveDocumentExample, FunctionsSection) {
-    const ReadText read = readText(withBlock(".funktionen\n..nr=0\n..typ=1\n..dauer=0\n..wert=1\n"
-                                             ".funktionen\n..nr=1\n..typ=7\n..dauer=-1\n..wert=0\n"
-                                             ".funktionen\n..nr=15\n..typ=18\n..dauer=5\n..wert=0\n"));
+    const ReadText read = readExampleText(withBlock(".funktionen\n..nr=0\n..typ=1\n..dauer=0\n..wert=1\n"
+                                                    ".funktionen\n..nr=1\n..typ=7\n..dauer=-1\n..wert=0\n"
+                                                    ".funktionen\n..nr=15\n..typ=18\n..dauer=5\n..wert=0\n"));
     EXPECT_TRUE(read.diagnostics.empty()) << read.diagnostics.formatAll();
     const Locomotive& locomotive = read.file.locomotives.front();
     ASSERT_EQ(locomotive.functions.size(), 3u);
@@ -139,7 +139,7 @@ TEST(LocomotiveDocumentExample, FunctionsSection) {
 }
 
 TEST(LocomotiveDocumentExample, FunctionTriggerIsWrittenAsDauer) {
-    ReadText read = readText(basicFormat);
+    ReadText read = readExampleText(basicFormat);
     Function& f0 = read.file.locomotives.front().functions.front();
     f0.setTrigger(FunctionTrigger::Momentary);
     EXPECT_NE(read.file.write().serialize().find("..dauer=-1\n"), std::string::npos);
@@ -149,7 +149,8 @@ TEST(LocomotiveDocumentExample, FunctionTriggerIsWrittenAsDauer) {
 
 // 8.1.3.2: ".prg": one row of the extended CV programming dialog.
 TEST(LocomotiveDocumentExample, ProgrammingSection) {
-    const ReadText read = readText(withBlock(".prg\n..adresse=1\n..name=Cv Name\n..wert=3\n..maske=0\n"));
+    const ReadText read =
+        readExampleText(withBlock(".prg\n..adresse=1\n..name=Cv Name\n..wert=3\n..maske=0\n"));
     EXPECT_TRUE(read.diagnostics.empty()) << read.diagnostics.formatAll();
     const Locomotive& locomotive = read.file.locomotives.front();
     ASSERT_EQ(locomotive.cvRows.size(), 1u);
@@ -164,7 +165,7 @@ TEST(LocomotiveDocumentExample, DecoderTypes) {
     for (const std::string_view type : {"mm2_prg", "mm2_dil8", "dcc", "mfx", "sx1", "mm_prg", "mmm2_lok"}) {
         std::string text(basicFormat);
         text.replace(text.find(".typ=dcc"), 8, ".typ=" + std::string(type));
-        const ReadText read = readText(text);
+        const ReadText read = readExampleText(text);
         EXPECT_TRUE(read.diagnostics.empty()) << type << ": " << read.diagnostics.formatAll();
         EXPECT_EQ(read.file.locomotives.front().decoderTypeText(), type);
         EXPECT_NE(read.file.locomotives.front().decoder, LocomotiveDecoder::Unknown);
@@ -175,7 +176,7 @@ TEST(LocomotiveDocumentExample, UnknownDecoderTypeIsKeptAndReportedOnce) {
     std::string text(basicFormat);
     text.replace(text.find(".typ=dcc"), 8, ".typ=mfx+");
     text += "lokomotive\n.uid=0xc003\n.name=Dcc-3\n.adresse=0x3\n.typ=mfx+\n";
-    ReadText read = readText(text);
+    ReadText read = readExampleText(text);
     ASSERT_EQ(read.diagnostics.items().size(), 1u) << read.diagnostics.formatAll();
     EXPECT_EQ(read.diagnostics.items()[0].line, 12);
     EXPECT_EQ(read.diagnostics.items()[0].message, "unknown decoder type 'mfx+' (2 times, first here)");
@@ -187,7 +188,7 @@ TEST(LocomotiveDocumentExample, UnknownDecoderTypeIsKeptAndReportedOnce) {
 TEST(LocomotiveDocumentExample, ValuesThatAreNotNumbersAreKeptAndReported) {
     std::string text(basicFormat);
     text.replace(text.find(".av=30"), 6, ".av=fast");
-    ReadText read = readText(text);
+    ReadText read = readExampleText(text);
     ASSERT_EQ(read.diagnostics.items().size(), 1u) << read.diagnostics.formatAll();
     EXPECT_EQ(read.diagnostics.items()[0].line, 17);
     EXPECT_EQ(read.diagnostics.items()[0].message, "'.av' is not a number: 'fast'");
@@ -201,7 +202,7 @@ TEST(LocomotiveDocumentExample, ValuesThatAreNotNumbersAreKeptAndReported) {
 TEST(LocomotiveDocumentExample, RecordWithoutRequiredKeysIsReported) {
     std::string text(basicFormat);
     text += "lokomotive\n.name=Nameless\n.typ=mm2_prg\n";
-    const ReadText read = readText(text);
+    const ReadText read = readExampleText(text);
     ASSERT_EQ(read.diagnostics.items().size(), 2u) << read.diagnostics.formatAll();
     EXPECT_EQ(read.diagnostics.items()[0].message, "locomotive record without '.uid'");
     EXPECT_EQ(read.diagnostics.items()[1].message, "locomotive record without '.adresse'");
@@ -211,7 +212,7 @@ TEST(LocomotiveDocumentExample, RecordWithoutRequiredKeysIsReported) {
 TEST(LocomotiveDocumentExample, KeyTwiceInARecordUsesTheFirst) {
     std::string text(basicFormat);
     text.replace(text.find(".vmin=1\n"), 8, ".vmin=1\n.vmin=7\n");
-    const ReadText read = readText(text);
+    const ReadText read = readExampleText(text);
     ASSERT_EQ(read.diagnostics.items().size(), 1u) << read.diagnostics.formatAll();
     EXPECT_EQ(read.diagnostics.items()[0].message,
               "'.vmin' appears twice in a locomotive record (lines 25 and 26)");
@@ -220,8 +221,8 @@ TEST(LocomotiveDocumentExample, KeyTwiceInARecordUsesTheFirst) {
 
 TEST(LocomotiveDocumentExample, FunctionProblemsAreReported) {
     const ReadText read =
-        readText(withBlock(".funktionen\n..nr=3\n.funktionen\n..nr=3\n.funktionen\n..typ=4\n"
-                           ".funktionen\n..nr=40\n.funktionen_2\n..nr=2\n"));
+        readExampleText(withBlock(".funktionen\n..nr=3\n.funktionen\n..nr=3\n.funktionen\n..typ=4\n"
+                                  ".funktionen\n..nr=40\n.funktionen_2\n..nr=2\n"));
     const auto& items = read.diagnostics.items();
     ASSERT_EQ(items.size(), 4u) << read.diagnostics.formatAll();
     EXPECT_EQ(items[0].message, "F3 appears twice in locomotive 'Dcc-2' (lines 28 and 30)");
@@ -234,7 +235,7 @@ TEST(LocomotiveDocumentExample, FunctionProblemsAreReported) {
 TEST(LocomotiveDocumentExample, TractionToAMissingUnitIsReported) {
     std::string text(basicFormat);
     text.replace(text.find(".inTraktion=0xffffffff"), 22, ".inTraktion=0x2c01");
-    const ReadText read = readText(text);
+    const ReadText read = readExampleText(text);
     ASSERT_EQ(read.diagnostics.items().size(), 1u) << read.diagnostics.formatAll();
     EXPECT_EQ(read.diagnostics.items()[0].message,
               "locomotive 'Dcc-2' runs in unit 0x2c01, which is not in this file");

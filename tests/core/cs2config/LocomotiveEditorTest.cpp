@@ -21,7 +21,7 @@ std::vector<std::string> linesOf(const std::string& text) {
 }
 
 // The lines that differ between two texts of the same line count (the test fails otherwise).
-std::vector<std::string> changedLines(const std::string& before, const std::string& after) {
+std::vector<std::string> editedLines(const std::string& before, const std::string& after) {
     const std::vector<std::string> a = linesOf(before), b = linesOf(after);
     EXPECT_EQ(a.size(), b.size());
     std::vector<std::string> changed;
@@ -66,7 +66,7 @@ TEST(LocomotiveEditor, ARenameChangesOnlyTheNameLine) {
     settings.name = "VT 11.5 Helvetia";
     ASSERT_EQ(loaded.editor.apply(loaded.indexOf("VT 11.5 TEE"), settings), std::nullopt);
     EXPECT_TRUE(loaded.editor.modified());
-    EXPECT_EQ(changedLines(loaded.bytes, loaded.editor.bytes()),
+    EXPECT_EQ(editedLines(loaded.bytes, loaded.editor.bytes()),
               std::vector<std::string>{" .name=VT 11.5 Helvetia"});
 }
 
@@ -78,7 +78,7 @@ TEST(LocomotiveEditor, RecordsBeforeAndAfterTheEditedOneStayByteIdentical) {
     ASSERT_EQ(loaded.editor.apply(loaded.indexOf("111 043-6"), settings), std::nullopt);
     const std::string after = loaded.editor.bytes();
     // The address is written as the file writes it (hex), the uid follows it, F1 gets its icon and time.
-    EXPECT_EQ(changedLines(loaded.bytes, after),
+    EXPECT_EQ(editedLines(loaded.bytes, after),
               (std::vector<std::string>{" .uid=0x2a", " .adresse=0x2a", " ..typ=23", " ..dauer=5"}));
     const std::size_t firstChange = loaded.bytes.find(" .uid=0xb\n .name=111 043-6");
     EXPECT_EQ(after.substr(0, firstChange), loaded.bytes.substr(0, firstChange));

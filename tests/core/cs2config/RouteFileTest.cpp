@@ -30,9 +30,9 @@ constexpr std::string_view documentFahrstrassen = "[fahrstrassen]\n"
                                                   "  ..magnetartikel=23\n"
                                                   "  ..stellung=1\n";
 
-using Read = ReadModel<RouteFile>;
+using ReadRoutes = ReadModel<RouteFile>;
 
-Read readText(std::string_view text) {
+ReadRoutes readRoutes(std::string_view text) {
     return readAs<RouteFile>(text, "fahrstrassen.cs2");
 }
 
@@ -71,7 +71,7 @@ void expectSameRoutes(const std::vector<Route>& actual, const std::vector<Route>
 }
 
 TEST(RouteFile, DocumentExampleIsRead) {
-    Read read = readText(documentFahrstrassen);
+    ReadRoutes read = readRoutes(documentFahrstrassen);
     EXPECT_TRUE(read.diagnostics.empty()) << read.diagnostics.formatAll();
     EXPECT_EQ(read.file.versionMajor, 0);
     EXPECT_EQ(read.file.versionMinor, 1);
@@ -96,7 +96,7 @@ TEST(RouteFile, DocumentExampleIsRead) {
 }
 
 TEST(RouteFile, TrainControlCorpusCounts) {
-    Read read = readText(readCorpus(corpus::fahrstrassen));
+    ReadRoutes read = readRoutes(readCorpus(corpus::fahrstrassen));
     EXPECT_TRUE(read.diagnostics.empty()) << read.diagnostics.formatAll();
     const RouteFile& file = read.file;
     EXPECT_EQ(file.versionMinor, 4);
@@ -141,7 +141,7 @@ TEST(RouteFile, TrainControlCorpusCounts) {
 }
 
 TEST(RouteFile, TrainControlRoutesInDetail) {
-    RouteFile file = readText(readCorpus(corpus::fahrstrassen)).file;
+    RouteFile file = readRoutes(readCorpus(corpus::fahrstrassen)).file;
     const Route& reset = routeWithId(file, 1);
     EXPECT_EQ(reset.name, "sk reset");
     EXPECT_EQ(reset.steps.size(), 39u);
@@ -164,7 +164,7 @@ TEST(RouteFile, TrainControlRoutesInDetail) {
 }
 
 TEST(RouteFile, TrainControlRoutesSwitchAccessoriesTheKeyboardHas) {
-    const RouteFile routes = readText(readCorpus(corpus::fahrstrassen)).file;
+    const RouteFile routes = readRoutes(readCorpus(corpus::fahrstrassen)).file;
     Parsed parsed = parseCorpus(corpus::magnetartikelTrainControl);
     Diagnostics ignored;
     const AccessoryFile accessories = AccessoryFile::read(parsed.document, ignored);
@@ -174,8 +174,9 @@ TEST(RouteFile, TrainControlRoutesSwitchAccessoriesTheKeyboardHas) {
 }
 
 TEST(RouteFile, MissingAccessoriesAndPositionsAreReported) {
-    Read routes = readText("[fahrstrassen]\nfahrstrasse\n .id=1\n .item\n ..typ=mag\n ..magnetartikel=5\n"
-                           " ..stellung=3\n .item\n ..typ=mag\n ..magnetartikel=9\n .item\n ..fsverweis=1\n");
+    ReadRoutes routes =
+        readRoutes("[fahrstrassen]\nfahrstrasse\n .id=1\n .item\n ..typ=mag\n ..magnetartikel=5\n"
+                   " ..stellung=3\n .item\n ..typ=mag\n ..magnetartikel=9\n .item\n ..fsverweis=1\n");
     Parsed parsed = parseText("[magnetartikel]\nartikel\n .id=5\n .typ=dreiwegweiche\n");
     Diagnostics ignored;
     const AccessoryFile accessories = AccessoryFile::read(parsed.document, ignored);
@@ -192,12 +193,12 @@ TEST(RouteFile, MissingAccessoriesAndPositionsAreReported) {
 
 TEST(RouteFile, CorpusFileIsWrittenBackByteForByte) {
     const std::string bytes = readCorpus(corpus::fahrstrassen);
-    EXPECT_EQ(readText(bytes).file.write().serialize(), bytes);
+    EXPECT_EQ(readRoutes(bytes).file.write().serialize(), bytes);
 }
 
 TEST(RouteFile, ChangingOneStepChangesOnlyItsLine) {
     const std::string bytes = readCorpus(corpus::fahrstrassen);
-    RouteFile file = readText(bytes).file;
+    RouteFile file = readRoutes(bytes).file;
     RouteStep& step = routeWithId(file, 1).steps.at(1);
     step.position = 0;
     RouteStep& delayed = routeWithId(file, 146).steps.at(1);
@@ -211,7 +212,7 @@ TEST(RouteFile, ChangingOneStepChangesOnlyItsLine) {
 TEST(RouteFile, EquivalentValuesKeepTheirText) {
     const std::string text = "[fahrstrassen]\nfahrstrasse\n .id=0x7\n .s88Ein=0\n .item\n ..sekunde=2.30\n"
                              " ..magnetartikel=05\n .S88Flag\n ..kont=3\n ..hi=1\n";
-    Read read = readText(text);
+    ReadRoutes read = readRoutes(text);
     EXPECT_TRUE(read.diagnostics.empty()) << read.diagnostics.formatAll();
     Route& route = read.file.routes.at(0);
     EXPECT_EQ(route.id, 7);
@@ -228,7 +229,7 @@ TEST(RouteFile, EquivalentValuesKeepTheirText) {
 }
 
 TEST(RouteFile, AddedAndRemovedStepsAndConditionsReadBackTheSame) {
-    RouteFile file = readText(readCorpus(corpus::fahrstrassen)).file;
+    RouteFile file = readRoutes(readCorpus(corpus::fahrstrassen)).file;
     Route& reset = routeWithId(file, 1);
     RouteStep added;
     added.accessory = 225;
@@ -248,7 +249,7 @@ TEST(RouteFile, AddedAndRemovedStepsAndConditionsReadBackTheSame) {
     plain.steps.resize(2);
 
     const std::string written = file.write().serialize();
-    Read again = readText(written);
+    ReadRoutes again = readRoutes(written);
     EXPECT_TRUE(again.diagnostics.empty()) << again.diagnostics.formatAll();
     expectSameRoutes(again.file.routes, file.routes);
     EXPECT_NE(written.find(" .item\n ..typ=mag\n ..sekunde=1.5\n ..magnetartikel=225\n ..stellung=1\n"
@@ -262,7 +263,7 @@ TEST(RouteFile, AddedAndRemovedStepsAndConditionsReadBackTheSame) {
 }
 
 TEST(RouteFile, NewRouteIsWrittenInTheFilesStyle) {
-    Read read = readText(documentFahrstrassen);
+    ReadRoutes read = readRoutes(documentFahrstrassen);
     Route route;
     route.id = 2;
     route.name = "FS2";
@@ -279,7 +280,8 @@ TEST(RouteFile, NewRouteIsWrittenInTheFilesStyle) {
 }
 
 TEST(RouteFile, StepAddedToAFileWithoutFinalNewline) {
-    Read read = readText("[fahrstrassen]\nfahrstrasse\n .id=1\n .item\n ..typ=mag\n ..magnetartikel=3");
+    ReadRoutes read =
+        readRoutes("[fahrstrassen]\nfahrstrasse\n .id=1\n .item\n ..typ=mag\n ..magnetartikel=3");
     RouteStep step;
     step.accessory = 4;
     read.file.routes.at(0).steps.push_back(step);
@@ -290,11 +292,12 @@ TEST(RouteFile, StepAddedToAFileWithoutFinalNewline) {
 }
 
 TEST(RouteFile, ProblemsAreReported) {
-    Read read = readText("[fahrstrassen]\n"
-                         "fahrstrasse\n .id=1\n .farbe=blau\n .item\n ..typ=s88\n ..kontakt=4\n"
-                         " .item\n ..typ=s88\n .item\n ..typ=mag\n ..sekunde=zwei\n ..magnetartikel=3\n"
-                         " .item\n ..typ=mag\n .S88Flag\n ..hi=0\n"
-                         "fahrstrasse\n .id=1\n .item\n ..fsverweis=12\n");
+    ReadRoutes read =
+        readRoutes("[fahrstrassen]\n"
+                   "fahrstrasse\n .id=1\n .farbe=blau\n .item\n ..typ=s88\n ..kontakt=4\n"
+                   " .item\n ..typ=s88\n .item\n ..typ=mag\n ..sekunde=zwei\n ..magnetartikel=3\n"
+                   " .item\n ..typ=mag\n .S88Flag\n ..hi=0\n"
+                   "fahrstrasse\n .id=1\n .item\n ..fsverweis=12\n");
     const std::vector<std::pair<int, std::string>> expected = {
         {4, "unknown key '.farbe' in fahrstrasse records"},
         {7, "unknown key '..kontakt' in route steps (.item)"},
@@ -315,9 +318,9 @@ TEST(RouteFile, ProblemsAreReported) {
 }
 
 TEST(RouteFile, JsonListsRoutesWithTheirSteps) {
-    Read read =
-        readText("[fahrstrassen]\nfahrstrasse\n .id=4\n .name=Ausfahrt\n .s88=12\n .S88Flag\n ..kont=3\n"
-                 " ..hi=0\n .item\n ..typ=mag\n ..sekunde=2.3\n ..magnetartikel=7\n ..stellung=1\n");
+    ReadRoutes read =
+        readRoutes("[fahrstrassen]\nfahrstrasse\n .id=4\n .name=Ausfahrt\n .s88=12\n .S88Flag\n ..kont=3\n"
+                   " ..hi=0\n .item\n ..typ=mag\n ..sekunde=2.3\n ..magnetartikel=7\n ..stellung=1\n");
     EXPECT_EQ(toJson(read.file), R"({
   "file": "fahrstrassen.cs2",
   "version": {

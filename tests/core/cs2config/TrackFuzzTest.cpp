@@ -15,7 +15,7 @@ namespace {
 constexpr int iterations = 2000;
 
 // Damages a file a few times: changed, inserted, deleted and copied bytes, a cut, a stray line.
-std::string mutate(std::string bytes, std::mt19937& random) {
+std::string mutateTrack(std::string bytes, std::mt19937& random) {
     static constexpr std::string_view pieces = "\n\r .=[]0x-9aZ\t\xff\xc3";
     static constexpr std::string_view lines[] = {"element\n", " .id=0x\n", " .typ=\n",
                                                  " ..x=1\n",  "[conf]\n",  " .drehung=9\n",
@@ -75,7 +75,7 @@ template <class Model>
 void fuzz(const std::string& original, unsigned seed, void (*check)(const Model&) = nullptr) {
     std::mt19937 random(seed);
     for (int i = 0; i < iterations; ++i) {
-        const std::string bytes = mutate(original, random);
+        const std::string bytes = mutateTrack(original, random);
         Diagnostics diagnostics;
         const Document document = Document::parse(bytes, diagnostics);
         ASSERT_EQ(document.serialize(), bytes) << "iteration " << i;
@@ -89,7 +89,7 @@ void fuzz(const std::string& original, unsigned seed, void (*check)(const Model&
     }
 }
 
-std::string statusFile() {
+std::string trackStatusFile() {
     std::string text = "[gleisbild]\nversion\n .major=0\n .minor=1\n";
     for (int id = 0x101; id < 0x140; ++id)
         text += "element\n .id=" + std::to_string(id) + "\n" +
@@ -124,5 +124,5 @@ TEST(TrackFuzz, IndexSurvivesDamagedBytes) {
 }
 
 TEST(TrackFuzz, StatusFileSurvivesDamagedBytes) {
-    fuzz<TrackStatusFile>(statusFile(), 4);
+    fuzz<TrackStatusFile>(trackStatusFile(), 4);
 }

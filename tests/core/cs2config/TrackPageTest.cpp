@@ -16,14 +16,14 @@ struct ReadPage {
     TrackPage page;
 };
 
-ReadPage readText(std::string_view text) {
+ReadPage readPageText(std::string_view text) {
     Parsed parsed = parseText(text, "page.cs2");
     TrackPage page = TrackPage::read(parsed.document, parsed.diagnostics);
     return {std::move(parsed.diagnostics), std::move(page)};
 }
 
 ReadPage readCorpusPage(std::string_view file) {
-    return readText(readCorpus(file));
+    return readPageText(readCorpus(file));
 }
 
 std::vector<std::string> splitLines(std::string_view text) {
@@ -41,7 +41,7 @@ std::vector<std::string> splitLines(std::string_view text) {
 }
 
 // The lines of `after` that differ from `before`; both must have the same number of lines.
-std::vector<std::string> changedLines(std::string_view before, std::string_view after) {
+std::vector<std::string> changedPageLines(std::string_view before, std::string_view after) {
     const std::vector<std::string> a = splitLines(before);
     const std::vector<std::string> b = splitLines(after);
     EXPECT_EQ(a.size(), b.size());
@@ -52,17 +52,17 @@ std::vector<std::string> changedLines(std::string_view before, std::string_view 
     return changed;
 }
 
-auto typed(const TrackElement& e) {
+auto typedElement(const TrackElement& e) {
     return std::make_tuple(e.position.toId(), e.type, e.rotation, e.article, e.text, e.deviceId, e.state);
 }
 
 void expectSameElements(const std::vector<TrackElement>& actual, const std::vector<TrackElement>& expected) {
     ASSERT_EQ(actual.size(), expected.size());
     for (std::size_t i = 0; i < actual.size(); ++i)
-        EXPECT_EQ(typed(actual[i]), typed(expected[i])) << "element " << i;
+        EXPECT_EQ(typedElement(actual[i]), typedElement(expected[i])) << "element " << i;
 }
 
-const TrackElement& at(const TrackPage& page, std::uint32_t id) {
+const TrackElement& tileAt(const TrackPage& page, std::uint32_t id) {
     for (const TrackElement& element : page.elements)
         if (element.position.toId() == id)
             return element;
@@ -77,7 +77,7 @@ std::map<std::string, int> typeCounts(const TrackPage& page) {
     return counts;
 }
 
-std::vector<std::string> messages(const Diagnostics& diagnostics) {
+std::vector<std::string> pageMessages(const Diagnostics& diagnostics) {
     std::vector<std::string> texts;
     for (const Diagnostic& diagnostic : diagnostics.items())
         texts.push_back(diagnostics.format(diagnostic));
@@ -106,7 +106,7 @@ TEST(TrackPage, KarbenCorpusPage) {
                                                             {"rechtsweiche", 3},
                                                             {"s88kontakt", 3},
                                                             {"signal_p_hp012s", 7}}));
-    const TrackElement& turnout = at(page, 0x105);
+    const TrackElement& turnout = tileAt(page, 0x105);
     EXPECT_EQ(turnout.type, "rechtsweiche");
     EXPECT_EQ(turnout.category(), TrackCategory::Turnout);
     EXPECT_TRUE(turnout.switchable());
@@ -114,13 +114,13 @@ TEST(TrackPage, KarbenCorpusPage) {
     EXPECT_EQ(turnout.article, 2);
     EXPECT_EQ(turnout.text, "23");
     EXPECT_EQ(turnout.state, 1);
-    const TrackElement& contact = at(page, 0x107);
+    const TrackElement& contact = tileAt(page, 0x107);
     EXPECT_EQ(contact.category(), TrackCategory::Feedback);
     EXPECT_EQ(contact.articleLink(), ArticleLink::FeedbackContact);
     EXPECT_EQ(contact.article, 101);
     EXPECT_EQ(contact.deviceId, 0x100);
     EXPECT_EQ(contact.text, "603");
-    const TrackElement& track = at(page, 0x103);
+    const TrackElement& track = tileAt(page, 0x103);
     EXPECT_FALSE(track.switchable());
     EXPECT_FALSE(track.hasArticle());
     EXPECT_EQ(track.rotation, 0);
@@ -151,8 +151,8 @@ TEST(TrackPage, CanStreamPageGbs0) {
     }
     // All on feedback device 0x100 except contact 1001 at 0xa01, which is on device 0x6.
     EXPECT_EQ(devices, (std::map<std::int64_t, int>{{0x6, 1}, {0x100, 143}}));
-    EXPECT_EQ(at(page, 0xa01).article, 1001);
-    EXPECT_EQ(at(page, 0xa01).deviceId, 0x6);
+    EXPECT_EQ(tileAt(page, 0xa01).article, 1001);
+    EXPECT_EQ(tileAt(page, 0xa01).deviceId, 0x6);
     EXPECT_EQ(page.elements.front().article, 101);
     EXPECT_EQ(page.area()->columns(), 17);
     EXPECT_EQ(page.area()->rows(), 15);
@@ -170,11 +170,11 @@ TEST(TrackPage, TrainControlTestPage) {
     EXPECT_EQ(labels[0]->text, "test");
     EXPECT_EQ(labels[0]->category(), TrackCategory::Text);
     EXPECT_EQ(labels[0]->position, (TrackPosition{0, 0x14, 0x0d}));
-    EXPECT_EQ(at(page, 0xb12).category(), TrackCategory::RouteButton);
-    EXPECT_EQ(at(page, 0x312).category(), TrackCategory::Turntable);
-    EXPECT_EQ(at(page, 0xc19).type, "hosentraeger");
+    EXPECT_EQ(tileAt(page, 0xb12).category(), TrackCategory::RouteButton);
+    EXPECT_EQ(tileAt(page, 0x312).category(), TrackCategory::Turntable);
+    EXPECT_EQ(tileAt(page, 0xc19).type, "hosentraeger");
     // Three TrainControl extension types and TrainControl's own `.prot` key, each reported once.
-    const std::vector<std::string> texts = messages(diagnostics);
+    const std::vector<std::string> texts = pageMessages(diagnostics);
     ASSERT_EQ(texts.size(), 4u) << diagnostics.formatAll();
     EXPECT_NE(texts[0].find("unknown element key .prot"), std::string::npos) << texts[0];
     EXPECT_NE(texts[1].find("unknown element type 'custom_perm_left'"), std::string::npos) << texts[1];
@@ -187,7 +187,7 @@ TEST(TrackPage, UnchangedModelWritesTheOriginalBytes) {
     for (const std::string_view file :
          {corpus::karben, corpus::gbs0, corpus::testPage, corpus::cs3TrackPlan}) {
         const std::string bytes = readCorpus(file);
-        const auto [diagnostics, page] = readText(bytes);
+        const auto [diagnostics, page] = readPageText(bytes);
         EXPECT_EQ(page.write().serialize(), bytes) << file;
     }
 }
@@ -195,9 +195,9 @@ TEST(TrackPage, UnchangedModelWritesTheOriginalBytes) {
 TEST(TrackPage, ChangingOneFieldChangesOneLine) {
     const std::string bytes = readCorpus(corpus::karben);
     const auto change = [&bytes](auto edit) {
-        TrackPage page = readText(bytes).page;
+        TrackPage page = readPageText(bytes).page;
         edit(page);
-        return changedLines(bytes, page.write().serialize());
+        return changedPageLines(bytes, page.write().serialize());
     };
     using Lines = std::vector<std::string>;
     // elements[3] is the rechtsweiche at 0x105: .drehung=3, .artikel=2, .text=23, .zustand=1.
@@ -212,16 +212,16 @@ TEST(TrackPage, ChangingOneFieldChangesOneLine) {
 
 TEST(TrackPage, MovedElementGetsANewHexId) {
     const std::string bytes = readCorpus(corpus::karben);
-    TrackPage page = readText(bytes).page;
+    TrackPage page = readPageText(bytes).page;
     page.elements[0].position = {0, 14, 4};
     const std::string written = page.write().serialize();
-    EXPECT_EQ(changedLines(bytes, written), std::vector<std::string>{" .id=0x40e"});
-    EXPECT_EQ(readText(written).page.elements[0].position, (TrackPosition{0, 14, 4}));
+    EXPECT_EQ(changedPageLines(bytes, written), std::vector<std::string>{" .id=0x40e"});
+    EXPECT_EQ(readPageText(written).page.elements[0].position, (TrackPosition{0, 14, 4}));
 }
 
 TEST(TrackPage, MovedElementWithoutIdGetsOneAsItsFirstLine) {
     const std::string text = "[gleisbildseite]\nversion\n .major=1\nelement\n .typ=gerade\n .artikel=-1\n";
-    TrackPage page = readText(text).page;
+    TrackPage page = readPageText(text).page;
     EXPECT_EQ(page.write().serialize(), text);
     page.elements[0].position = {0, 3, 1};
     EXPECT_EQ(page.write().serialize(),
@@ -230,7 +230,7 @@ TEST(TrackPage, MovedElementWithoutIdGetsOneAsItsFirstLine) {
 
 TEST(TrackPage, IdStaysOmittedAtTheOrigin) {
     const std::string text = "[gleisbildseite]\nelement\n .typ=gerade\nelement\n .id=0x205\n .typ=bogen\n";
-    TrackPage page = readText(text).page;
+    TrackPage page = readPageText(text).page;
     page.elements[0].position = {};
     page.elements[1].position = {};
     EXPECT_EQ(page.write().serialize(),
@@ -239,7 +239,7 @@ TEST(TrackPage, IdStaysOmittedAtTheOrigin) {
 
 TEST(TrackPage, AddAndRemoveElements) {
     const std::string bytes = readCorpus(corpus::karben);
-    TrackPage page = readText(bytes).page;
+    TrackPage page = readPageText(bytes).page;
     page.elements.erase(page.elements.begin() + 5);
     TrackElement signal = element(0x20e, "signal", 30);
     signal.rotation = 1;
@@ -248,7 +248,7 @@ TEST(TrackPage, AddAndRemoveElements) {
     const std::string written = page.write().serialize();
     EXPECT_NE(written.find("element\n .id=0x20e\n .typ=signal\n .drehung=1\n .artikel=30\n .text=N\n"),
               std::string::npos);
-    const auto [diagnostics, reread] = readText(written);
+    const auto [diagnostics, reread] = readPageText(written);
     EXPECT_TRUE(diagnostics.empty()) << diagnostics.formatAll();
     expectSameElements(reread.elements, page.elements);
     EXPECT_EQ(reread.elements.size(), 37u);
@@ -257,10 +257,10 @@ TEST(TrackPage, AddAndRemoveElements) {
 TEST(TrackPage, AddToAFileWithoutFinalNewline) {
     const std::string bytes = readCorpus(corpus::testPage);
     ASSERT_NE(bytes.back(), '\n');
-    TrackPage page = readText(bytes).page;
+    TrackPage page = readPageText(bytes).page;
     page.elements.push_back(element(0x1001, "prellbock"));
     page.elements[100].text = "end";
-    const auto [diagnostics, reread] = readText(page.write().serialize());
+    const auto [diagnostics, reread] = readPageText(page.write().serialize());
     expectSameElements(reread.elements, page.elements);
     EXPECT_EQ(reread.elements.size(), 102u);
 }
@@ -280,7 +280,7 @@ TEST(TrackPage, NewPageWrittenTheWayACs2WritesOne) {
                        "element\n .typ=gerade\n .artikel=-1\n"
                        "element\n .id=0x102\n .typ=linksweiche\n .drehung=2\n .artikel=6\n"
                        "element\n .id=0x104\n .artikel=-1\n .text=Bf\n");
-    const auto [diagnostics, reread] = readText(written);
+    const auto [diagnostics, reread] = readPageText(written);
     // The tile at the origin has no `.id`, as in real files; reading it back says so, once.
     ASSERT_EQ(diagnostics.items().size(), 1u) << diagnostics.formatAll();
     EXPECT_EQ(diagnostics.items()[0].message, "1 element(s) without .id, the first one here (reported once)");
@@ -288,16 +288,16 @@ TEST(TrackPage, NewPageWrittenTheWayACs2WritesOne) {
 }
 
 TEST(TrackPage, ALabelStaysOnOneLine) {
-    TrackPage page = readText("[gleisbildseite]\nelement\n .id=0x101\n .typ=text\n").page;
+    TrackPage page = readPageText("[gleisbildseite]\nelement\n .id=0x101\n .typ=text\n").page;
     page.elements[0].text = "Gleis 1\nelement";
-    const auto [diagnostics, reread] = readText(page.write().serialize());
+    const auto [diagnostics, reread] = readPageText(page.write().serialize());
     ASSERT_EQ(reread.elements.size(), 1u);
     EXPECT_EQ(reread.elements[0].text, "Gleis 1 element");
 }
 
 TEST(TrackPage, CrLfFileGetsCrLfLines) {
     const std::string text = "[gleisbildseite]\r\nelement\r\n .id=0x101\r\n .typ=gerade\r\n";
-    TrackPage page = readText(text).page;
+    TrackPage page = readPageText(text).page;
     page.elements[0].text = "A";
     EXPECT_EQ(page.write().serialize(),
               "[gleisbildseite]\r\nelement\r\n .id=0x101\r\n .typ=gerade\r\n .text=A\r\n");
@@ -305,23 +305,23 @@ TEST(TrackPage, CrLfFileGetsCrLfLines) {
 
 TEST(TrackPage, ElementsWithoutIdAreReportedOnce) {
     const auto [diagnostics, page] =
-        readText("[gleisbildseite]\nelement\n .typ=text\n .text=A\nelement\n .id=0x101\n .typ=gerade\n"
-                 "element\n .text=B\n");
+        readPageText("[gleisbildseite]\nelement\n .typ=text\n .text=A\nelement\n .id=0x101\n .typ=gerade\n"
+                     "element\n .text=B\n");
     ASSERT_EQ(page.elements.size(), 3u);
     EXPECT_EQ(page.elements[0].position, TrackPosition{});
     EXPECT_EQ(page.elements[2].position, TrackPosition{});
     EXPECT_EQ(page.elements[2].category(), TrackCategory::Text);
-    const std::vector<std::string> texts = messages(diagnostics);
+    const std::vector<std::string> texts = pageMessages(diagnostics);
     ASSERT_EQ(texts.size(), 1u) << diagnostics.formatAll();
     EXPECT_EQ(texts[0], "page.cs2:2: warning: 2 element(s) without .id, the first one here (reported once); "
                         "placed at page 0, column 0, row 0 as a CS2 does");
 }
 
 TEST(TrackPage, TwoElementsOnOneTileAreKeptAndReported) {
-    const auto [diagnostics, page] =
-        readText("[gleisbildseite]\nelement\n .id=0x102\n .typ=gerade\nelement\n .id=0x102\n .typ=signal\n");
+    const auto [diagnostics, page] = readPageText(
+        "[gleisbildseite]\nelement\n .id=0x102\n .typ=gerade\nelement\n .id=0x102\n .typ=signal\n");
     EXPECT_EQ(page.elements.size(), 2u);
-    const std::vector<std::string> texts = messages(diagnostics);
+    const std::vector<std::string> texts = pageMessages(diagnostics);
     ASSERT_EQ(texts.size(), 1u) << diagnostics.formatAll();
     EXPECT_EQ(texts[0], "page.cs2:5: warning: two elements at page 0, column 2, row 1 (also line 2); "
                         "both are kept; the later one is drawn on top");
@@ -330,13 +330,13 @@ TEST(TrackPage, TwoElementsOnOneTileAreKeptAndReported) {
 TEST(TrackPage, UnreadableValuesAreReportedAndKept) {
     const std::string text = "[gleisbildseite]\nelement\n .id=zz\n .typ=signal\n .drehung=7\n .artikel=abc\n"
                              " .zustand=-2\n";
-    auto [diagnostics, page] = readText(text);
+    auto [diagnostics, page] = readPageText(text);
     const TrackElement& read = page.elements.at(0);
     EXPECT_EQ(read.position, TrackPosition{});
     EXPECT_EQ(read.rotation, 0);
     EXPECT_EQ(read.article, -1);
     EXPECT_EQ(read.state, 0);
-    const std::vector<std::string> texts = messages(diagnostics);
+    const std::vector<std::string> texts = pageMessages(diagnostics);
     ASSERT_EQ(texts.size(), 4u) << diagnostics.formatAll();
     EXPECT_EQ(texts[0], "page.cs2:3: warning: element .id 'zz' is not a number; placed at column 0, row 0; "
                         "the line is kept as it is");
@@ -350,11 +350,12 @@ TEST(TrackPage, UnreadableValuesAreReportedAndKept) {
               "kept as it is");
     EXPECT_EQ(page.write().serialize(), text);
     page.elements[0].rotation = 2;
-    EXPECT_EQ(changedLines(text, page.write().serialize()), std::vector<std::string>{" .drehung=2"});
+    EXPECT_EQ(changedPageLines(text, page.write().serialize()), std::vector<std::string>{" .drehung=2"});
 }
 
 TEST(TrackPage, IdOutsideTheGridIsReported) {
-    const auto [diagnostics, page] = readText("[gleisbildseite]\nelement\n .id=0x1000000\n .typ=gerade\n");
+    const auto [diagnostics, page] =
+        readPageText("[gleisbildseite]\nelement\n .id=0x1000000\n .typ=gerade\n");
     EXPECT_EQ(page.elements.at(0).position, TrackPosition{});
     ASSERT_EQ(diagnostics.items().size(), 1u);
     EXPECT_EQ(diagnostics.items()[0].message,
@@ -363,13 +364,13 @@ TEST(TrackPage, IdOutsideTheGridIsReported) {
 
 TEST(TrackPage, UnknownTypesAndKeysAreReportedOnceEach) {
     const auto [diagnostics, page] =
-        readText("[gleisbildseite]\nelement\n .id=0x101\n .typ=magic\n .farbe=rot\nelement\n .id=0x102\n"
-                 " .typ=magic\n .farbe=gruen\nelement\n .id=0x103\n .typ=gerade\n");
+        readPageText("[gleisbildseite]\nelement\n .id=0x101\n .typ=magic\n .farbe=rot\nelement\n .id=0x102\n"
+                     " .typ=magic\n .farbe=gruen\nelement\n .id=0x103\n .typ=gerade\n");
     ASSERT_EQ(page.elements.size(), 3u);
     EXPECT_EQ(page.elements[0].category(), TrackCategory::Unknown);
     EXPECT_EQ(page.elements[0].elementType(), nullptr);
     EXPECT_FALSE(page.elements[0].switchable());
-    const std::vector<std::string> texts = messages(diagnostics);
+    const std::vector<std::string> texts = pageMessages(diagnostics);
     ASSERT_EQ(texts.size(), 2u) << diagnostics.formatAll();
     EXPECT_EQ(texts[0], "page.cs2:5: warning: unknown element key .farbe (reported once); kept unchanged");
     EXPECT_EQ(texts[1],
@@ -379,7 +380,7 @@ TEST(TrackPage, UnknownTypesAndKeysAreReportedOnceEach) {
 
 TEST(TrackPage, KeyGivenTwiceUsesTheFirst) {
     const auto [diagnostics, page] =
-        readText("[gleisbildseite]\nelement\n .id=0x101\n .typ=gerade\n .typ=bogen\n");
+        readPageText("[gleisbildseite]\nelement\n .id=0x101\n .typ=gerade\n .typ=bogen\n");
     EXPECT_EQ(page.elements.at(0).type, "gerade");
     ASSERT_EQ(diagnostics.items().size(), 1u);
     EXPECT_EQ(
@@ -388,7 +389,7 @@ TEST(TrackPage, KeyGivenTwiceUsesTheFirst) {
 }
 
 TEST(TrackPage, ElementWithoutTypeOrText) {
-    const auto [diagnostics, page] = readText("[gleisbildseite]\nelement\n .id=0x101\n");
+    const auto [diagnostics, page] = readPageText("[gleisbildseite]\nelement\n .id=0x101\n");
     EXPECT_EQ(page.elements.at(0).category(), TrackCategory::Text);
     ASSERT_EQ(diagnostics.items().size(), 1u);
     EXPECT_EQ(diagnostics.items()[0].message, "element without .typ and without .text");
@@ -397,7 +398,7 @@ TEST(TrackPage, ElementWithoutTypeOrText) {
 TEST(TrackPage, UnknownRecordsAreKeptAndReportedOnce) {
     const std::string text = "[gleisbildseite]\nversion\n .major=1\nhintergrund\n .bild=a.png\nhintergrund\n"
                              "element\n .id=0x101\n .typ=gerade\n";
-    auto [diagnostics, page] = readText(text);
+    auto [diagnostics, page] = readPageText(text);
     ASSERT_EQ(diagnostics.items().size(), 1u) << diagnostics.formatAll();
     EXPECT_EQ(diagnostics.format(diagnostics.items()[0]),
               "page.cs2:4: warning: unknown record 'hintergrund' (reported once); kept unchanged");
@@ -407,7 +408,7 @@ TEST(TrackPage, UnknownRecordsAreKeptAndReportedOnce) {
 
 TEST(TrackPage, Cs3TrackPlanIsRefusedClearly) {
     const std::string bytes = readCorpus(corpus::cs3TrackPlan);
-    const auto [diagnostics, page] = readText(bytes);
+    const auto [diagnostics, page] = readPageText(bytes);
     EXPECT_EQ(page.format, TrackPlanFormat::Cs3Pixels);
     EXPECT_TRUE(page.elements.empty());
     ASSERT_EQ(diagnostics.items().size(), 1u) << diagnostics.formatAll();
@@ -419,7 +420,7 @@ TEST(TrackPage, Cs3TrackPlanIsRefusedClearly) {
 }
 
 TEST(TrackPage, OtherSectionIsReadWithAWarning) {
-    const auto [diagnostics, page] = readText("[gleisbild]\nelement\n .id=0x101\n .typ=gerade\n");
+    const auto [diagnostics, page] = readPageText("[gleisbild]\nelement\n .id=0x101\n .typ=gerade\n");
     EXPECT_EQ(page.elements.size(), 1u);
     ASSERT_EQ(diagnostics.items().size(), 1u);
     EXPECT_EQ(diagnostics.format(diagnostics.items()[0]),

@@ -15,14 +15,14 @@ struct ReadPlan {
     TrackPlan plan;
 };
 
-ReadPlan readText(std::string_view text) {
+ReadPlan readPlanText(std::string_view text) {
     Parsed parsed = parseText(text, "gleisbild.cs2");
     TrackPlan plan = TrackPlan::read(parsed.document, parsed.diagnostics);
     return {std::move(parsed.diagnostics), std::move(plan)};
 }
 
 ReadPlan readCorpusPlan(std::string_view file) {
-    return readText(readCorpus(file));
+    return readPlanText(readCorpus(file));
 }
 
 using PageList = std::vector<std::pair<std::int64_t, std::string>>;
@@ -41,7 +41,7 @@ TrackPageEntry newPage(std::int64_t id, std::string name) {
     return page;
 }
 
-std::vector<std::string> messages(const Diagnostics& diagnostics) {
+std::vector<std::string> planMessages(const Diagnostics& diagnostics) {
     std::vector<std::string> texts;
     for (const Diagnostic& diagnostic : diagnostics.items())
         texts.push_back(diagnostics.format(diagnostic));
@@ -74,7 +74,7 @@ constexpr std::string_view documentExample = "[gleisbild]\n"
 } // namespace
 
 TEST(TrackPlan, DocumentExample) {
-    const auto [diagnostics, plan] = readText(documentExample);
+    const auto [diagnostics, plan] = readPlanText(documentExample);
     EXPECT_TRUE(diagnostics.empty()) << diagnostics.formatAll();
     EXPECT_EQ(plan.version, (TrackFileVersion{0, 6}));
     EXPECT_EQ(plan.size, (TrackGridSize{20, 15}));
@@ -97,7 +97,7 @@ TEST(TrackPlan, DocumentExample) {
 TEST(TrackPlan, DocumentLastUsedPageField) {
     const std::string text = "[gleisbild]\nzuletztBenutzt\n .seite=0\nseite\n .name=Seite0\nseite\n .id=1\n"
                              " .name=Seite1\n";
-    auto [diagnostics, plan] = readText(text);
+    auto [diagnostics, plan] = readPlanText(text);
     EXPECT_TRUE(diagnostics.empty()) << diagnostics.formatAll();
     EXPECT_EQ(plan.lastUsedPage, "0");
     ASSERT_NE(plan.lastUsed(), nullptr);
@@ -106,7 +106,7 @@ TEST(TrackPlan, DocumentLastUsedPageField) {
     const std::string written = plan.write().serialize();
     EXPECT_EQ(written,
               "[gleisbild]\nzuletztBenutzt\n .seite=1\nseite\n .name=Seite0\nseite\n .id=1\n .name=Seite1\n");
-    EXPECT_EQ(readText(written).plan.lastUsed()->name, "Seite1");
+    EXPECT_EQ(readPlanText(written).plan.lastUsed()->name, "Seite1");
 }
 
 TEST(TrackPlan, GbertIndex) {
@@ -154,13 +154,13 @@ TEST(TrackPlan, UnchangedModelWritesTheOriginalBytes) {
     for (const std::string_view file :
          {corpus::gleisbildGbert, corpus::gleisbildMrFlexi, corpus::gleisbildSample, corpus::cs3TrackPlan}) {
         const std::string bytes = readCorpus(file);
-        EXPECT_EQ(readText(bytes).plan.write().serialize(), bytes) << file;
+        EXPECT_EQ(readPlanText(bytes).plan.write().serialize(), bytes) << file;
     }
 }
 
 TEST(TrackPlan, RenamingAPageChangesOneLine) {
     const std::string bytes = readCorpus(corpus::gleisbildMrFlexi);
-    TrackPlan plan = readText(bytes).plan;
+    TrackPlan plan = readPlanText(bytes).plan;
     plan.pages[3].name = "Eschenhofen Bf";
     const std::string written = plan.write().serialize();
     std::string expected = bytes;
@@ -170,7 +170,7 @@ TEST(TrackPlan, RenamingAPageChangesOneLine) {
 
 TEST(TrackPlan, SizeAndLastUsedPageAreWritten) {
     const std::string bytes = readCorpus(corpus::gleisbildGbert);
-    TrackPlan plan = readText(bytes).plan;
+    TrackPlan plan = readPlanText(bytes).plan;
     plan.size = TrackGridSize{20, 15};
     plan.lastUsedPage = "Bahnhof";
     plan.pages.push_back(newPage(1, "Bahnhof"));
@@ -185,10 +185,10 @@ TEST(TrackPlan, SizeAndLastUsedPageAreWritten) {
 
 TEST(TrackPlan, AddAndRemovePages) {
     const std::string bytes = readCorpus(corpus::gleisbildSample);
-    TrackPlan plan = readText(bytes).plan;
+    TrackPlan plan = readPlanText(bytes).plan;
     plan.pages.erase(plan.pages.begin() + 1);
     plan.pages.push_back(newPage(6, "6 - Yard"));
-    const auto [diagnostics, reread] = readText(plan.write().serialize());
+    const auto [diagnostics, reread] = readPlanText(plan.write().serialize());
     EXPECT_TRUE(diagnostics.empty()) << diagnostics.formatAll();
     EXPECT_EQ(
         pageList(reread),
@@ -204,7 +204,7 @@ TEST(TrackPlan, NewIndexWrittenTheWayACs2WritesOne) {
     const std::string written = plan.write().serialize();
     EXPECT_EQ(written, "[gleisbild]\nversion\n .major=1\ngroesse\nzuletztBenutzt\n .name=Main\n"
                        "seite\n .name=Main\nseite\n .id=1\n .name=Yard\n");
-    const auto [diagnostics, reread] = readText(written);
+    const auto [diagnostics, reread] = readPlanText(written);
     EXPECT_TRUE(diagnostics.empty()) << diagnostics.formatAll();
     EXPECT_EQ(pageList(reread), pageList(plan));
     EXPECT_EQ(reread.size, TrackGridSize{});
@@ -212,11 +212,11 @@ TEST(TrackPlan, NewIndexWrittenTheWayACs2WritesOne) {
 }
 
 TEST(TrackPlan, PageProblemsAreReported) {
-    const auto [diagnostics, plan] =
-        readText("[gleisbild]\nzuletztBenutzt\n .name=Gone\nseite\n .name=A\nseite\n .name=B\nseite\n .id=2\n"
-                 "seite\n .id=x\n .name=A\n");
+    const auto [diagnostics, plan] = readPlanText(
+        "[gleisbild]\nzuletztBenutzt\n .name=Gone\nseite\n .name=A\nseite\n .name=B\nseite\n .id=2\n"
+        "seite\n .id=x\n .name=A\n");
     EXPECT_EQ(pageList(plan), (PageList{{0, "A"}, {0, "B"}, {2, ""}, {0, "A"}}));
-    const std::vector<std::string> texts = messages(diagnostics);
+    const std::vector<std::string> texts = planMessages(diagnostics);
     ASSERT_EQ(texts.size(), 6u) << diagnostics.formatAll();
     EXPECT_EQ(texts[0],
               "gleisbild.cs2:6: warning: second page with id 0 (also line 4); a page without .id counts "
@@ -235,11 +235,11 @@ TEST(TrackPlan, PageProblemsAreReported) {
 
 TEST(TrackPlan, RecordProblemsAreReported) {
     const auto [diagnostics, plan] =
-        readText("[gleisbild]\nversion\n .major=1\ngroesse\n .width=999\n .tiefe=3\n"
-                 "version\n .major=2\nlayer\nlayer\n");
+        readPlanText("[gleisbild]\nversion\n .major=1\ngroesse\n .width=999\n .tiefe=3\n"
+                     "version\n .major=2\nlayer\nlayer\n");
     EXPECT_EQ(plan.version, (TrackFileVersion{1, 0}));
     EXPECT_EQ(plan.size, TrackGridSize{});
-    const std::vector<std::string> texts = messages(diagnostics);
+    const std::vector<std::string> texts = planMessages(diagnostics);
     ASSERT_EQ(texts.size(), 4u) << diagnostics.formatAll();
     EXPECT_EQ(texts[0],
               "gleisbild.cs2:7: warning: second 'version' record; the first one is used; both are kept");

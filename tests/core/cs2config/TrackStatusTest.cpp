@@ -14,7 +14,7 @@ struct ReadStatus {
     TrackStatusFile status;
 };
 
-ReadStatus readText(std::string_view text) {
+ReadStatus readStatusText(std::string_view text) {
     Parsed parsed = parseText(text, "gleisbild.sr2");
     TrackStatusFile status = TrackStatusFile::read(parsed.document, parsed.diagnostics);
     return {std::move(parsed.diagnostics), std::move(status)};
@@ -41,7 +41,7 @@ constexpr std::string_view writtenByMrsystem = "[gleisbild]\n"
 } // namespace
 
 TEST(TrackStatus, MrsystemStatusFile) {
-    auto [diagnostics, status] = readText(writtenByMrsystem);
+    auto [diagnostics, status] = readStatusText(writtenByMrsystem);
     EXPECT_TRUE(diagnostics.empty()) << diagnostics.formatAll();
     EXPECT_EQ(status.version, (TrackFileVersion{0, 1}));
     ASSERT_EQ(status.elements.size(), 2u);
@@ -56,7 +56,7 @@ TEST(TrackStatus, MrsystemStatusFile) {
 
 // The CS2 web server emulations serve an empty status file: header and version only.
 TEST(TrackStatus, EmptyStatusFile) {
-    const auto [diagnostics, status] = readText("[gleisbild]\nversion\n .minor=1\n");
+    const auto [diagnostics, status] = readStatusText("[gleisbild]\nversion\n .minor=1\n");
     EXPECT_TRUE(diagnostics.empty()) << diagnostics.formatAll();
     EXPECT_EQ(status.version, (TrackFileVersion{0, 1}));
     EXPECT_TRUE(status.elements.empty());
@@ -70,7 +70,7 @@ TEST(TrackStatus, NewFileIsWrittenAsMrsystemWritesIt) {
 }
 
 TEST(TrackStatus, ChangingAStateChangesOneLine) {
-    TrackStatusFile status = readText(writtenByMrsystem).status;
+    TrackStatusFile status = readStatusText(writtenByMrsystem).status;
     status.elements[0].state = 2;
     std::string expected(writtenByMrsystem);
     expected.replace(expected.find(" .zustand=1"), 11, " .zustand=2");
@@ -81,10 +81,10 @@ TEST(TrackStatus, ChangingAStateChangesOneLine) {
 }
 
 TEST(TrackStatus, AddAndRemoveEntries) {
-    TrackStatusFile status = readText(writtenByMrsystem).status;
+    TrackStatusFile status = readStatusText(writtenByMrsystem).status;
     status.elements.erase(status.elements.begin());
     status.elements.push_back(entry(0x30f, 2));
-    const auto [diagnostics, reread] = readText(status.write().serialize());
+    const auto [diagnostics, reread] = readStatusText(status.write().serialize());
     EXPECT_TRUE(diagnostics.empty()) << diagnostics.formatAll();
     ASSERT_EQ(reread.elements.size(), 2u);
     EXPECT_EQ(reread.elements[0].id, 263);
@@ -95,7 +95,7 @@ TEST(TrackStatus, AddAndRemoveEntries) {
 TEST(TrackStatus, HexIdsAndProblems) {
     const std::string text = "[gleisbild]\nelement\n .id=0x102\n .zustand=1\nelement\n .id=258\n .farbe=3\n"
                              "element\n .zustand=x\n";
-    const auto [diagnostics, status] = readText(text);
+    const auto [diagnostics, status] = readStatusText(text);
     ASSERT_EQ(status.elements.size(), 3u);
     EXPECT_EQ(status.elements[0].id, 0x102);
     std::vector<std::string> texts;
@@ -115,6 +115,6 @@ TEST(TrackStatus, HexIdsAndProblems) {
 }
 
 TEST(TrackStatus, Json) {
-    const std::string json = toJson(readText(writtenByMrsystem).status);
+    const std::string json = toJson(readStatusText(writtenByMrsystem).status);
     EXPECT_NE(json.find("\"id\": 258,\n      \"state\": 1"), std::string::npos) << json;
 }

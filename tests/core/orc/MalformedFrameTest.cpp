@@ -11,7 +11,7 @@ using namespace stellwerk::orc;
 
 namespace {
 
-can::CanFrame frame(std::uint32_t id, std::initializer_list<std::uint8_t> bytes) {
+can::CanFrame malformedFrame(std::uint32_t id, std::initializer_list<std::uint8_t> bytes) {
     return can::CanFrame::extendedFrame(id, std::span<const std::uint8_t>(bytes.begin(), bytes.size()));
 }
 
@@ -34,24 +34,24 @@ constexpr std::uint32_t FlashCommand = 0x19E00000;
 } // namespace
 
 TEST(Malformed, AllesAusWithDlc2IsRefused) {
-    EXPECT_EQ(why(frame(SystemCommand, {0x00, 0x2E})),
+    EXPECT_EQ(why(malformedFrame(SystemCommand, {0x00, 0x2E})),
               "Alles Aus / Alles EIN take DLC 1, 3 (Ziel-Id) or 5 (Ziel-UID)");
 }
 
 TEST(Malformed, AllesAusAsAnswerIsRefused) {
-    EXPECT_EQ(why(frame(SystemAnswer, {0x00})), "Alles Aus / Alles EIN are commands (D=0)");
+    EXPECT_EQ(why(malformedFrame(SystemAnswer, {0x00})), "Alles Aus / Alles EIN are commands (D=0)");
 }
 
 TEST(Malformed, EmptyFrameHasNoSubCommand) {
-    EXPECT_EQ(why(frame(SystemCommand, {})), "no sub-command: DB1 is missing");
+    EXPECT_EQ(why(malformedFrame(SystemCommand, {})), "no sub-command: DB1 is missing");
 }
 
 TEST(Malformed, PriorityZeroIsNeverSent) {
-    EXPECT_EQ(why(frame(0x01000000, {0x00})), "priority 00 is never sent (kept for Maerklin/ESU)");
+    EXPECT_EQ(why(malformedFrame(0x01000000, {0x00})), "priority 00 is never sent (kept for Maerklin/ESU)");
 }
 
 TEST(Malformed, UnknownGroupIsRefused) {
-    EXPECT_EQ(why(frame(0x09400000, {0x00})), "a command group the document does not define");
+    EXPECT_EQ(why(malformedFrame(0x09400000, {0x00})), "a command group the document does not define");
 }
 
 TEST(Malformed, StandardFrameIsRefused) {
@@ -61,61 +61,63 @@ TEST(Malformed, StandardFrameIsRefused) {
 }
 
 TEST(Malformed, DlcAbove8IsRefused) {
-    can::CanFrame f = frame(SystemCommand, {0x00});
+    can::CanFrame f = malformedFrame(SystemCommand, {0x00});
     f.dlc = 9;
     EXPECT_EQ(why(f), "DLC above 8 or identifier above 29 bits");
 }
 
 TEST(Malformed, SpeedQueryAsAnswerIsRefused) {
-    EXPECT_EQ(why(frame(LocoAnswer, {0x01, 0x00, 0x48})),
+    EXPECT_EQ(why(malformedFrame(LocoAnswer, {0x01, 0x00, 0x48})),
               "Lok Speed 0x01 takes DLC 3 (query, D=0), 5 (Ziel-Id, speed) or 7 (Ziel-UID, speed)");
 }
 
 TEST(Malformed, FunctionValueWiderThanOneByteIsRefused) {
-    EXPECT_EQ(why(frame(LocoCommand, {0x04, 0x00, 0x48, 0x01, 0x01, 0x02, 0x00})),
+    EXPECT_EQ(why(malformedFrame(LocoCommand, {0x04, 0x00, 0x48, 0x01, 0x01, 0x02, 0x00})),
               "Lok Funktion 0x04: Wert is one byte (DB5); DB6-7 must be 0");
 }
 
 TEST(Malformed, DecoderSwitchWithoutPosIsRefused) {
-    EXPECT_EQ(why(frame(DecoderCommand, {0x03, 0x30, 0x05})), "dekoder schalten takes DLC 4 (Ziel-Id, Pos)");
+    EXPECT_EQ(why(malformedFrame(DecoderCommand, {0x03, 0x30, 0x05})),
+              "dekoder schalten takes DLC 4 (Ziel-Id, Pos)");
 }
 
 TEST(Malformed, EncoderQueryWithDlc2IsRefused) {
-    EXPECT_EQ(why(frame(EncoderCommand, {0x10, 0x2E})), "enkoder Abfrage takes DLC 1 or 3 with D=0");
+    EXPECT_EQ(why(malformedFrame(EncoderCommand, {0x10, 0x2E})), "enkoder Abfrage takes DLC 1 or 3 with D=0");
 }
 
 TEST(Malformed, UnknownSubCommandIsRefused) {
-    EXPECT_EQ(why(frame(DecoderCommand, {0x07})), "a sub-command group 0x88 does not define");
-    EXPECT_EQ(why(frame(EncoderCommand, {0x05})), "a sub-command group 0x89 does not define");
-    EXPECT_EQ(why(frame(ManagementCommand, {0x09})), "a sub-command group 0x90 does not define");
+    EXPECT_EQ(why(malformedFrame(DecoderCommand, {0x07})), "a sub-command group 0x88 does not define");
+    EXPECT_EQ(why(malformedFrame(EncoderCommand, {0x05})), "a sub-command group 0x89 does not define");
+    EXPECT_EQ(why(malformedFrame(ManagementCommand, {0x09})), "a sub-command group 0x90 does not define");
 }
 
 TEST(Malformed, PingWithDlc3IsRefused) {
-    EXPECT_EQ(why(frame(ManagementCommand, {0x00, 0x3A, 0x2E})),
+    EXPECT_EQ(why(malformedFrame(ManagementCommand, {0x00, 0x3A, 0x2E})),
               "Ping / Find take DLC 5 (D=0) or 7 (D=1); the bus-id assignment DLC 7");
 }
 
 TEST(Malformed, FlashDataWithDlc5IsRefused) {
-    EXPECT_EQ(why(frame(FlashCommand, {0x04, 0x2E, 0x01, 0x00, 0x01})), "Flash Data and Checksum take DLC 8");
+    EXPECT_EQ(why(malformedFrame(FlashCommand, {0x04, 0x2E, 0x01, 0x00, 0x01})),
+              "Flash Data and Checksum take DLC 8");
 }
 
 // Found by fuzz/orc_frame: DLC 8 gave five status bytes, shifted by 32 bits into a 32-bit value
 // (undefined behaviour) and encoded back as four. Status 0 ... 31 fits DLC 4 to 7.
 TEST(Malformed, EncoderStatusWithFiveStatusBytesIsRefused) {
-    EXPECT_EQ(why(frame(EncoderCommand, {0x10, 0x2E, 0x01, 0x01, 0x02, 0x03, 0x04, 0x05})),
+    EXPECT_EQ(why(malformedFrame(EncoderCommand, {0x10, 0x2E, 0x01, 0x01, 0x02, 0x03, 0x04, 0x05})),
               "enkoder Status takes DLC 4 to 7 (status 0 ... 31)");
-    EXPECT_EQ(why(frame(EncoderCommand | 0x10000, {0x10, 0x2E, 0x01, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF})),
+    EXPECT_EQ(why(malformedFrame(EncoderCommand | 0x10000, {0x10, 0x2E, 0x01, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF})),
               "enkoder Status takes DLC 4 to 7 (status 0 ... 31)");
-    EXPECT_EQ(why(frame(EncoderCommand, {0x10, 0x2E, 0x01, 0x01, 0x02, 0x03, 0x04})),
+    EXPECT_EQ(why(malformedFrame(EncoderCommand, {0x10, 0x2E, 0x01, 0x01, 0x02, 0x03, 0x04})),
               "decoded as orc.encoder.status");
 }
 
 // Found by fuzz/orc_frame: a single-function frame with DLC 8 decoded, and encoded back with DLC 7.
 TEST(Malformed, LocoFunctionWithDlc8IsRefused) {
-    EXPECT_EQ(why(frame(LocoCommand, {0x04, 0x00, 0x48, 0x01, 0x01, 0x00, 0x00, 0x00})),
+    EXPECT_EQ(why(malformedFrame(LocoCommand, {0x04, 0x00, 0x48, 0x01, 0x01, 0x00, 0x00, 0x00})),
               "Lok Funktion 0x04 takes DLC 4 (query, D=0) or 5-7 (FxNr, Wert)");
-    EXPECT_EQ(why(frame(LocoAnswer, {0x04, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00})),
+    EXPECT_EQ(why(malformedFrame(LocoAnswer, {0x04, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00})),
               "Lok Funktion 0x04 takes DLC 4 (query, D=0) or 5-7 (FxNr, Wert)");
-    EXPECT_EQ(why(frame(LocoCommand, {0x04, 0x00, 0x48, 0x01, 0x01, 0x00, 0x00})),
+    EXPECT_EQ(why(malformedFrame(LocoCommand, {0x04, 0x00, 0x48, 0x01, 0x01, 0x00, 0x00})),
               "decoded as orc.loco.function");
 }

@@ -16,13 +16,13 @@
 namespace stellwerk::sim {
 namespace {
 
-const StationLayout& demo() {
+const StationLayout& demoLayout() {
     static const StationLayout layout = StationLayout::demo();
     return layout;
 }
 
 std::optional<std::string> demoFile(std::string_view path) {
-    return demo().fileForPath(path);
+    return demoLayout().fileForPath(path);
 }
 
 HttpAnswer ask(const QByteArray& request) {
@@ -101,7 +101,7 @@ class HttpConfigServerTest : public ::testing::Test {
 protected:
     void SetUp() override { ASSERT_TRUE(server_.listen(QHostAddress::LocalHost, 0)); }
 
-    HttpConfigServer server_{demoFile, [](std::string_view name) { return demo().pictureFor(name); }};
+    HttpConfigServer server_{demoFile, [](std::string_view name) { return demoLayout().pictureFor(name); }};
 };
 
 TEST_F(HttpConfigServerTest, GetLokomotiveCs2ReturnsTheServedBytes) {
@@ -149,11 +149,11 @@ namespace stellwerk::sim {
 namespace {
 
 TEST(DemoPictures, EveryDemoLocomotiveHasASoundPicture) {
-    ASSERT_FALSE(demo().locomotives().locomotives.empty());
-    for (const cs2config::Locomotive& loco : demo().locomotives().locomotives) {
+    ASSERT_FALSE(demoLayout().locomotives().locomotives.empty());
+    for (const cs2config::Locomotive& loco : demoLayout().locomotives().locomotives) {
         const auto name = cs2config::picture::fileName(loco.icon);
         ASSERT_TRUE(name) << loco.name;
-        const auto picture = demo().pictureFor(*name);
+        const auto picture = demoLayout().pictureFor(*name);
         ASSERT_TRUE(picture) << *name;
         cs2config::picture::Size size;
         EXPECT_EQ(cs2config::picture::problem(*picture, &size), std::nullopt) << *name;
@@ -166,7 +166,7 @@ TEST_F(HttpConfigServerTest, APictureIsServedAsPng) {
     const QByteArray response = exchange(server_.port(), "GET /icons/BR%20218.png HTTP/1.0\r\n\r\n");
     EXPECT_TRUE(headerOf(response).startsWith("HTTP/1.0 200 OK\r\n"));
     EXPECT_TRUE(headerOf(response).contains("Content-Type: image/png\r\n"));
-    EXPECT_EQ(bodyOf(response).toStdString(), *demo().pictureFor("BR 218.png"));
+    EXPECT_EQ(bodyOf(response).toStdString(), *demoLayout().pictureFor("BR 218.png"));
 }
 
 TEST_F(HttpConfigServerTest, UnknownPicturesAndPathsBelowIconsAreRefused) {
@@ -214,7 +214,7 @@ TEST(EmbeddedStationWeb, ServesTheDemoPicturesOnItsOwnLoopbackPort) {
     EXPECT_NE(web.port(), station.tcpPort());
     const QByteArray response =
         exchange(std::uint16_t(web.port()), "GET /icons/ICE%203.png HTTP/1.0\r\n\r\n");
-    EXPECT_EQ(bodyOf(response).toStdString(), *demo().pictureFor("ICE 3.png"));
+    EXPECT_EQ(bodyOf(response).toStdString(), *demoLayout().pictureFor("ICE 3.png"));
 }
 
 } // namespace

@@ -102,7 +102,7 @@ TEST_F(SimulatedBusTest, APeerThatIsDestroyedLeavesTheBus) {
 }
 
 // A TCP client of the simulated CS2, collecting what it receives.
-bool isPingAnswer(const CanFrame& f) {
+bool isBusPingAnswer(const CanFrame& f) {
     return cs2::command(f) == 0x18 && cs2::isResponse(f);
 }
 
@@ -147,7 +147,7 @@ TEST(StationServerOnABus, ClientsSeeEveryPeerAndReachEveryPeer) {
     ASSERT_TRUE(waitFor([&] { return client.frames.size() == 1; }));
     EXPECT_EQ(client.frames[0], Low);
     client.send({ping()});
-    ASSERT_TRUE(waitFor([&] { return std::ranges::any_of(client.frames, isPingAnswer); }));
+    ASSERT_TRUE(waitFor([&] { return std::ranges::any_of(client.frames, isBusPingAnswer); }));
     EXPECT_EQ(handheld.received.size(), 2u) << "the client's ping and the station's answer";
     EXPECT_EQ(handheld.received.at(0), ping());
     EXPECT_EQ(server.counters().framesIn, 1u);

@@ -19,8 +19,8 @@ using namespace std::chrono_literals;
 using trackgraph::End;
 using trackgraph::test::DrawnPage;
 
-constexpr std::uint32_t Br218 = 0x4001, Ice = 0x4002, V100 = 0x0018;
-constexpr std::uint8_t Diverging = 0;
+constexpr std::uint32_t CrashingBr218 = 0x4001, Ice = 0x4002, V100 = 0x0018;
+constexpr std::uint8_t DivergingWay = 0;
 
 class TrainAccidentTest : public ::testing::Test {
 protected:
@@ -31,27 +31,27 @@ protected:
 
 TEST_F(TrainAccidentTest, TwoTrainsTouchingInABlockCollideAndBothStop) {
     // BR 218 from Block 1 westwards over W3 into Ausfahrt Ost, where the V 100 stands.
-    rig_.place({{Br218, 3, End::A}, {V100, 8, End::B}});
-    rig_.drive(Br218, 1000);
+    rig_.place({{CrashingBr218, 3, End::A}, {V100, 8, End::B}});
+    rig_.drive(CrashingBr218, 1000);
     rig_.run(4s);
     EXPECT_EQ(rig_.accidents,
               std::vector<std::string>{"collision: BR 218 Ost and V 100 2023 in block \"Ausfahrt Ost\""});
     EXPECT_EQ(rig_.movement->accidents(), (AccidentCounts{1, 0, 0}));
-    EXPECT_TRUE(rig_.at(Br218).derailed);
+    EXPECT_TRUE(rig_.at(CrashingBr218).derailed);
     EXPECT_TRUE(rig_.at(V100).derailed);
-    EXPECT_EQ(speedOnStation(Br218), 0) << "the station stopped it, as every controller sees";
+    EXPECT_EQ(speedOnStation(CrashingBr218), 0) << "the station stopped it, as every controller sees";
     // Derailed trains stay where they are and cause nothing more, whatever they are told.
-    const int front = rig_.at(Br218).frontMm;
-    rig_.drive(Br218, 1000);
+    const int front = rig_.at(CrashingBr218).frontMm;
+    rig_.drive(CrashingBr218, 1000);
     rig_.drive(V100, 1000);
     rig_.run(3s);
-    EXPECT_EQ(rig_.at(Br218).frontMm, front);
+    EXPECT_EQ(rig_.at(CrashingBr218).frontMm, front);
     EXPECT_EQ(rig_.movement->accidents().total(), 1);
 }
 
 TEST_F(TrainAccidentTest, ARunningTrainIntoADerailedOneIsAnotherCollision) {
-    rig_.place({{Br218, 3, End::A}, {V100, 8, End::B}, {Ice, 4, End::A}});
-    rig_.drive(Br218, 1000);
+    rig_.place({{CrashingBr218, 3, End::A}, {V100, 8, End::B}, {Ice, 4, End::A}});
+    rig_.drive(CrashingBr218, 1000);
     rig_.run(4s);
     ASSERT_EQ(rig_.movement->accidents().collisions, 1);
     rig_.drive(Ice, 1000); // from Block 2 westwards through Block 1 to W3
@@ -64,28 +64,28 @@ TEST_F(TrainAccidentTest, ARunningTrainIntoADerailedOneIsAnotherCollision) {
 }
 
 TEST_F(TrainAccidentTest, PlacedAgainADerailedTrainRunsAgain) {
-    rig_.place({{Br218, 3, End::A}, {V100, 8, End::B}});
-    rig_.drive(Br218, 1000);
+    rig_.place({{CrashingBr218, 3, End::A}, {V100, 8, End::B}});
+    rig_.drive(CrashingBr218, 1000);
     rig_.run(4s);
-    ASSERT_TRUE(rig_.at(Br218).derailed);
-    ASSERT_EQ(rig_.movement->place({Br218, 1, End::B}), std::nullopt);
-    EXPECT_FALSE(rig_.at(Br218).derailed);
-    rig_.drive(Br218, 1000);
+    ASSERT_TRUE(rig_.at(CrashingBr218).derailed);
+    ASSERT_EQ(rig_.movement->place({CrashingBr218, 1, End::B}), std::nullopt);
+    EXPECT_FALSE(rig_.at(CrashingBr218).derailed);
+    rig_.drive(CrashingBr218, 1000);
     rig_.run(1s);
-    EXPECT_EQ(rig_.at(Br218).frontMm, 1040);
+    EXPECT_EQ(rig_.at(CrashingBr218).frontMm, 1040);
 }
 
 // Through W3 round into the Abstellgleis, on into the Bw with W4 straight, to Lokschuppen 2's buffer stop.
 TEST_F(TrainAccidentTest, RunningIntoABufferStopDerailsTheTrain) {
-    rig_.place({{Br218, 9, End::B}});
-    rig_.drive(Br218, 1000);
+    rig_.place({{CrashingBr218, 9, End::B}});
+    rig_.drive(CrashingBr218, 1000);
     rig_.run(6s);
     EXPECT_EQ(rig_.accidents,
               std::vector<std::string>{"buffer stop: BR 218 Ost ran into the buffer stop beyond "
                                        "block \"Abstellgleis\" (page 'Bw', column 10, row 2)"});
     EXPECT_EQ(rig_.movement->accidents(), (AccidentCounts{0, 1, 0}));
-    EXPECT_TRUE(rig_.at(Br218).derailed);
-    EXPECT_EQ(speedOnStation(Br218), 0);
+    EXPECT_TRUE(rig_.at(CrashingBr218).derailed);
+    EXPECT_EQ(speedOnStation(CrashingBr218), 0);
     rig_.run(2s);
     EXPECT_EQ(rig_.movement->accidents().total(), 1) << "it does not run into it again";
 }
@@ -96,8 +96,8 @@ TEST_F(TrainAccidentTest, RunningOffAnOpenEndIsABufferStopAccident) {
         .contact(1, 0, 1, "Gleis")
         .straight(2, 3, 0); // the track ends east of column 3
     test::TrainRig rig(test::drawnLayout({page}));
-    rig.place({{Br218, 1, End::B}});
-    rig.drive(Br218, 1000);
+    rig.place({{CrashingBr218, 1, End::B}});
+    rig.drive(CrashingBr218, 1000);
     rig.run(2s);
     EXPECT_EQ(rig.accidents,
               std::vector<std::string>{"buffer stop: mfx:1 ran off the open end of the track "
@@ -108,23 +108,23 @@ TEST_F(TrainAccidentTest, RunningOffAnOpenEndIsABufferStopAccident) {
 // Out of Gleis 1 eastwards W2 is passed trailing on its straight leg: set round for Gleis 2, it is run
 // through.
 TEST_F(TrainAccidentTest, TrailingThroughATurnoutSetAgainstTheTrain) {
-    rig_.setTurnout(2, Diverging);
-    rig_.place({{Br218, 1, End::B}});
-    rig_.drive(Br218, 1000);
+    rig_.setTurnout(2, DivergingWay);
+    rig_.place({{CrashingBr218, 1, End::B}});
+    rig_.drive(CrashingBr218, 1000);
     rig_.run(3s);
     EXPECT_EQ(rig_.accidents,
               std::vector<std::string>{"turnout run through: BR 218 Ost ran through turnout 2 "
                                        "set against it (page 'Bahnhof', column 12, row 5)"});
     EXPECT_EQ(rig_.movement->accidents(), (AccidentCounts{0, 0, 1}));
-    EXPECT_TRUE(rig_.at(Br218).derailed);
+    EXPECT_TRUE(rig_.at(CrashingBr218).derailed);
 }
 
 // W1 switched when the front is 10 mm before it: it moves for 200 ms (magnetartikel.cs2 names no time).
 TEST_F(TrainAccidentTest, MeetingATurnoutWhileItMoves) {
-    rig_.place({{Br218, 7, End::A}});
-    rig_.drive(Br218, 1000);
+    rig_.place({{CrashingBr218, 7, End::A}});
+    rig_.drive(CrashingBr218, 1000);
     rig_.run(700ms); // 350 of the 360 mm to W1
-    rig_.setTurnout(1, Diverging);
+    rig_.setTurnout(1, DivergingWay);
     rig_.run(100ms);
     EXPECT_EQ(rig_.accidents,
               std::vector<std::string>{"turnout run through: BR 218 Ost ran into turnout 1 "
@@ -133,23 +133,23 @@ TEST_F(TrainAccidentTest, MeetingATurnoutWhileItMoves) {
 }
 
 TEST_F(TrainAccidentTest, ATurnoutSwitchedUnderTheTrain) {
-    rig_.place({{Br218, 7, End::A}});
-    rig_.drive(Br218, 1000);
+    rig_.place({{CrashingBr218, 7, End::A}});
+    rig_.drive(CrashingBr218, 1000);
     rig_.run(800ms); // the front 40 mm onto W1
     ASSERT_EQ(rig_.accidents, std::vector<std::string>{});
-    rig_.setTurnout(1, Diverging);
+    rig_.setTurnout(1, DivergingWay);
     rig_.run(100ms);
     EXPECT_EQ(rig_.accidents,
               std::vector<std::string>{"turnout run through: turnout 1 moved under BR 218 Ost "
                                        "(page 'Bahnhof', column 4, row 5)"});
-    EXPECT_TRUE(rig_.at(Br218).derailed);
+    EXPECT_TRUE(rig_.at(CrashingBr218).derailed);
 }
 
 TEST_F(TrainAccidentTest, ATurnoutSwitchedAfterTheTrainLeftItIsNoAccident) {
-    rig_.place({{Br218, 7, End::A}});
-    rig_.drive(Br218, 1000);
+    rig_.place({{CrashingBr218, 7, End::A}});
+    rig_.drive(CrashingBr218, 1000);
     rig_.run(2s); // the rear is 480 mm past W1, in Gleis 1
-    rig_.setTurnout(1, Diverging);
+    rig_.setTurnout(1, DivergingWay);
     rig_.run(1s);
     EXPECT_EQ(rig_.movement->accidents().total(), 0);
 }
@@ -159,10 +159,10 @@ TEST_F(TrainAccidentTest, ATurnoutWayLeadingNowhere) {
     DrawnPage page(0, "Test");
     page.bufferStop(0, 1, true).contact(1, 1, 1, "Zufahrt").accessory(2, 1, "linksweiche", 3, 5);
     page.straight(3, 3, 1).contact(4, 1, 2, "Gerade").bufferStop(5, 1, false);
-    test::TrainRig rig(test::drawnLayout({page}, test::locomotivesFile({{Br218, "BR 218 Ost"}})));
-    rig.setTurnout(5, Diverging);
-    rig.place({{Br218, 1, End::B}});
-    rig.drive(Br218, 1000);
+    test::TrainRig rig(test::drawnLayout({page}, test::locomotivesFile({{CrashingBr218, "BR 218 Ost"}})));
+    rig.setTurnout(5, DivergingWay);
+    rig.place({{CrashingBr218, 1, End::B}});
+    rig.drive(CrashingBr218, 1000);
     rig.run(2s);
     EXPECT_EQ(rig.accidents,
               std::vector<std::string>{"turnout run through: BR 218 Ost left turnout 5 where its "
@@ -174,7 +174,7 @@ TEST_F(TrainAccidentTest, ATurnoutWayLeadingNowhere) {
 // and the Köf standing; five simulated minutes without an accident, every contact of the loop passed.
 TEST_F(TrainAccidentTest, TheDemoRunsForMinutesWithoutAnAccident) {
     rig_.place(demoPlacements());
-    rig_.drive(Br218, 600);
+    rig_.drive(CrashingBr218, 600);
     rig_.drive(Ice, 600);
     rig_.contacts.events.clear();
     rig_.run(5min);

@@ -30,7 +30,7 @@ using namespace std::chrono_literals;
 using trackgraph::End;
 using trackgraph::test::DrawnPage;
 
-constexpr std::uint32_t Br218 = 0x4001;
+constexpr std::uint32_t PlacedBr218 = 0x4001;
 
 std::filesystem::path corpus(const std::string& relative) {
     return std::filesystem::path(STELLWERK_SHARED_DIR) / "corpus" / relative;
@@ -68,23 +68,23 @@ TEST(TrainPlacementText, WhatIsWrongIsSaid) {
 TEST(TrainPlacement, TheTrainFacesTheEndNamedAndRunsThereForward) {
     test::TrainRig rig(StationLayout::demo());
     rig.place({*parsePlacement("mfx:1=1:a")});
-    EXPECT_EQ(rig.at(Br218).towards, End::A);
-    EXPECT_EQ(rig.at(Br218).frontMm, 360);
-    rig.drive(Br218, 1000);
+    EXPECT_EQ(rig.at(PlacedBr218).towards, End::A);
+    EXPECT_EQ(rig.at(PlacedBr218).frontMm, 360);
+    rig.drive(PlacedBr218, 1000);
     rig.run(3s);
     EXPECT_EQ(rig.reached(), (std::vector<std::uint16_t>{1, 7})) << "on to Einfahrt West";
     test::TrainRig other(StationLayout::demo());
     other.place({*parsePlacement("mfx:1=1")});
-    EXPECT_EQ(other.at(Br218).towards, End::B);
-    EXPECT_EQ(other.at(Br218).frontMm, 540);
-    other.drive(Br218, 1000);
+    EXPECT_EQ(other.at(PlacedBr218).towards, End::B);
+    EXPECT_EQ(other.at(PlacedBr218).frontMm, 540);
+    other.drive(PlacedBr218, 1000);
     other.run(3s);
     EXPECT_EQ(other.reached(), (std::vector<std::uint16_t>{1, 8})) << "on to Ausfahrt Ost";
 }
 
 TEST(TrainPlacement, AContactNoBlockHoldsIsRefused) {
     test::TrainRig rig(StationLayout::demo());
-    rig.place({{Br218, 99, End::B}});
+    rig.place({{PlacedBr218, 99, End::B}});
     EXPECT_EQ(rig.movement->problems(),
               std::vector<std::string>{"mfx:1: no block of the track plan holds contact 99"});
     EXPECT_EQ(rig.movement->trainCount(), 0U);
@@ -125,16 +125,16 @@ TEST(TrainPlacement, KarbensTrainRunsThroughATurnoutSetAgainstIt) {
 // turnout 23 (b); the 200 mm train reaches back onto the turnout.
 TEST(TrainPlacement, TrainControlsTestPageRunsOffItsOpenEnd) {
     test::TrainRig rig(corpusLayout("bob123456678__TrainControl/cs2_sample_layout/config"));
-    rig.place({{Br218, 1031, End::A}});
-    EXPECT_EQ(rig.at(Br218).blocks, std::vector<int>{1});
+    rig.place({{PlacedBr218, 1031, End::A}});
+    EXPECT_EQ(rig.at(PlacedBr218).blocks, std::vector<int>{1});
     EXPECT_EQ(rig.movement->trainCount(), 1U);
-    rig.drive(Br218, 1000);
+    rig.drive(PlacedBr218, 1000);
     rig.run(1s);
     EXPECT_EQ(rig.accidents,
               std::vector<std::string>{"buffer stop: mfx:1 ran off the open end of the track "
                                        "beyond block \"Block 1031\" (page '5 - Test', column 4, "
                                        "row 6)"});
-    EXPECT_TRUE(rig.at(Br218).derailed);
+    EXPECT_TRUE(rig.at(PlacedBr218).derailed);
 }
 
 // The track graph tests' overview case: the Strecke (contact 5) runs on over an arrow to the Bahnhof (contact
@@ -155,12 +155,12 @@ TEST(TrainPlacement, ATrainCrossesFromPageToPageBesideAnOverview) {
         .bufferStop(5, 0, false);
     test::TrainRig rig(test::drawnLayout({strecke, bahnhof, overview}));
     ASSERT_EQ(rig.station.layout().trackPlan().pages.size(), 3U);
-    rig.place({{Br218, 5, End::B}});
+    rig.place({{PlacedBr218, 5, End::B}});
     ASSERT_EQ(rig.movement->graph().blocks().size(), 2U);
-    rig.drive(Br218, 1000);
+    rig.drive(PlacedBr218, 1000);
     rig.run(1500ms);
     EXPECT_EQ(rig.contacts.events, (std::vector<test::ContactEvent>{{5, true}, {5, false}, {6, true}}));
-    EXPECT_EQ(rig.blockName(rig.at(Br218).block), "Gleis");
+    EXPECT_EQ(rig.blockName(rig.at(PlacedBr218).block), "Gleis");
     rig.run(2s);
     EXPECT_EQ(rig.accidents,
               std::vector<std::string>{"buffer stop: mfx:1 ran into the buffer stop beyond block "

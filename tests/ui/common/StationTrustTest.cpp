@@ -32,13 +32,13 @@ using SimPower = sim::SimulatedStation::Power;
 
 namespace {
 
-constexpr quint32 V100 = 0x18; // a locomotive of the demo layout
+constexpr quint32 TrustedV100 = 0x18; // a locomotive of the demo layout
 
 class StationTrustTest : public test::DeskOnTestStation {
 protected:
     void SetUp() override {
         DeskOnTestStation::SetUp();
-        throttle = window->throttlePanel()->addThrottle(V100);
+        throttle = window->throttlePanel()->addThrottle(TrustedV100);
         ASSERT_NE(throttle, nullptr);
     }
     QString powerText() const {

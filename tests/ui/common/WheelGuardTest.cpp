@@ -22,7 +22,7 @@ namespace {
 
 // One notch down, as a mouse sends it: spontaneous, so that Qt gives wheel focus and passes an ignored
 // wheel on to the parents as it does for a real one.
-void wheelDown(QWidget* target) {
+void turnWheelDown(QWidget* target) {
     const QPointF local = QRectF(target->rect()).center();
     QWheelEvent wheel(local, target->mapToGlobal(local), QPoint(),
                       QPoint(0, -QWheelEvent::DefaultDeltasPerStep), Qt::NoButton, Qt::NoModifier,
@@ -76,7 +76,7 @@ protected:
 
 TEST_F(WheelGuardTest, WithoutTheGuardTheWheelChangesAnUnfocusedPicker) {
     showAndFocusOther();
-    wheelDown(picker);
+    turnWheelDown(picker);
     EXPECT_EQ(picker->currentIndex(), 1) << "Qt's own behaviour, which the guard is there to stop";
     EXPECT_FALSE(WheelGuard::guards(picker));
 }
@@ -85,16 +85,16 @@ TEST_F(WheelGuardTest, UnfocusedControlsIgnoreTheWheelAndThePanelScrolls) {
     WheelGuard::guard(panel);
     showAndFocusOther();
     int before = scrolled();
-    wheelDown(picker);
+    turnWheelDown(picker);
     EXPECT_EQ(picker->currentIndex(), 0);
     EXPECT_FALSE(picker->hasFocus()) << "the wheel gives the picker no focus";
     EXPECT_GT(scrolled(), before) << "the scroll area took the wheel";
     before = scrolled();
-    wheelDown(slider);
+    turnWheelDown(slider);
     EXPECT_EQ(slider->value(), 0);
     EXPECT_GT(scrolled(), before);
     before = scrolled();
-    wheelDown(spin);
+    turnWheelDown(spin);
     EXPECT_EQ(spin->value(), 0);
     EXPECT_GT(scrolled(), before);
 }
@@ -104,17 +104,17 @@ TEST_F(WheelGuardTest, AFocusedControlStillTakesTheWheel) {
     showAndFocusOther();
     picker->setFocus();
     const int before = scrolled();
-    wheelDown(picker);
+    turnWheelDown(picker);
     EXPECT_EQ(picker->currentIndex(), 1);
     spin->setFocus();
-    wheelDown(spin);
+    turnWheelDown(spin);
     EXPECT_EQ(spin->value(), 0) << "down from the lowest value stays there";
     spin->setValue(10);
-    wheelDown(spin);
+    turnWheelDown(spin);
     EXPECT_EQ(spin->value(), 9);
     slider->setFocus();
     slider->setValue(50);
-    wheelDown(slider);
+    turnWheelDown(slider);
     EXPECT_LT(slider->value(), 50);
     EXPECT_EQ(scrolled(), before) << "a focused control keeps the wheel to itself";
 }
@@ -127,7 +127,7 @@ TEST_F(WheelGuardTest, AControlAddedLaterIsGuardedToo) {
     showAndFocusOther();
     EXPECT_TRUE(WheelGuard::guards(later));
     EXPECT_NE(later->focusPolicy(), Qt::WheelFocus);
-    wheelDown(later);
+    turnWheelDown(later);
     EXPECT_EQ(later->currentIndex(), 0);
     EXPECT_FALSE(later->hasFocus());
 }

@@ -24,7 +24,7 @@ using State = connection::StationConnection::State;
 
 namespace {
 
-constexpr quint32 V100 = 0x18;
+constexpr quint32 EditedV100 = 0x18;
 const QString Renamed = QStringLiteral("V 100 Museum");
 
 // Answers whatever opens modally next, one answer per window, and notes what was asked.
@@ -76,7 +76,7 @@ protected:
         ASSERT_TRUE(panel->applyForm()) << panel->messageText().toStdString();
         ASSERT_TRUE(panel->hasUnsavedEdits());
     }
-    QString v100Name() const { return railway()->locomotive(V100)->name(); }
+    QString v100Name() const { return railway()->locomotive(EditedV100)->name(); }
 };
 
 } // namespace

@@ -8,6 +8,7 @@
 #include "monitor/BusMonitorPanel.h"
 #include "monitor/BusMonitorSettings.h"
 #include "shell/Translations.h"
+#include "support/MonitorTestSupport.h"
 
 #include <QLabel>
 #include <QSignalSpy>
@@ -21,11 +22,9 @@ using namespace stellwerk;
 using namespace stellwerk::ui;
 using Direction = BusMonitorModel::Direction;
 
-namespace {
+using test::frame;
 
-can::CanFrame frame(const char* text) {
-    return can::parseFrame(text).value().frame;
-}
+namespace {
 
 // loco.speed DCC 3 speed 288, loco.speed MM2 24 speed 0, loco.direction DCC 3, system.stop.
 std::vector<can::CanFrame> mixedFrames() {

@@ -21,7 +21,7 @@
 
 using namespace stellwerk;
 using namespace stellwerk::ui;
-using State = BusMonitorReplay::State;
+using ReplayState = BusMonitorReplay::State;
 
 namespace {
 
@@ -82,7 +82,7 @@ protected:
         return path;
     }
     bool waitUntilFinished(const BusMonitorReplay& replay) {
-        return QTest::qWaitFor([&] { return replay.state() == State::Finished; }, ReplayMs);
+        return QTest::qWaitFor([&] { return replay.state() == ReplayState::Finished; }, ReplayMs);
     }
 
     QTemporaryDir dir;
@@ -155,7 +155,7 @@ TEST_F(BusMonitorReplayTest, PauseHoldsTheRestBackUntilResumeAndStopEndsIt) {
     ASSERT_EQ(replay.start(write(timedLog())), QString());
     ASSERT_TRUE(QTest::qWaitFor([&] { return !arrivals.texts.empty(); }, ReplayMs));
     replay.pause();
-    EXPECT_EQ(replay.state(), State::Paused);
+    EXPECT_EQ(replay.state(), ReplayState::Paused);
     const std::size_t before = arrivals.texts.size();
     QTest::qWait(1200); // longer than the whole log
     EXPECT_EQ(arrivals.texts.size(), before);
@@ -169,7 +169,7 @@ TEST_F(BusMonitorReplayTest, PauseHoldsTheRestBackUntilResumeAndStopEndsIt) {
     const std::size_t stopped = arrivals.texts.size();
     QTest::qWait(1200);
     EXPECT_EQ(arrivals.texts.size(), stopped);
-    EXPECT_EQ(replay.state(), State::Idle);
+    EXPECT_EQ(replay.state(), ReplayState::Idle);
     EXPECT_GE(states.count(), 5); // playing, paused, playing, finished, playing, idle
 }
 
@@ -201,7 +201,7 @@ TEST_F(BusMonitorReplayTest, TimeStampsWithFewerDigitsAreReadAsFractions) {
 TEST_F(BusMonitorReplayTest, AMissingFileIsAnErrorAndNothingPlays) {
     BusMonitorReplay replay;
     EXPECT_FALSE(replay.start(dir.filePath(QStringLiteral("missing.log"))).isEmpty());
-    EXPECT_EQ(replay.state(), State::Idle);
+    EXPECT_EQ(replay.state(), ReplayState::Idle);
 }
 
 // The panel: a replay fills the table in the log's order with the log's times, and live frames wait
@@ -214,7 +214,7 @@ TEST_F(BusMonitorReplayTest, PanelShowsTheReplayedFramesInsteadOfLiveOnes) {
     ASSERT_EQ(panel.openLog(write(timedLog())), QString());
     emit station.buses().busFramesSeen(0, {can::parseFrame("00004711 5 00 00 00 00 01").value().frame},
                                        false);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.replay()->state() == State::Finished; }, ReplayMs));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.replay()->state() == ReplayState::Finished; }, ReplayMs));
     panel.model()->flush();
     const BusMonitorModel& model = *panel.model();
     ASSERT_EQ(model.rowCount(), 5);

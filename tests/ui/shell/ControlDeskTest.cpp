@@ -37,7 +37,7 @@ namespace {
 
 constexpr int CommandMs = 5000;
 
-void clearSettings() {
+void clearDeskSettings() {
     QSettings(QStringLiteral("Stellwerk"), QStringLiteral("Stellwerk")).clear();
 }
 
@@ -45,10 +45,10 @@ void clearSettings() {
 class ControlDeskTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        clearSettings();
+        clearDeskSettings();
         ASSERT_TRUE(translations.select(Language::English));
     }
-    void TearDown() override { clearSettings(); }
+    void TearDown() override { clearDeskSettings(); }
 
     Translations translations;
 };

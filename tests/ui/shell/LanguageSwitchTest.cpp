@@ -24,7 +24,7 @@ using namespace stellwerk::ui;
 
 namespace {
 
-constexpr quint32 Br218 = 0x4001; // a locomotive of the demo layout
+constexpr quint32 SwitchedBr218 = 0x4001; // a locomotive of the demo layout
 
 // The German translation file: each English source with its German translation where they differ, and
 // every text of either language (a word may be both: "Register").
@@ -71,7 +71,7 @@ std::optional<QRegularExpression> patternOf(const QString& source) {
                               QRegularExpression::DotMatchesEverythingOption);
 }
 
-bool isShown(const QWidget* widget) {
+bool isOnScreen(const QWidget* widget) {
     return widget->isVisible() && !widget->visibleRegion().isEmpty();
 }
 
@@ -112,7 +112,7 @@ protected:
             texts.emplace_back(dock->windowTitle(),
                                QStringLiteral("the title of %1").arg(panel->objectName()));
             for (const QWidget* widget : panel->findChildren<QWidget*>())
-                if (isShown(widget))
+                if (isOnScreen(widget))
                     for (const QString& text : textsOf(widget))
                         texts.emplace_back(text.trimmed(),
                                            QStringLiteral("%1 %2 in %3")
@@ -120,7 +120,7 @@ protected:
                                                     widget->objectName(), panel->objectName()));
         }
         for (const QWidget* widget : window->findChildren<QWidget*>()) // the tool bars and the status bar
-            if (isShown(widget) && !insideDock(widget))
+            if (isOnScreen(widget) && !insideDock(widget))
                 for (const QString& text : textsOf(widget))
                     texts.emplace_back(text.trimmed(),
                                        QStringLiteral("%1 %2 in the window")
@@ -175,7 +175,7 @@ QStringList LanguageSwitchTest::textsLeftBehind(const std::map<QString, QString>
 TEST_F(LanguageSwitchTest, EveryTextOnTheDeskFollowsASwitchToGerman) {
     const TranslationFile file = germanTranslations();
     ASSERT_GT(file.germanOf.size(), 300u) << "the German translation file is read";
-    ASSERT_NE(window->throttlePanel()->addThrottle(Br218), nullptr);
+    ASSERT_NE(window->throttlePanel()->addThrottle(SwitchedBr218), nullptr);
     ASSERT_TRUE(translations.select(Language::German));
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
     QTest::qWait(100);
@@ -189,7 +189,7 @@ TEST_F(LanguageSwitchFromGermanTest, EveryTextOnTheDeskFollowsASwitchToEnglish) 
     std::map<QString, QString> fromGerman;
     for (const auto& [english, german] : file.germanOf)
         fromGerman[german] = english;
-    ASSERT_NE(window->throttlePanel()->addThrottle(Br218), nullptr);
+    ASSERT_NE(window->throttlePanel()->addThrottle(SwitchedBr218), nullptr);
     ASSERT_TRUE(translations.select(Language::English));
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
     QTest::qWait(100);

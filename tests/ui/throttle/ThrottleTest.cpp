@@ -43,11 +43,11 @@ using Control = model::Railway::LocomotiveControl;
 
 namespace {
 
-constexpr int CommandMs = 5000;
-constexpr quint32 V100 = 0x18;     // V 100 2023, MM2 24, tachomax 100: stands still in the demo
-constexpr quint32 Br218 = 0x4001;  // BR 218 Ost, mfx, tachomax 140
-constexpr int Horn = 2;            // V 100's F2: icon 138, the horn, momentary
-constexpr int SendIntervalMs = 60; // longer than a throttle waits before it sends a dragged speed
+constexpr int ThrottleCommandMs = 5000;
+constexpr quint32 DrivenV100 = 0x18; // V 100 2023, MM2 24, tachomax 100: stands still in the demo
+constexpr quint32 Br218 = 0x4001;    // BR 218 Ost, mfx, tachomax 140
+constexpr int Horn = 2;              // V 100's F2: icon 138, the horn, momentary
+constexpr int SendIntervalMs = 60;   // longer than a throttle waits before it sends a dragged speed
 
 connection::ConnectionSettings impatient() {
     connection::ConnectionSettings settings;
@@ -119,15 +119,15 @@ protected:
         ASSERT_TRUE(test::waitForState(connection, State::Ready));
         ASSERT_TRUE(test::waitForState(other, State::Ready));
         ASSERT_NE(railways.railway(), nullptr);
-        throttle.setLocomotive(V100);
+        throttle.setLocomotive(DrivenV100);
         throttle.show();
     }
 
-    const model::Locomotive& mine() const { return *railways.railway()->locomotive(V100); }
-    const model::Locomotive& seenByOther() const { return *otherRailways.railway()->locomotive(V100); }
+    const model::Locomotive& mine() const { return *railways.railway()->locomotive(DrivenV100); }
+    const model::Locomotive& seenByOther() const { return *otherRailways.railway()->locomotive(DrivenV100); }
     QToolButton* key(int function) const { return throttle.functions()->button(function); }
     static bool waitFor(const std::function<bool()>& condition) {
-        return QTest::qWaitFor(condition, CommandMs);
+        return QTest::qWaitFor(condition, ThrottleCommandMs);
     }
 
     Translations translations;
@@ -225,12 +225,12 @@ TEST_F(ThrottleTest, StopLocoStopsOnlyThisLocomotive) {
 }
 
 TEST_F(ThrottleTest, WhatAnotherControllerDoesShowsInTheThrottle) {
-    otherRailways.railway()->setSpeed(V100, 300);
+    otherRailways.railway()->setSpeed(DrivenV100, 300);
     ASSERT_TRUE(waitFor([&] { return throttle.speedSlider()->value() == 30; }));
     EXPECT_EQ(throttle.speedText(), QStringLiteral("30 km/h"));
-    otherRailways.railway()->setFunction(V100, 0, true);
+    otherRailways.railway()->setFunction(DrivenV100, 0, true);
     ASSERT_TRUE(waitFor([&] { return key(0)->isChecked(); }));
-    otherRailways.railway()->setDirection(V100, cs2::Direction::Backward);
+    otherRailways.railway()->setDirection(DrivenV100, cs2::Direction::Backward);
     ASSERT_TRUE(waitFor([&] { return throttle.directionButton()->text() == QStringLiteral("◀ Backward"); }));
 }
 
@@ -247,7 +247,7 @@ TEST_F(ThrottleTest, ACommandTheStationDoesNotAcknowledgeIsMarked) {
     // the railway itself (another panel, a route), and the throttle still marks it.
     ASSERT_TRUE(waitFor([&] { return !railways.railway()->isStateReported(); }));
     EXPECT_FALSE(key(0)->isEnabled());
-    railways.railway()->toggleFunction(V100, 0);
+    railways.railway()->toggleFunction(DrivenV100, 0);
     ASSERT_TRUE(waitFor([&] { return throttle.isUnacknowledged(Control::Function, 0); }));
     EXPECT_TRUE(key(0)->property("unacknowledged").toBool());
     EXPECT_EQ(key(0)->isChecked(), light) << "the key still shows what the station confirmed";
@@ -298,7 +298,7 @@ TEST_F(ThrottleTest, AFailedSpeedStaysOutlinedUntilTheUserMovesTheSliderAgain) {
     deafen(testStation);
     throttle.speedSlider()->setValue(40);
     ASSERT_TRUE(waitFor([&] { return throttle.isUnacknowledged(Control::Speed); }));
-    emit railways.railway()->locomotivesChanged({V100}); // the model shows the confirmed state again
+    emit railways.railway()->locomotivesChanged({DrivenV100}); // the model shows the confirmed state again
     emit railways.railway()->loaded();
     EXPECT_TRUE(throttle.isUnacknowledged(Control::Speed)) << "not cleared by the model";
     throttle.speedSlider()->setValue(20);
@@ -347,7 +347,7 @@ TEST_F(ThrottleTest, AnAcknowledgedCommandClearsTheMark) {
     // The railway reports a failure and later an acknowledgement for the same control, as it does when
     // the station misses one command and answers the next.
     model::Railway* railway = railways.railway();
-    emit railway->locomotiveCommandFailed(V100, Control::Speed, -1, QStringLiteral("no answer"));
+    emit railway->locomotiveCommandFailed(DrivenV100, Control::Speed, -1, QStringLiteral("no answer"));
     ASSERT_TRUE(throttle.isUnacknowledged(Control::Speed));
     throttle.speedSlider()->setValue(20);
     ASSERT_TRUE(waitFor([&] { return mine().speed() == 200; }));
@@ -399,7 +399,7 @@ TEST_F(ThrottleTest, ChangingTheLocomotiveWhileItRunsAsksFirstAndEscapeKeepsIt) 
     ASSERT_TRUE(waitFor([&] { return mine().speed() == 300; }));
     QuestionAnswer escape([](QMessageBox* box) { QTest::keyClick(box, Qt::Key_Escape); });
     pick(throttle, Br218);
-    EXPECT_EQ(throttle.locomotive(), V100) << "Escape keeps the old locomotive";
+    EXPECT_EQ(throttle.locomotive(), DrivenV100) << "Escape keeps the old locomotive";
     EXPECT_EQ(throttle.locomotiveChoice()->currentText(), QStringLiteral("V 100 2023 (MM2 24)"));
     EXPECT_TRUE(escape.asked.startsWith(
         QStringLiteral("V 100 2023 is running (30 km/h). Drive BR 218 Ost with this throttle instead?")))
@@ -407,7 +407,7 @@ TEST_F(ThrottleTest, ChangingTheLocomotiveWhileItRunsAsksFirstAndEscapeKeepsIt) 
 
     QuestionAnswer no([](QMessageBox* box) { buttonNamed(box, QStringLiteral("Keep V 100 2023"))->click(); });
     pick(throttle, Br218);
-    EXPECT_EQ(throttle.locomotive(), V100);
+    EXPECT_EQ(throttle.locomotive(), DrivenV100);
     EXPECT_FALSE(no.asked.isEmpty());
 
     QuestionAnswer yes(
@@ -454,7 +454,7 @@ TEST_F(ThrottleTest, SpaceAndEscapeStayWithTheWindow) {
     QWidget window;
     auto* inside = new ThrottleWidget(&window);
     inside->setRailway(railways.railway());
-    inside->setLocomotive(V100);
+    inside->setLocomotive(DrivenV100);
     QShortcut stop(QKeySequence(Qt::Key_Space), &window);
     QShortcut escape(QKeySequence(Qt::Key_Escape), &window);
     QSignalSpy stops(&stop, &QShortcut::activated);
@@ -483,14 +483,14 @@ TEST_F(ThrottlePanelTest, RemembersWhichLocomotivesWereOpen) {
         EXPECT_TRUE(panel.throttles().isEmpty());
         panel.setRailway(railways.railway());
         panel.addThrottle(Br218);
-        panel.addThrottle(V100);
+        panel.addThrottle(DrivenV100);
         ThrottleWidget* third = panel.addThrottle();
         panel.removeThrottle(panel.throttles().first());
         third->setLocomotive(Br218);
     }
     ThrottlePanel restored;
     ASSERT_EQ(restored.throttles().size(), 2);
-    EXPECT_EQ(restored.throttles()[0]->locomotive(), V100);
+    EXPECT_EQ(restored.throttles()[0]->locomotive(), DrivenV100);
     EXPECT_EQ(restored.throttles()[1]->locomotive(), Br218);
     QComboBox* first = restored.throttles()[0]->locomotiveChoice();
     EXPECT_EQ(first->currentText(), QStringLiteral("Locomotive 0x18 (waiting for the station)"));
@@ -521,7 +521,7 @@ TEST_F(ThrottlePanelTest, ANewcomerIsOfferedTheRunningLocomotivesToDrive) {
     panel.show();
     ASSERT_EQ(panel.driveOffers().size(), ThrottlePanel::MaximumOffers);
     // A running locomotive comes first (the list starts with BR 218, which stands here).
-    railways.railway()->setSpeed(V100, 300);
+    railways.railway()->setSpeed(DrivenV100, 300);
     ASSERT_TRUE(waitFor([&] {
         return panel.driveOffers()[0]->text() == QStringLiteral("Drive V 100 2023 (running)");
     })) << panel.driveOffers()[0]->text().toStdString();
@@ -532,7 +532,7 @@ TEST_F(ThrottlePanelTest, ANewcomerIsOfferedTheRunningLocomotivesToDrive) {
 
     panel.driveOffers()[0]->click();
     ASSERT_EQ(panel.throttles().size(), 1);
-    EXPECT_EQ(panel.throttles().first()->locomotive(), V100);
+    EXPECT_EQ(panel.throttles().first()->locomotive(), DrivenV100);
     EXPECT_TRUE(panel.driveOffers().isEmpty()) << "a throttle is open: no more offers";
     panel.removeThrottle(panel.throttles().first());
     EXPECT_EQ(panel.driveOffers().size(), ThrottlePanel::MaximumOffers) << "offered again";
@@ -571,7 +571,7 @@ TEST_F(ThrottlePanelTest, AltAndANumberPutTheKeyboardOnThatThrottle) {
     ThrottlePanel panel;
     panel.setRailway(railways.railway());
     panel.addThrottle(Br218);
-    panel.addThrottle(V100);
+    panel.addThrottle(DrivenV100);
     panel.show();
     panel.activateWindow();
     ASSERT_TRUE(QTest::qWaitForWindowActive(&panel));
@@ -643,18 +643,18 @@ TEST_F(ThrottlePanelTest, ThreeThrottlesStandSideBySideUnclipped) {
     panel.setPictures(&book);
     panel.setRailway(railways.railway());
     constexpr quint32 Ice3 = 0x4002;
-    for (const quint32 loco : {Br218, Ice3, V100})
+    for (const quint32 loco : {Br218, Ice3, DrivenV100})
         panel.addThrottle(loco);
     model::Railway* railway = railways.railway();
     railway->setSpeed(Br218, 640);
     railway->setFunction(Br218, 0, true);
     railway->setFunction(Br218, 1, true);
-    railway->setFunction(V100, 0, true);
+    railway->setFunction(DrivenV100, 0, true);
     railway->setDirection(Ice3, cs2::Direction::Backward);
     panel.resize(1060, 720);
     panel.show();
     ASSERT_TRUE(waitFor([&] {
-        return railway->locomotive(Br218)->speed() == 640 && railway->locomotive(V100)->functionOn(0);
+        return railway->locomotive(Br218)->speed() == 640 && railway->locomotive(DrivenV100)->functionOn(0);
     }));
     ASSERT_TRUE(waitFor(
         [&] { return panel.throttles()[1]->directionButton()->text() == QStringLiteral("◀ Backward"); }));
@@ -706,7 +706,7 @@ TEST(FunctionIconsTable, EveryDrawingIsEmbeddedAndReadable) {
 }
 
 // The contrast of the pixel of `key` that stands out most from the key's fill: its drawing (or text).
-double strongestContrast(QToolButton* key) {
+double strongestKeyContrast(QToolButton* key) {
     const QImage image = key->grab().toImage();
     const QColor fill = mostFrequentColour(image);
     double strongest = 1.0;
@@ -726,7 +726,7 @@ TEST_F(ThrottleTest, FunctionIconsLookTheSameAfterALanguageSwitch) {
     ASSERT_NE(key(Sound), nullptr);
     ASSERT_FALSE(key(Sound)->isChecked());
     const QImage english = throttle.functions()->grab().toImage();
-    EXPECT_GE(strongestContrast(key(Sound)), Contrast::ForText) << "the drawing reads on its key";
+    EXPECT_GE(strongestKeyContrast(key(Sound)), Contrast::ForText) << "the drawing reads on its key";
     ASSERT_TRUE(translations.select(Language::German));
     QEvent change(QEvent::LanguageChange);
     QApplication::sendEvent(throttle.functions(), &change);
@@ -740,19 +740,19 @@ TEST_F(ThrottleTest, FunctionIconsLookTheSameAfterALanguageSwitch) {
 // Greyed keys (state not reported) are paler than usable ones, never darker, and still readable.
 TEST_F(ThrottleTest, GreyedFunctionKeysArePalerYetReadable) {
     constexpr int Sound = 1;
-    railways.railway()->setFunction(V100, 0, true);
+    railways.railway()->setFunction(DrivenV100, 0, true);
     ASSERT_TRUE(waitFor([&] { return key(0)->isChecked(); }));
     throttle.resize(throttle.sizeHint());
     throttle.show();
     QTest::qWait(20);
-    const double usableOff = strongestContrast(key(Sound));
+    const double usableOff = strongestKeyContrast(key(Sound));
     const QColor usableOnFill = mostFrequentColour(key(0)->grab().toImage());
     testStation.stop();
     ASSERT_TRUE(waitFor([&] { return !railways.railway()->isStateReported(); }));
     ASSERT_FALSE(key(Sound)->isEnabled());
     ASSERT_TRUE(key(0)->isChecked()) << "on, as the station last said";
     QTest::qWait(20);
-    const double greyedOff = strongestContrast(key(Sound));
+    const double greyedOff = strongestKeyContrast(key(Sound));
     EXPECT_LT(greyedOff, usableOff) << "paler than a usable key";
     EXPECT_GE(greyedOff, Contrast::ForText) << "yet readable";
     const QColor button = throttle.functions()->palette().color(QPalette::Active, QPalette::Button);
@@ -760,7 +760,7 @@ TEST_F(ThrottleTest, GreyedFunctionKeysArePalerYetReadable) {
     EXPECT_LT(Contrast::ratio(greyedOnFill, button), Contrast::ratio(usableOnFill, button))
         << "a greyed key that is on stands out less than a usable one: " << greyedOnFill.name().toStdString()
         << " " << usableOnFill.name().toStdString();
-    EXPECT_GE(strongestContrast(key(0)), Contrast::ForText);
+    EXPECT_GE(strongestKeyContrast(key(0)), Contrast::ForText);
     if (const QString dir = qEnvironmentVariable("STELLWERK_SCREENSHOT_DIR"); !dir.isEmpty()) {
         EXPECT_TRUE(throttle.grab().save(dir + QStringLiteral("/throttle-not-reported.png")));
     }

@@ -40,7 +40,7 @@ using trackgraph::End;
 
 namespace {
 
-constexpr std::uint32_t Br218 = 0x4001, Ice = 0x4002, V100 = 0x0018;
+constexpr std::uint32_t AutoBr218 = 0x4001, Ice = 0x4002, V100 = 0x0018;
 // The demo's blocks (tests/core/automation/AutomationTestSupport.h).
 constexpr int Gleis2 = 1, Gleis1 = 4, AusfahrtOst = 5, Block1 = 6, Block3 = 8;
 
@@ -174,9 +174,9 @@ TEST_F(TrackPlanAutomationTest, APlacedTrainsBlockIsSolidWithItsNameOnTheTab) {
     runAutomation();
     EXPECT_TRUE(panel->blockLegend()->isVisible());
     EXPECT_TRUE(panel->pageView(0)->blocks().isEmpty()) << "free blocks are drawn only with Blocks on";
-    ASSERT_EQ(automation->placeInBlock(Br218, Gleis1, End::B), std::nullopt);
+    ASSERT_EQ(automation->placeInBlock(AutoBr218, Gleis1, End::B), std::nullopt);
     QCoreApplication::processEvents();
-    EXPECT_EQ(panel->planAutomation().trains().trainIn(Gleis1), Br218);
+    EXPECT_EQ(panel->planAutomation().trains().trainIn(Gleis1), AutoBr218);
     EXPECT_EQ(shadeShown(Gleis1), BlockShade::Occupied);
     EXPECT_EQ(nameShown(Gleis1), QStringLiteral("Gleis 1 · BR 218 Ost"));
     EXPECT_EQ(shown(Gleis2), nullptr) << "a free block stays undrawn";
@@ -206,7 +206,7 @@ TEST_F(TrackPlanAutomationTest, APlacedTrainsBlockIsSolidWithItsNameOnTheTab) {
 
 TEST_F(TrackPlanAutomationTest, AReservedWayIsHatchedWithTheTrainsNameAndCoversItsTurnouts) {
     setContact(1, true);
-    runAutomation({{Br218, 1, End::B}});
+    runAutomation({{AutoBr218, 1, End::B}});
     automation->start(std::chrono::milliseconds(0));
     automation->tick();
     ASSERT_TRUE(QTest::qWaitFor([&] { return shadeShown(Block1) == BlockShade::Reserved; }, 3000));
@@ -232,7 +232,7 @@ TEST_F(TrackPlanAutomationTest, AReservedWayIsHatchedWithTheTrainsNameAndCoversI
 
 TEST_F(TrackPlanAutomationTest, AnUnknownOccupantIsCrossHatchedAndAGhostOnAWayShowsTheFault) {
     setContact(1, true);
-    runAutomation({{Br218, 1, End::B}});
+    runAutomation({{AutoBr218, 1, End::B}});
     automation->start(std::chrono::milliseconds(0));
     setContact(5, true); // Block 3: nobody can be there
     ASSERT_TRUE(QTest::qWaitFor([&] { return shadeShown(Block3) == BlockShade::Ghost; }, 3000));
@@ -300,9 +300,9 @@ TEST_F(TrackPlanAutomationTest, APlaceRefusedIsSaidInTheUsersWords) {
     menuAction(menu, QStringLiteral("placeTrainAction"))->trigger();
     auto* dialog = panel->findChild<PlaceTrainDialog*>();
     ASSERT_NE(dialog, nullptr);
-    ASSERT_TRUE(dialog->chooseLocomotive(Br218));
+    ASSERT_TRUE(dialog->chooseLocomotive(AutoBr218));
     dialog->accept();
-    EXPECT_EQ(automation->dispatcher().train(Br218), nullptr);
+    EXPECT_EQ(automation->dispatcher().train(AutoBr218), nullptr);
     EXPECT_EQ(panel->problemText(),
               QStringLiteral("ICE 3 Velaro is in this block already: remove it first."));
 }
@@ -316,13 +316,13 @@ TEST_F(TrackPlanAutomationTest, ALocomotiveDroppedOnABlockIsPlacedFacingTheNeare
     for (const End end : {End::A, End::B}) {
         const std::optional<model::TileRef> last = panel->graph()->planTile(gleis2.end(end).tile);
         ASSERT_TRUE(last && last->page == 0);
-        std::unique_ptr<QMimeData> data(LocomotiveMime::make(Br218, QStringLiteral("BR 218 Ost")));
+        std::unique_ptr<QMimeData> data(LocomotiveMime::make(AutoBr218, QStringLiteral("BR 218 Ost")));
         const QPoint point = view->tileRect(last->tile).center();
         QDropEvent drop(QPointF(point), Qt::CopyAction, data.get(), Qt::LeftButton, Qt::NoModifier);
         // Straight to the view: QApplication delivers a drop only while a drag of its own runs.
         static_cast<QObject*>(view)->event(&drop);
         EXPECT_TRUE(drop.isAccepted());
-        const automation::TrainBody* body = automation->dispatcher().tracking().body(Br218);
+        const automation::TrainBody* body = automation->dispatcher().tracking().body(AutoBr218);
         ASSERT_NE(body, nullptr);
         EXPECT_EQ(body->frontBlock, Gleis2);
         EXPECT_EQ(body->towards, end);
@@ -344,7 +344,7 @@ TEST_F(TrackPlanAutomationTest, TheLocomotivesListDragsItsLocomotives) {
         if (const auto locId = LocomotiveMime::locId(data.get()))
             dragged << *locId;
     }
-    EXPECT_TRUE(dragged.contains(Br218));
+    EXPECT_TRUE(dragged.contains(AutoBr218));
     EXPECT_TRUE(dragged.contains(V100));
 }
 
@@ -388,7 +388,7 @@ TEST_F(TrackPlanAutomationTest, ThreeRunningTrainsAreNamedOnThePlan) {
     run(200); // ten simulated seconds: the trains set off
     EXPECT_TRUE(reservedSeen);
     EXPECT_EQ(movement.accidents().total(), 0);
-    for (const std::uint32_t locId : {Br218, Ice, V100}) {
+    for (const std::uint32_t locId : {AutoBr218, Ice, V100}) {
         const automation::TrainBody* body = automation->dispatcher().tracking().body(locId);
         ASSERT_NE(body, nullptr);
         const QString name = panel->planAutomation().trains().block(body->frontBlock).train;

@@ -148,7 +148,7 @@ std::vector<int> tilesOfBlock(const TrackPlanPanel& panel, int page, int block) 
     return tiles;
 }
 
-QPalette darkPalette() {
+QPalette darkBlockPalette() {
     QPalette dark;
     dark.setColor(QPalette::Window, QColor(45, 45, 48));
     dark.setColor(QPalette::WindowText, QColor(225, 225, 225));
@@ -171,7 +171,7 @@ TEST_F(TrackPlanBlocksTest, TheOptionOutlinesEachBlockOnItsTilesInLightAndDarkPa
     EXPECT_EQ(pixelsOf(pictureOf(view), view->rect(), light.block), 0) << "off: no outline";
 
     panel->setShowBlocks(true);
-    for (const QPalette& palette : {view->palette(), darkPalette()}) {
+    for (const QPalette& palette : {view->palette(), darkBlockPalette()}) {
         panel->setPalette(palette);
         const TrackColors colors = TrackColors::from(view->palette());
         const QImage image = pictureOf(view);
@@ -186,7 +186,7 @@ TEST_F(TrackPlanBlocksTest, TheOptionOutlinesEachBlockOnItsTilesInLightAndDarkPa
         for (const int tile : tilesOutsideBlocks(*panel, 0))
             EXPECT_EQ(pixelsOf(image, view->tileRect(tile), colors.block), 0) << "tile " << tile;
     }
-    EXPECT_NE(TrackColors::from(darkPalette()).block, light.block) << "a lighter violet on a dark plan";
+    EXPECT_NE(TrackColors::from(darkBlockPalette()).block, light.block) << "a lighter violet on a dark plan";
 
     panel->setShowBlocks(false);
     EXPECT_TRUE(view->blocks().isEmpty());

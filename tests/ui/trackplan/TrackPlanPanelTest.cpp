@@ -72,7 +72,7 @@ protected:
     TrackPlanPanel panel;
 };
 
-std::filesystem::path gbertFolder() {
+std::filesystem::path gbertLayoutFolder() {
     return std::filesystem::path(STELLWERK_SHARED_DIR) / "corpus/GBert__railroad/can2udp/files/maerklin";
 }
 
@@ -287,7 +287,7 @@ TEST_F(TrackPlanPanelTest, ExportsTheStationsLayoutAsAFolderThatOpensAgain) {
 
 TEST(TrackPlanPanelFiles, OpensACorpusLayoutWithoutAStation) {
     TrackPlanPanel panel;
-    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertLayoutFolder().string())));
     ASSERT_EQ(panel.pageTabs()->count(), 1);
     EXPECT_EQ(panel.pageTabs()->tabText(0), QStringLiteral("karben"));
     EXPECT_EQ(panel.layout()->pages()[0].tiles.size(), 37U);
@@ -297,7 +297,7 @@ TEST(TrackPlanPanelFiles, OpensACorpusLayoutWithoutAStation) {
 // check's findings are shown in the problem banner, the first ones in full.
 TEST(TrackPlanPanelFiles, TheLayoutChecksFindingsAreShownInTheProblemBanner) {
     TrackPlanPanel panel;
-    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertLayoutFolder().string())));
     const QString text = panel.problemText();
     EXPECT_TRUE(text.startsWith(QStringLiteral("The layout's files disagree in 13 place(s):")))
         << text.toStdString();
@@ -328,7 +328,7 @@ TEST(TrackPlanPanelFiles, AConsistentLayoutShowsNoProblem) {
 
 TEST(TrackPlanPanelFiles, AMissingFolderIsShownAsAProblemAndKeepsThePlan) {
     TrackPlanPanel panel;
-    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertLayoutFolder().string())));
     EXPECT_FALSE(panel.openFolder(QStringLiteral("/nonexistent/layout")));
     EXPECT_TRUE(panel.problemText().contains(QStringLiteral("/nonexistent/layout does not exist")))
         << panel.problemText().toStdString();
@@ -349,7 +349,7 @@ TEST(TrackPlanPanelFiles, OpensFoldersIntoTheLayoutInUseAndShowsItsGraph) {
     EXPECT_FALSE(panel.openFolder(QStringLiteral("/nonexistent/layout")));
     EXPECT_EQ(layout.folder().parent_path().filename(), "demo-layout") << "a bad folder changes nothing";
 
-    ASSERT_EQ(layout.open(gbertFolder()), ""); // opened by someone else
+    ASSERT_EQ(layout.open(gbertLayoutFolder()), ""); // opened by someone else
     EXPECT_EQ(panel.layout(), layout.pages().get());
     EXPECT_EQ(panel.pageTabs()->count(), 1);
     EXPECT_EQ(panel.pageTabs()->tabText(0), QStringLiteral("karben"));
@@ -388,7 +388,7 @@ TEST(TrackPlanPanelFiles, PagesWithoutTheirIndexAreShownWithAWarning) {
 TEST(TrackPlanPanelFiles, ASinglePageFileOpensAlone) {
     TrackPlanPanel panel;
     ASSERT_TRUE(panel.openFolder(
-        QString::fromStdString((gbertFolder() / "config" / "gleisbilder" / "karben.cs2").string())))
+        QString::fromStdString((gbertLayoutFolder() / "config" / "gleisbilder" / "karben.cs2").string())))
         << panel.problemText().toStdString();
     ASSERT_EQ(panel.pageTabs()->count(), 1);
     EXPECT_EQ(panel.pageTabs()->tabText(0), QStringLiteral("karben"));
@@ -420,7 +420,7 @@ TEST(TrackPlanPanelFiles, TheProblemBarFollowsALanguageSwitch) {
     Translations translations;
     ASSERT_TRUE(translations.select(Language::English));
     TrackPlanPanel panel;
-    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertLayoutFolder().string())));
     ASSERT_TRUE(panel.problemText().startsWith(QStringLiteral("The layout's files disagree in 13 places:")))
         << panel.problemText().toStdString();
     ASSERT_TRUE(translations.select(Language::German));
@@ -444,7 +444,7 @@ TEST(TrackPlanPanelFiles, TheProblemBarFoldsToOneLineAndCanBeDismissed) {
     TrackPlanPanel panel;
     panel.resize(900, 600);
     panel.show();
-    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertLayoutFolder().string())));
     auto* bar = panel.findChild<QWidget*>(QStringLiteral("trackPlanProblem"));
     auto* text = panel.findChild<QLabel*>(QStringLiteral("problemText"));
     auto* fold = panel.findChild<QToolButton*>(QStringLiteral("foldProblem"));
@@ -464,7 +464,7 @@ TEST(TrackPlanPanelFiles, TheProblemBarFoldsToOneLineAndCanBeDismissed) {
     dismiss->click();
     EXPECT_FALSE(bar->isVisible());
     EXPECT_EQ(panel.problemText(), QString());
-    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertLayoutFolder().string())));
     EXPECT_TRUE(bar->isVisible()) << "the next problem shows again";
 }
 
@@ -488,7 +488,7 @@ TEST(TrackPlanPanelFiles, ExportingWithoutALayoutSaysWhy) {
 
 TEST(TrackPlanPanelFiles, ZoomChangesTheTileSize) {
     TrackPlanPanel panel;
-    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertLayoutFolder().string())));
     const int before = panel.tileSize();
     panel.zoomIn();
     EXPECT_GT(panel.tileSize(), before);
@@ -550,7 +550,7 @@ TEST_F(TrackPlanPanelTest, TheDemoPlanIsDrawnInLightAndDarkPalettes) {
 TEST(TrackPlanPanelFiles, DrawsACorpusPage) {
     TrackPlanPanel panel;
     panel.resize(900, 400);
-    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertFolder().string())));
+    ASSERT_TRUE(panel.openFolder(QString::fromStdString(gbertLayoutFolder().string())));
     panel.show();
     panel.fitToWindow();
     const QImage image = panel.grab().toImage();

@@ -18,8 +18,8 @@ using namespace stellwerk::ui;
 
 namespace {
 
-constexpr int Size = 40;
-const QPoint Cell(3 * Size, 2 * Size);
+constexpr int CachedTileSize = 40;
+const QPoint Cell(3 * CachedTileSize, 2 * CachedTileSize);
 
 TrackColors colors() {
     return TrackColors::from(QApplication::palette());
@@ -27,22 +27,23 @@ TrackColors colors() {
 
 // A tile drawn into a blank picture of 6 x 4 cells, either straight from the painter or from the cache.
 QImage drawn(const TrackTileLook& look, TrackTileCache* cache) {
-    QImage image(6 * Size, 4 * Size, QImage::Format_ARGB32_Premultiplied);
+    QImage image(6 * CachedTileSize, 4 * CachedTileSize, QImage::Format_ARGB32_Premultiplied);
     image.fill(colors().background);
     QPainter painter(&image);
     painter.setFont(QApplication::font());
     if (cache) {
-        cache->prepare(Size, 1.0, colors(), QApplication::font());
+        cache->prepare(CachedTileSize, 1.0, colors(), QApplication::font());
         cache->paint(painter, Cell, look);
     } else {
-        TrackTilePainter::paint(painter, QRectF(Cell, QSizeF(Size, Size)), look, colors());
+        TrackTilePainter::paint(painter, QRectF(Cell, QSizeF(CachedTileSize, CachedTileSize)), look,
+                                colors());
     }
     return image;
 }
 
 // How many pixels differ by more than `tolerance` in a colour channel (anti-aliasing is not exactly
 // the same for a picture drawn turned and one drawn upright and turned afterwards).
-int differingPixels(const QImage& a, const QImage& b, int tolerance = 8) {
+int differingTilePixels(const QImage& a, const QImage& b, int tolerance = 8) {
     int differing = 0;
     for (int y = 0; y < a.height(); ++y)
         for (int x = 0; x < a.width(); ++x) {
@@ -72,14 +73,14 @@ TEST(TrackTileCache, DrawsEveryTypeInEveryRotationAsThePainterDoes) {
             tiles.push_back(look(std::string(type.name).c_str(), rotation, type.switchable() ? 1 : -1));
     // A turned picture may differ from one drawn turned in the anti-aliasing of a few edge pixels; a
     // picture turned the wrong way differs in dozens.
-    ASSERT_GT(
-        differingPixels(drawn(look("linksweiche", 0, 0), nullptr), drawn(look("linksweiche", 1, 0), nullptr)),
-        40);
+    ASSERT_GT(differingTilePixels(drawn(look("linksweiche", 0, 0), nullptr),
+                                  drawn(look("linksweiche", 1, 0), nullptr)),
+              40);
     for (const TrackTileLook& tile : tiles) {
         const QImage direct = drawn(tile, nullptr);
-        EXPECT_LE(differingPixels(drawn(tile, &cache), direct), 4)
+        EXPECT_LE(differingTilePixels(drawn(tile, &cache), direct), 4)
             << tile.type.toStdString() << tile.rotation;
-        EXPECT_LE(differingPixels(drawn(tile, &cache), direct), 4) << "drawn again from the cache";
+        EXPECT_LE(differingTilePixels(drawn(tile, &cache), direct), 4) << "drawn again from the cache";
     }
 }
 
@@ -94,7 +95,7 @@ TEST(TrackTileCache, DrawsAPagesPicturesAheadOnSeveralThreadsAsPaintWouldHave) {
     page.push_back(label);
 
     TrackTileCache ahead;
-    ahead.prepare(Size, 1.0, colors(), QApplication::font());
+    ahead.prepare(CachedTileSize, 1.0, colors(), QApplication::font());
     ahead.drawAhead(page);
     const int drawnAhead = ahead.size();
     EXPECT_GT(drawnAhead, 900);
@@ -104,7 +105,7 @@ TEST(TrackTileCache, DrawsAPagesPicturesAheadOnSeveralThreadsAsPaintWouldHave) {
         return !TrackTilePainter::draws(tile) || TrackTilePainter::usesFont(tile);
     });
     for (const TrackTileLook& tile : page)
-        EXPECT_LE(differingPixels(drawn(tile, &ahead), drawn(tile, nullptr)), 4)
+        EXPECT_LE(differingTilePixels(drawn(tile, &ahead), drawn(tile, nullptr)), 4)
             << tile.type.toStdString() << tile.rotation << " " << tile.position;
     EXPECT_EQ(ahead.size(), drawnAhead) << "painting the page found every picture drawn";
     drawn(label, &ahead);
@@ -113,21 +114,21 @@ TEST(TrackTileCache, DrawsAPagesPicturesAheadOnSeveralThreadsAsPaintWouldHave) {
 
 TEST(TrackTileCache, KeepsTheDrawnPartOfOnePicturePerLookAndStartsAfreshWhenTheSizeChanges) {
     TrackTileCache cache;
-    cache.prepare(Size, 1.0, colors(), QApplication::font());
+    cache.prepare(CachedTileSize, 1.0, colors(), QApplication::font());
     const QRect straight = cache.area(look("gerade", 0), Cell);
     EXPECT_EQ(straight.left(), Cell.x()) << "a straight runs from edge to edge";
-    EXPECT_GE(straight.right(), Cell.x() + Size - 1);
-    EXPECT_LT(straight.height(), Size / 3) << "only the part of the tile that is drawn on is kept";
-    cache.area(look("gerade", 0), Cell + QPoint(Size, 0));
+    EXPECT_GE(straight.right(), Cell.x() + CachedTileSize - 1);
+    EXPECT_LT(straight.height(), CachedTileSize / 3) << "only the part of the tile that is drawn on is kept";
+    cache.area(look("gerade", 0), Cell + QPoint(CachedTileSize, 0));
     EXPECT_EQ(cache.size(), 1) << "the same look elsewhere uses the same picture";
     cache.area(look("linksweiche", 3, 0), Cell);
     cache.area(look("linksweiche", 3, 1), Cell);
     EXPECT_EQ(cache.size(), 5) << "each position of a turnout has its picture, turned from the upright one";
 
     const QRect label = cache.area(look("text", 0, -1, QStringLiteral("Bahnhof Stellwerkhausen")), Cell);
-    EXPECT_GT(label.right(), Cell.x() + 3 * Size) << "a label runs beyond its tile";
+    EXPECT_GT(label.right(), Cell.x() + 3 * CachedTileSize) << "a label runs beyond its tile";
 
-    cache.prepare(2 * Size, 1.0, colors(), QApplication::font());
+    cache.prepare(2 * CachedTileSize, 1.0, colors(), QApplication::font());
     EXPECT_EQ(cache.size(), 0);
-    EXPECT_GE(cache.area(look("gerade", 0), Cell).width(), 2 * Size);
+    EXPECT_GE(cache.area(look("gerade", 0), Cell).width(), 2 * CachedTileSize);
 }

@@ -16,7 +16,7 @@ using namespace stellwerk::ui;
 
 namespace {
 
-constexpr int Size = 48;
+constexpr int PaintedTileSize = 48;
 
 QPalette paletteOf(bool dark) {
     QPalette palette;
@@ -27,12 +27,12 @@ QPalette paletteOf(bool dark) {
     return palette;
 }
 
-QImage render(const TrackTileLook& look, bool dark) {
+QImage renderTile(const TrackTileLook& look, bool dark) {
     const TrackColors colors = TrackColors::from(paletteOf(dark));
-    QImage image(Size, Size, QImage::Format_ARGB32);
+    QImage image(PaintedTileSize, PaintedTileSize, QImage::Format_ARGB32);
     image.fill(colors.background);
     QPainter painter(&image);
-    TrackTilePainter::paint(painter, QRectF(0, 0, Size, Size), look, colors);
+    TrackTilePainter::paint(painter, QRectF(0, 0, PaintedTileSize, PaintedTileSize), look, colors);
     return image;
 }
 
@@ -52,7 +52,7 @@ int differences(const QImage& a, const QImage& b) {
 }
 
 QImage blank(bool dark) {
-    QImage image(Size, Size, QImage::Format_ARGB32);
+    QImage image(PaintedTileSize, PaintedTileSize, QImage::Format_ARGB32);
     image.fill(TrackColors::from(paletteOf(dark)).background);
     return image;
 }
@@ -82,7 +82,7 @@ TEST_P(TrackTilePainterTest, EveryTypeDrawsSomethingInEveryRotation) {
         if (type.name == "leer")
             continue;
         for (int rotation = 0; rotation < 4; ++rotation)
-            EXPECT_GT(differences(render(lookOf(type, rotation), dark), blank(dark)), 20)
+            EXPECT_GT(differences(renderTile(lookOf(type, rotation), dark), blank(dark)), 20)
                 << type.name << " rotation " << rotation;
     }
 }
@@ -94,7 +94,7 @@ TEST_P(TrackTilePainterTest, RotationsLookDifferent) {
             continue;
         QImage images[4];
         for (int rotation = 0; rotation < 4; ++rotation)
-            images[rotation] = render(lookOf(type, rotation), dark);
+            images[rotation] = renderTile(lookOf(type, rotation), dark);
         EXPECT_GT(differences(images[0], images[1]), 10) << type.name;
         EXPECT_GT(differences(images[1], images[2]), 10) << type.name;
         EXPECT_GT(differences(images[2], images[3]), 10) << type.name;
@@ -111,38 +111,39 @@ INSTANTIATE_TEST_SUITE_P(LightAndDark, TrackTilePainterTest, ::testing::Values(f
 TEST(TrackTilePainter, ATurnoutShowsWhichWayItIsSet) {
     TrackTileLook look{
         QStringLiteral("linksweiche"), cs2config::TrackCategory::Turnout, 0, 0, false, false, {}};
-    const QImage diverging = render(look, false);
+    const QImage diverging = renderTile(look, false);
     look.position = 1;
-    EXPECT_GT(differences(diverging, render(look, false)), 20);
+    EXPECT_GT(differences(diverging, renderTile(look, false)), 20);
 }
 
 TEST(TrackTilePainter, AnOccupiedContactIsHighlighted) {
     TrackTileLook look{
         QStringLiteral("s88kontakt"), cs2config::TrackCategory::Feedback, 0, -1, false, false, {}};
-    const QImage free = render(look, false);
+    const QImage free = renderTile(look, false);
     look.occupied = true;
-    const QImage occupied = render(look, false);
+    const QImage occupied = renderTile(look, false);
     EXPECT_GT(differences(free, occupied), 30);
     const QColor red = TrackColors::from(paletteOf(false)).occupied;
-    EXPECT_EQ(occupied.pixelColor(Size / 2, Size * 26 / 100).rgb(), red.rgb()); // inside the contact's marker
+    EXPECT_EQ(occupied.pixelColor(PaintedTileSize / 2, PaintedTileSize * 26 / 100).rgb(),
+              red.rgb()); // inside the contact's marker
 }
 
 TEST(TrackTilePainter, ARunningRouteButtonIsHighlighted) {
     TrackTileLook look{
         QStringLiteral("fahrstrasse"), cs2config::TrackCategory::RouteButton, 0, -1, false, false, {}};
-    const QImage idle = render(look, false);
+    const QImage idle = renderTile(look, false);
     look.running = true;
-    EXPECT_GT(differences(idle, render(look, false)), 100);
+    EXPECT_GT(differences(idle, renderTile(look, false)), 100);
 }
 
 TEST(TrackTilePainter, ASignalLightsTheLampOfItsAspect) {
     TrackTileLook look{QStringLiteral("signal"), cs2config::TrackCategory::Signal, 0, 0, false, false, {}};
-    const QImage stop = render(look, false);
+    const QImage stop = renderTile(look, false);
     look.position = 1;
-    const QImage proceed = render(look, false);
+    const QImage proceed = renderTile(look, false);
     const TrackColors colors = TrackColors::from(paletteOf(false));
-    const QPoint red = (shapes::lampCentre(0, 2) * Size).toPoint();
-    const QPoint green = (shapes::lampCentre(1, 2) * Size).toPoint();
+    const QPoint red = (shapes::lampCentre(0, 2) * PaintedTileSize).toPoint();
+    const QPoint green = (shapes::lampCentre(1, 2) * PaintedTileSize).toPoint();
     EXPECT_EQ(stop.pixelColor(red).rgb(), colors.red.rgb());
     EXPECT_EQ(proceed.pixelColor(green).rgb(), colors.green.rgb());
     EXPECT_EQ(proceed.pixelColor(red).rgb(), colors.dim.rgb());
@@ -151,12 +152,12 @@ TEST(TrackTilePainter, ASignalLightsTheLampOfItsAspect) {
     for (int y = 0; y < proceed.height(); ++y)
         for (int x = 0; x < proceed.width(); ++x)
             lit += proceed.pixelColor(x, y).rgb() == colors.green.rgb();
-    EXPECT_GE(lit * 100, 3 * Size * Size) << lit << " green pixels";
+    EXPECT_GE(lit * 100, 3 * PaintedTileSize * PaintedTileSize) << lit << " green pixels";
 }
 
 namespace {
 
-int pixelsOf(const QImage& image, const QColor& color) {
+int tilePixelsOf(const QImage& image, const QColor& color) {
     int count = 0;
     for (int y = 0; y < image.height(); ++y)
         for (int x = 0; x < image.width(); ++x)
@@ -172,14 +173,15 @@ TEST(TrackTilePainter, AFormSignalShowsItsArmLargeInTheColourOfItsAspect) {
     TrackTileLook look{
         QStringLiteral("signal_f_hp01"), cs2config::TrackCategory::Signal, 0, 0, false, false, {}};
     const TrackColors colors = TrackColors::from(paletteOf(false));
-    const QImage stop = render(look, false);
+    const QImage stop = renderTile(look, false);
     look.position = 1;
-    const QImage proceed = render(look, false);
+    const QImage proceed = renderTile(look, false);
     // (The arm of 20 px by 4 px drawn before covered 2.5 % at stop, 1.6 % raised.)
-    EXPECT_GE(pixelsOf(stop, colors.red) * 1000, 45 * Size * Size) << "a red arm at stop";
-    EXPECT_GE(pixelsOf(proceed, colors.green) * 100, 3 * Size * Size)
+    EXPECT_GE(tilePixelsOf(stop, colors.red) * 1000, 45 * PaintedTileSize * PaintedTileSize)
+        << "a red arm at stop";
+    EXPECT_GE(tilePixelsOf(proceed, colors.green) * 100, 3 * PaintedTileSize * PaintedTileSize)
         << "a green arm at proceed, partly behind the track";
-    EXPECT_EQ(pixelsOf(proceed, colors.red), 0);
+    EXPECT_EQ(tilePixelsOf(proceed, colors.red), 0);
     const auto middle = [](const QImage& image, const QColor& color) { // the mean row of the colour
         double rows = 0;
         int count = 0;
@@ -191,11 +193,12 @@ TEST(TrackTilePainter, AFormSignalShowsItsArmLargeInTheColourOfItsAspect) {
                 }
         return count ? rows / count : 0.0;
     };
-    EXPECT_LT(middle(proceed, colors.green) + Size / 10.0, middle(stop, colors.red)) << "raised at proceed";
+    EXPECT_LT(middle(proceed, colors.green) + PaintedTileSize / 10.0, middle(stop, colors.red))
+        << "raised at proceed";
 }
 
 TEST(TrackTilePainter, AnUnknownTypeStillShowsAMark) {
     const TrackTileLook look{
         QStringLiteral("custom_perm_left"), cs2config::TrackCategory::Unknown, 0, -1, false, false, {}};
-    EXPECT_GT(differences(render(look, false), blank(false)), 20);
+    EXPECT_GT(differences(renderTile(look, false), blank(false)), 20);
 }
