@@ -29,12 +29,16 @@ PhonesDialog::PhonesDialog(phones::PhoneServers& servers, QWidget* parent)
     m_withrottle =
         addServer(QStringLiteral("withrottle"), tr("WiThrottle server (Engine Driver, WiThrottle)"),
                   now.withrottle, now.withrottleListen);
-    auto* clientsForm = new QFormLayout;
+    // The allowed phones take a line of their own: a few addresses are long.
     m_clients = new QLineEdit(phones::PhoneSettings::clientsText(now.allowedClients), this);
     m_clients->setObjectName(QStringLiteral("allowedClients"));
     m_clients->setPlaceholderText(tr("every phone in the network"));
-    clientsForm->addRow(tr("Only these phones (addresses):"), m_clients);
-    layout->addLayout(clientsForm);
+    auto* clientsLabel = new QLabel(tr("Only these phones (addresses):"), this);
+    clientsLabel->setBuddy(m_clients);
+    layout->addWidget(clientsLabel);
+    layout->addWidget(m_clients);
+    // Wide enough for two addresses and the longest label beside its field.
+    setMinimumWidth(fontMetrics().averageCharWidth() * 64);
     m_problem = new QLabel(this);
     m_problem->setObjectName(QStringLiteral("phonesProblem"));
     m_problem->setWordWrap(true);

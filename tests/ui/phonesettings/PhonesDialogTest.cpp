@@ -140,7 +140,9 @@ TEST_F(PhonesDialogTest, FitsASmallScreenInEnglishAndGerman) {
     chosen.withrottle = true;
     chosen.allowedClients = {QHostAddress(QStringLiteral("192.168.1.30")),
                              QHostAddress(QStringLiteral("192.168.1.31"))};
-    chosen.save(settings);
+    chosen.z21Listen = {QHostAddress::LocalHost, freeUdpPort()};
+    chosen.withrottleListen = {QHostAddress::LocalHost, freeTcpPort()};
+    ASSERT_TRUE(servers.apply(chosen).isEmpty()) << "both servers run, as the dialog then shows them";
     const QString folder = qEnvironmentVariable("STELLWERK_SCREENSHOT_DIR");
     Translations translations;
     for (const Language language : {Language::English, Language::German}) {
@@ -156,6 +158,11 @@ TEST_F(PhonesDialogTest, FitsASmallScreenInEnglishAndGerman) {
             EXPECT_GE(label->width(), label->fontMetrics().horizontalAdvance(label->text()) - 2)
                 << label->text().toStdString() << " is cut off";
         }
+        const auto* clients = field<QLineEdit>(dialog, "allowedClients");
+        EXPECT_GE(clients->width(),
+                  clients->fontMetrics().horizontalAdvance(QStringLiteral("192.168.1.30, 192.168.1.31")))
+            << "two allowed addresses are seen whole";
+        EXPECT_GE(clients->width(), clients->fontMetrics().horizontalAdvance(clients->placeholderText()));
         if (language == Language::German) {
             EXPECT_EQ(dialog.windowTitle(), QStringLiteral("Handys und Tablets"));
         }
