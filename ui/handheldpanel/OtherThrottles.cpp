@@ -53,7 +53,8 @@ void OtherThrottles::addZ21(std::vector<ThrottleRow>& rows) const {
         row.kind = ThrottleRow::Kind::Z21;
         row.key = name;
         row.address = QStringLiteral("%1:%2").arg(client.address.toString()).arg(client.port);
-        row.name = row.address; // the Z21 protocol carries no device name
+        row.name = QStringLiteral(
+            "\u2014"); // the Z21 protocol carries no device name: a dash, not the address again
         row.locomotives = locomotives(name);
         row.lastAt = client.lastRequestAt;
         row.lastText = client.lastRequest;
