@@ -255,8 +255,10 @@ void ThrottlePanel::retranslate() {
 }
 
 void ThrottlePanel::changeEvent(QEvent* event) {
-    if (event->type() == QEvent::LanguageChange)
+    if (event->type() == QEvent::LanguageChange) {
         retranslate();
+        updateOffers(); // the offers' "Drive …" in the new language
+    }
     QWidget::changeEvent(event);
 }
 

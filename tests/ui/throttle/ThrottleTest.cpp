@@ -538,6 +538,22 @@ TEST_F(ThrottlePanelTest, ANewcomerIsOfferedTheRunningLocomotivesToDrive) {
     EXPECT_EQ(panel.driveOffers().size(), ThrottlePanel::MaximumOffers) << "offered again";
 }
 
+// The offers follow a language switch at once, as the window's other texts do.
+TEST_F(ThrottlePanelTest, TheOffersSpeakTheLanguageChosenWhileTheyShow) {
+    ThrottlePanel panel;
+    panel.setRailway(railways.railway());
+    panel.show();
+    railways.railway()->setSpeed(DrivenV100, 300);
+    ASSERT_TRUE(waitFor(
+        [&] { return panel.driveOffers()[0]->text() == QStringLiteral("Drive V 100 2023 (running)"); }));
+    ASSERT_TRUE(translations.select(Language::German));
+    EXPECT_TRUE(waitFor([&] {
+        return panel.driveOffers()[0]->text() == QStringLiteral("V 100 2023 fahren (fährt)");
+    })) << panel.driveOffers()[0]->text().toStdString();
+    EXPECT_EQ(panel.driveOffers()[1]->text(), QStringLiteral("BR 218 Ost fahren"));
+    ASSERT_TRUE(translations.select(Language::English));
+}
+
 // Issue 32: "Add throttle" in a panel one throttle wide showed the previous throttle, not the new one.
 TEST_F(ThrottlePanelTest, AddThrottleScrollsTheNewThrottleIntoView) {
     ThrottlePanel panel;
