@@ -86,8 +86,11 @@ void LocomotivePanel::setUpTable() {
     m_table->setAlternatingRowColors(true);
     m_table->setShowGrid(false);
     m_table->verticalHeader()->hide();
+    // Every column as wide as its contents, the name first and whole; in a narrow dock the list scrolls
+    // sideways rather than cutting the names short, and in a wide one the last column takes the rest.
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_table->horizontalHeader()->setSectionResizeMode(LocomotiveFileModel::Name, QHeaderView::Stretch);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->setWordWrap(false);
 }
 
 QWidget* LocomotivePanel::editorSide() {

@@ -207,6 +207,21 @@ protected:
     model::Z21Addresses book;
 };
 
+// In a dock as narrow as the window's at 1366x768, with the Z21 column: every name is shown whole (the list
+// scrolls sideways instead of cutting names short).
+TEST_F(LocomotiveZ21AddressTest, InANarrowDockEveryNameIsShownWhole) {
+    panel.resize(450, 600);
+    panel.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&panel));
+    QTableView* table = panel.table();
+    ASSERT_FALSE(table->isColumnHidden(LocomotiveFileModel::Z21Address));
+    for (int row = 0; row < panel.model()->rowCount(); ++row) {
+        const QString name = panel.model()->index(row, LocomotiveFileModel::Name).data().toString();
+        EXPECT_GE(table->columnWidth(LocomotiveFileModel::Name), table->fontMetrics().horizontalAdvance(name))
+            << name.toStdString() << " is cut short";
+    }
+}
+
 TEST_F(LocomotiveZ21AddressTest, AnMmLocomotivesZ21AddressIsEditedInTheListAndSavedAtOnce) {
     EXPECT_FALSE(panel.table()->isColumnHidden(LocomotiveFileModel::Z21Address));
     const QModelIndex cell = z21Cell(QStringLiteral("V 100 2023"));
