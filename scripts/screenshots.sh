@@ -45,6 +45,8 @@ LANG=de_DE.UTF-8 app --panel devicesPanel --size 1366x768 --screenshot "$shots/d
 app --panel devicesPanel --size 1920x1080 --screenshot "$shots/devices-1920x1080.png"
 LANG=de_DE.UTF-8 app --panel devicesPanel --size 1920x1080 --screenshot "$shots/devices-de-1920x1080.png"
 # The Handhelds panel with the demo's MS1, at both sizes and in both languages.
+app --panel locomotivePanel --size 1366x768 --screenshot "$shots/locomotives-z21.png"
+LANG=de_DE.UTF-8 app --panel locomotivePanel --size 1366x768 --screenshot "$shots/locomotives-z21-de.png"
 app --panel handheldsPanel --size 1366x768 --screenshot "$shots/handhelds.png"
 LANG=de_DE.UTF-8 app --panel handheldsPanel --size 1366x768 --screenshot "$shots/handhelds-de.png"
 app --panel handheldsPanel --size 1920x1080 --screenshot "$shots/handhelds-1920x1080.png"
@@ -73,4 +75,4 @@ LANG=de_DE.UTF-8 auto_app --size 1920x1080 --screenshot "$shots/automatic-de-192
 # a block, track-plan-blocks.png and -de.png); and the whole desk with the track power off and with the station
 # silent ("not reported"), at both sizes and in both languages (StationTrustTest).
 export QT_QPA_PLATFORM=offscreen STELLWERK_SCREENSHOT_DIR=$PWD/$shots
-build/tests/ui/stellwerk-ui-tests --gtest_filter='*Screenshot*:TrackPlanBlocksTest.Screenshots*:ThrottlePanelTest.ThreeThrottles*:TrackPlanPanelTest.TheDemoPlanIsDrawnInLightAndDarkPalettes:StationTrustTest.While*:StationTrustTest.WithThePowerOff*:AfterTroubleOnTheDesk.AStalledStation*:TrackPlanAutomationTest.ThreeRunningTrains*:AutomaticPanelTest.German*'
+build/tests/ui/stellwerk-ui-tests --gtest_filter='*Screenshot*:TrackPlanBlocksTest.Screenshots*:ThrottlePanelTest.ThreeThrottles*:TrackPlanPanelTest.TheDemoPlanIsDrawnInLightAndDarkPalettes:StationTrustTest.While*:StationTrustTest.WithThePowerOff*:AfterTroubleOnTheDesk.AStalledStation*:TrackPlanAutomationTest.ThreeRunningTrains*:AutomaticPanelTest.German*:ThrottlesPanelTest.Screenshot*:PhonesDialogTest.FitsASmallScreen*'
