@@ -7,14 +7,7 @@
 // on again once the station is heard.
 
 #include "../core/z21server/Z21TestClient.h"
-#include "E2eSupport.h"
-#include "SimProgram.h"
-#include "binding/RailwayBinding.h"
-#include "connection/StationConnection.h"
-#include "model/Railway.h"
-#include "model/Z21Addresses.h"
-#include "station/StateQueries.h"
-#include "z21server/Z21Server.h"
+#include "PhoneRig.h"
 
 #include <QElapsedTimer>
 #include <QTest>
@@ -35,74 +28,6 @@ z21::SetLocoDrive driveTo(std::uint8_t step) {
 int speedOf(std::uint8_t step) {
     return z21::systemSpeed({z21::SpeedStepMode::Steps128, true, step, false});
 }
-
-z21server::Z21ServerOptions loopback() {
-    z21server::Z21ServerOptions options;
-    options.address = QHostAddress::LocalHost;
-    options.port = 0; // a free one
-    return options;
-}
-
-// The real program on a loopback TCP port that stays the same when it is started again; the app's
-// connection and railway on it as the window holds them, and the Z21 server in front of that railway.
-class PhoneRig {
-public:
-    PhoneRig() : port_(freeTcpPort()) {
-        QObject::connect(&binding, &binding::RailwayBinding::railwayChanged, &binding,
-                         [this](model::Railway* railway) { z21.setRailway(railway); });
-    }
-
-    bool start() {
-        if (!startStation())
-            return false;
-        connection.connectTo(QStringLiteral("tcp://127.0.0.1:%1").arg(port_));
-        return z21.listen() && ready();
-    }
-    bool startStation() {
-        QStringList arguments = support::Quiet;
-        arguments[arguments.indexOf(QStringLiteral("--tcp-port")) + 1] = QString::number(port_);
-        sim = std::make_unique<support::SimProgram>(arguments);
-        return sim->tcpPort() == port_;
-    }
-
-    // Ready, the state reported, and no command waiting for its answer.
-    bool ready(int timeoutMs = 4 * WaitMs) {
-        return waitFor(
-            [&] {
-                model::Railway* railway = binding.railway();
-                return connection.state() == StationConnection::State::Ready && railway &&
-                       railway->isStateReported() && connection.session()->tracker().pendingCount() == 0;
-            },
-            timeoutMs);
-    }
-
-    // The speed the railway shows as confirmed, or -1 while it is not reported.
-    int confirmedSpeed() const {
-        const auto run =
-            binding.railway() ? binding.railway()->throttlePort().confirmed(Mm2Loco) : std::nullopt;
-        return run ? run->speed : -1;
-    }
-
-    // The speed the station itself says the locomotive has (its answer to a speed query), -1 without one.
-    int stationSpeed() {
-        auto answer = std::make_shared<std::optional<CommandResult>>();
-        connection.session()->request(station::speedQuery(cs2::LocId(Mm2Loco)),
-                                      [answer](const CommandResult& result) { *answer = result; });
-        if (!waitFor([&] { return answer->has_value(); }) || !answer->value().succeeded())
-            return -1;
-        const auto* speed = std::get_if<cs2::LocoSpeed>(&answer->value().answer->body);
-        return speed && speed->speed ? int(*speed->speed) : -1;
-    }
-
-    std::unique_ptr<support::SimProgram> sim;
-    StationConnection connection;
-    binding::RailwayBinding binding{connection};
-    model::Z21Addresses addresses;
-    z21server::Z21Server z21{addresses, loopback()};
-
-private:
-    std::uint16_t port_;
-};
 
 // A phone that follows the driving, has switched the track power on and drives V 100 at step 40, confirmed.
 std::unique_ptr<Z21TestClient> phoneDrivingAt40(PhoneRig& rig) {
