@@ -3,6 +3,7 @@
 // A WiThrottle client of the tests' own, written from the codec: it sends lines (or any bytes) to the
 // server over loopback and keeps every line it reads, as text and as read by the codec.
 
+#include "ReceivedMessages.h"
 #include "withrottle/LineSplitter.h"
 #include "withrottle/ServerLines.h"
 
@@ -14,7 +15,7 @@
 
 namespace stellwerk::withrottleserver::test {
 
-class WiThrottleTestClient {
+class WiThrottleTestClient : public support::ReceivedMessages<withrottle::ServerLine> {
 public:
     explicit WiThrottleTestClient(quint16 serverPort) {
         QObject::connect(&socket_, &QTcpSocket::readyRead, &socket_, [this] { read(); });
@@ -32,23 +33,6 @@ public:
     void close() { socket_.abort(); }
     bool connected() const { return socket_.state() == QAbstractSocket::ConnectedState; }
 
-    template <class T>
-    std::vector<T> all() const {
-        std::vector<T> found;
-        for (const withrottle::ServerLine& line : lines)
-            if (const T* one = std::get_if<T>(&line))
-                found.push_back(*one);
-        return found;
-    }
-    template <class T>
-    std::optional<T> last() const {
-        const std::vector<T> found = all<T>();
-        return found.empty() ? std::nullopt : std::optional<T>(found.back());
-    }
-    template <class T>
-    bool waitFor(int timeoutMs = 5000) {
-        return QTest::qWaitFor([&] { return last<T>().has_value(); }, timeoutMs);
-    }
     bool waitForText(const std::string& text, int timeoutMs = 5000) {
         return QTest::qWaitFor([&] { return hasText(text); }, timeoutMs);
     }
@@ -74,7 +58,6 @@ public:
     }
 
     std::vector<std::string> texts;
-    std::vector<withrottle::ServerLine> lines;
 
 private:
     void read() {
@@ -83,7 +66,7 @@ private:
              splitter_.feed(std::string_view(bytes.constData(), std::size_t(bytes.size())))) {
             texts.push_back(text);
             if (auto line = withrottle::parseServerLine(text))
-                lines.push_back(std::move(*line));
+                received.push_back(std::move(*line));
         }
     }
 

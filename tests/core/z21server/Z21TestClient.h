@@ -3,6 +3,7 @@
 // A Z21 client of the tests' own, written from the codec: it sends requests (or any bytes) to the server
 // over loopback and keeps every reply it reads.
 
+#include "ReceivedMessages.h"
 #include "z21/ReplyCodec.h"
 #include "z21/RequestCodec.h"
 
@@ -15,7 +16,7 @@
 
 namespace stellwerk::z21server::test {
 
-class Z21TestClient {
+class Z21TestClient : public support::ReceivedMessages<z21::Reply> {
 public:
     explicit Z21TestClient(quint16 serverPort) : port_(serverPort) {
         socket_.bind(QHostAddress::LocalHost, 0);
@@ -29,23 +30,6 @@ public:
     }
     quint16 localPort() const { return socket_.localPort(); }
 
-    template <class T>
-    std::vector<T> all() const {
-        std::vector<T> found;
-        for (const z21::Reply& reply : replies)
-            if (const T* one = std::get_if<T>(&reply))
-                found.push_back(*one);
-        return found;
-    }
-    template <class T>
-    std::optional<T> last() const {
-        const std::vector<T> found = all<T>();
-        return found.empty() ? std::nullopt : std::optional<T>(found.back());
-    }
-    template <class T>
-    bool waitFor(int timeoutMs = 5000) {
-        return QTest::qWaitFor([&] { return last<T>().has_value(); }, timeoutMs);
-    }
     // The last loco info of an address.
     std::optional<z21::LocoInfo> locoInfo(std::uint16_t address) const {
         std::optional<z21::LocoInfo> found;
@@ -55,8 +39,6 @@ public:
         return found;
     }
 
-    std::vector<z21::Reply> replies;
-
 private:
     void read() {
         while (socket_.hasPendingDatagrams()) {
@@ -64,7 +46,7 @@ private:
             const QByteArray data = datagram.data();
             const z21::DatagramReplies read = z21::readReplies(
                 std::span(reinterpret_cast<const std::uint8_t*>(data.constData()), std::size_t(data.size())));
-            replies.insert(replies.end(), read.replies.begin(), read.replies.end());
+            received.insert(received.end(), read.replies.begin(), read.replies.end());
         }
     }
 
