@@ -2,6 +2,7 @@
 // train with its way's turnouts, an unknown occupant, a fault), a legend, trains placed from a block's menu
 // and by dropping a locomotive on a block, and three trains running on the demo, English and German.
 #include "EmbeddedStationSupport.h"
+#include "TrackPlanOnDemoStation.h"
 #include "automation/Automation.h"
 #include "binding/RailwayBinding.h"
 #include "common/LocomotiveMime.h"
@@ -44,28 +45,16 @@ constexpr std::uint32_t AutoBr218 = 0x4001, Ice = 0x4002, V100 = 0x0018;
 // The demo's blocks (tests/core/automation/AutomationTestSupport.h).
 constexpr int Gleis2 = 1, Gleis1 = 4, AusfahrtOst = 5, Block1 = 6, Block3 = 8;
 
-class TrackPlanAutomationTest : public ::testing::Test {
+class TrackPlanAutomationTest : public test::TrackPlanOnDemoStation {
 protected:
     void SetUp() override {
-        BlockViewSettings::setShown(false);
-        ASSERT_TRUE(translations.select(Language::English));
-        ASSERT_TRUE(server.start());
-        panel = std::make_unique<TrackPlanPanel>();
-        QObject::connect(&railways, &binding::RailwayBinding::railwayChanged, panel.get(),
-                         &TrackPlanPanel::setRailway);
-        panel->setLayoutInUse(&layout);
-        station.connectTo(server.url());
-        ASSERT_TRUE(test::waitForState(station, State::Ready));
-        ASSERT_NE(railways.railway(), nullptr);
+        TrackPlanOnDemoStation::SetUp();
         ASSERT_NE(layout.graph(), nullptr);
         graph = layout.graph();
-        panel->resize(1000, 620);
-        panel->show();
     }
     void TearDown() override {
         automation.reset();
-        BlockViewSettings::setShown(false);
-        ASSERT_TRUE(translations.select(Language::English));
+        TrackPlanOnDemoStation::TearDown();
     }
     void runAutomation(std::vector<sim::TrainPlacement> placements = {}) {
         automation = std::make_unique<automation::Automation>(*railways.railway(), *graph);
@@ -133,13 +122,7 @@ protected:
             panel->grab().save(folder + QLatin1Char('/') + name);
     }
 
-    Translations translations;
-    test::TestStation server;
-    connection::StationConnection station{support::withEmbeddedStation()};
-    model::LayoutInUse layout;
-    binding::RailwayBinding railways{station, &layout};
     std::shared_ptr<const trackgraph::TrackGraph> graph;
-    std::unique_ptr<TrackPlanPanel> panel;
     std::unique_ptr<automation::Automation> automation;
     automation::Millis now = 0;
 };

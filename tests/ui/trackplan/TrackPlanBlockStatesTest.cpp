@@ -3,6 +3,7 @@
 // tooltips, and the route buttons' menu asking the station to run a route from its memory; English and
 // German.
 #include "EmbeddedStationSupport.h"
+#include "TrackPlanOnDemoStation.h"
 #include "binding/RailwayBinding.h"
 #include "cs2/Codec.h"
 #include "model/BlockStates.h"
@@ -31,29 +32,13 @@ using State = connection::StationConnection::State;
 
 namespace {
 
-class TrackPlanBlockStatesTest : public ::testing::Test {
+class TrackPlanBlockStatesTest : public test::TrackPlanOnDemoStation {
 protected:
     void SetUp() override {
-        BlockViewSettings::setShown(false);
-        ASSERT_TRUE(translations.select(Language::English));
-        ASSERT_TRUE(server.start());
-        panel = std::make_unique<TrackPlanPanel>();
-        QObject::connect(&railways, &binding::RailwayBinding::railwayChanged, panel.get(),
-                         &TrackPlanPanel::setRailway);
-        panel->setLayoutInUse(&layout);
-        station.connectTo(server.url());
-        ASSERT_TRUE(test::waitForState(station, State::Ready));
-        ASSERT_NE(railways.railway(), nullptr);
-        panel->resize(1000, 620);
-        panel->show();
+        TrackPlanOnDemoStation::SetUp();
         other.connectToHost(QHostAddress::LocalHost, server.port());
         ASSERT_TRUE(other.waitForConnected(5000));
     }
-    void TearDown() override {
-        BlockViewSettings::setShown(false);
-        ASSERT_TRUE(translations.select(Language::English));
-    }
-
     // Another program on the station says a state for one of Stellwerk's blocks.
     void announce(int block, std::uint8_t value) {
         const auto address = model::BlockStates::addressOfBlock(block);
@@ -99,12 +84,6 @@ protected:
             panel->grab().save(folder + QLatin1Char('/') + name);
     }
 
-    Translations translations;
-    test::TestStation server;
-    connection::StationConnection station{support::withEmbeddedStation()};
-    model::LayoutInUse layout;
-    binding::RailwayBinding railways{station, &layout};
-    std::unique_ptr<TrackPlanPanel> panel;
     QTcpSocket other;
 };
 

@@ -2,6 +2,7 @@
 // a click on a block's track saying its contacts and ways, and the drawing's problems listed above the plan
 // and marked on their tiles, in English and German.
 #include "EmbeddedStationSupport.h"
+#include "TrackPlanOnDemoStation.h"
 #include "binding/RailwayBinding.h"
 #include "common/ProblemBar.h"
 #include "cs2config/LayoutFolder.h"
@@ -40,24 +41,8 @@ using State = connection::StationConnection::State;
 namespace {
 
 // The track plan on a railway bound to the demo layout's simulated CS2 (without moving trains).
-class TrackPlanBlocksTest : public ::testing::Test {
+class TrackPlanBlocksTest : public test::TrackPlanOnDemoStation {
 protected:
-    void SetUp() override {
-        BlockViewSettings::setShown(false);
-        ASSERT_TRUE(translations.select(Language::English));
-        ASSERT_TRUE(server.start());
-        panel = std::make_unique<TrackPlanPanel>();
-        QObject::connect(&railways, &binding::RailwayBinding::railwayChanged, panel.get(),
-                         &TrackPlanPanel::setRailway);
-        panel->setLayoutInUse(&layout);
-        station.connectTo(server.url());
-        ASSERT_TRUE(test::waitForState(station, State::Ready));
-        ASSERT_NE(railways.railway(), nullptr);
-        panel->resize(1000, 620);
-        panel->show();
-    }
-    void TearDown() override { BlockViewSettings::setShown(false); }
-
     // The plan tile at a place of a page (by tab name).
     model::TileRef tileAt(const QString& pageName, int column, int row) const {
         const auto& pages = panel->layout()->pages();
@@ -97,13 +82,6 @@ protected:
         ASSERT_TRUE(translations.select(Language::German));
         QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
     }
-
-    Translations translations;
-    test::TestStation server;
-    connection::StationConnection station{support::withEmbeddedStation()};
-    model::LayoutInUse layout;
-    binding::RailwayBinding railways{station, &layout};
-    std::unique_ptr<TrackPlanPanel> panel;
 };
 
 } // namespace

@@ -8,6 +8,7 @@ target_sources(stellwerk-ui-tests PRIVATE
     trackplan/TrackPlanBlockStatesTest.cpp
     trackplan/TrackPlanAutomationTest.cpp
     trackplan/TrackPlanBlocksTest.cpp
+    trackplan/TrackPlanOnDemoStation.h
     trackplan/TrackGraphDrawingTest.cpp
     trackplan/TrackPlanPanelTest.cpp
     trackplan/TrackTileCacheTest.cpp
