@@ -513,6 +513,37 @@
     </message>
 </context>
 <context>
+    <name>StopReasonText</name>
+    <message>
+        <source>%1 is no longer seen where it stood: place it again</source>
+        <translation>%1 ist dort, wo er stand, nicht mehr gemeldet: bitte neu aufgleisen</translation>
+    </message>
+    <message>
+        <source>%1 entered &quot;%2&quot; on the way of %3</source>
+        <translation>%1 ist in „%2“ eingefahren, auf dem Fahrweg von %3</translation>
+    </message>
+    <message>
+        <source>%1 ran on into &quot;%2&quot;, which was not reserved for it: track power off</source>
+        <translation>%1 ist in „%2“ weitergefahren, das nicht für ihn reserviert war: Gleisspannung aus</translation>
+    </message>
+    <message>
+        <source>%1 stopped: an unknown occupant in &quot;%2&quot; on its way</source>
+        <translation>%1 angehalten: „%2“ auf seinem Fahrweg ist unbekannt belegt</translation>
+    </message>
+    <message>
+        <source>%1 did not arrive in &quot;%2&quot; in time: stopped, place it again</source>
+        <translation>%1 ist nicht rechtzeitig in „%2“ angekommen: angehalten, bitte neu aufgleisen</translation>
+    </message>
+    <message>
+        <source>turnout %1 was not confirmed in position %2 after %3 attempts: %4 does not depart, its way is given back</source>
+        <translation>Weiche %1 wurde nach %3 Versuchen nicht in Stellung %2 bestätigt: %4 fährt nicht ab, der Fahrweg wird freigegeben</translation>
+    </message>
+    <message>
+        <source>turnout %1 was switched to position %2 on the way reserved for %3: stopped</source>
+        <translation>Weiche %1 wurde auf dem für %3 reservierten Fahrweg in Stellung %2 gestellt: angehalten</translation>
+    </message>
+</context>
+<context>
     <name>TileMenu</name>
     <message>
         <source>Locomotive on this contact</source>

@@ -513,6 +513,37 @@
     </message>
 </context>
 <context>
+    <name>StopReasonText</name>
+    <message>
+        <source>%1 is no longer seen where it stood: place it again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 entered &quot;%2&quot; on the way of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 ran on into &quot;%2&quot;, which was not reserved for it: track power off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 stopped: an unknown occupant in &quot;%2&quot; on its way</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 did not arrive in &quot;%2&quot; in time: stopped, place it again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>turnout %1 was not confirmed in position %2 after %3 attempts: %4 does not depart, its way is given back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>turnout %1 was switched to position %2 on the way reserved for %3: stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>TileMenu</name>
     <message>
         <source>Locomotive on this contact</source>

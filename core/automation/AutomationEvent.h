@@ -1,5 +1,7 @@
 #pragma once
 
+#include "automation/StopReason.h"
+
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -50,6 +52,7 @@ struct AutomationEvent {
     std::uint32_t locId = 0; // 0: no train (a ghost)
     int block = 0;           // 0: none
     std::string text;        // a sentence a person can act on
+    StopReason reason;       // Fault, Lost, Overrun: why, in parts (text is describe(reason))
 };
 // "placed", "turnout-set", ... as the CLI prints them.
 std::string_view eventKindName(AutomationEvent::Kind kind);

@@ -175,7 +175,7 @@ void Dispatcher::occupancyRead(const std::set<trackgraph::ContactKey>& occupied)
         if (train.state == TrainState::Unknown && mustBeSeen_.contains(locId) &&
             !tracking_.blockOccupied(tracking_.body(locId)->frontBlock))
             stopTrain(train, TrainState::Lost, AutomationEvent::Kind::Lost,
-                      train.name + " is no longer seen where it stood: place it again");
+                      StopReason::noLongerSeen(train.name));
     mustBeSeen_.clear();
 }
 
@@ -244,9 +244,9 @@ void Dispatcher::entered(const Sighting& sighting, Millis now) {
     signalsToStop(train.locId); // the signal it passed is behind it
     const std::uint32_t owner = reservations_.blockOwner(sighting.block);
     if (owner != 0 && owner != train.locId && trains_.at(owner).mode == TrainMode::Automatic)
-        stopTrain(trains_.at(owner), TrainState::Fault, AutomationEvent::Kind::Fault,
-                  train.name + " entered \"" + blockName(sighting.block) + "\" on the way of " +
-                      trains_.at(owner).name);
+        stopTrain(
+            trains_.at(owner), TrainState::Fault, AutomationEvent::Kind::Fault,
+            StopReason::otherEnteredItsWay(trains_.at(owner).name, train.name, blockName(sighting.block)));
     if (owner == 0)
         reservations_.holdBlock(train.locId, sighting.block);
     if (const auto journey = journeys_.find(train.locId); journey != journeys_.end()) {
@@ -261,8 +261,7 @@ void Dispatcher::ghostSeen(int block) {
         command(DriveCommand::powerOff());
         Train& train = trains_.at(*driver);
         stopTrain(train, TrainState::Fault, AutomationEvent::Kind::Overrun,
-                  train.name + " ran on into \"" + blockName(block) +
-                      "\", which was not reserved for it: track power off");
+                  StopReason::ranIntoUnreserved(train.name, blockName(block)));
         halt("overrun");
         return;
     }
@@ -272,8 +271,7 @@ void Dispatcher::ghostSeen(int block) {
     if (owner != 0 && trains_.at(owner).mode == TrainMode::Automatic &&
         trains_.at(owner).state != TrainState::Fault)
         stopTrain(trains_.at(owner), TrainState::Fault, AutomationEvent::Kind::Fault,
-                  trains_.at(owner).name + " stopped: an unknown occupant in \"" + blockName(block) +
-                      "\" on its way");
+                  StopReason::unknownOccupantAhead(trains_.at(owner).name, blockName(block)));
 }
 
 // The automatic train whose front end leads into the block, which is not reserved for it: whether it runs or
@@ -346,8 +344,9 @@ std::vector<AutomationEvent> Dispatcher::takeEvents() {
     return std::exchange(events_, {});
 }
 
-void Dispatcher::event(AutomationEvent::Kind kind, std::uint32_t locId, int block, std::string text) {
-    events_.push_back({kind, locId, block, std::move(text)});
+void Dispatcher::event(AutomationEvent::Kind kind, std::uint32_t locId, int block, std::string text,
+                       StopReason reason) {
+    events_.push_back({kind, locId, block, std::move(text), std::move(reason)});
 }
 
 std::string Dispatcher::blockName(int block) const {

@@ -158,6 +158,8 @@ private:
     bool mayTurn(const Train& train, const trackgraph::BlockEnd& front) const;
     void turn(Train& train);
     void stopTrain(Train& train, TrainState state, AutomationEvent::Kind kind, const std::string& why);
+    // Stopped by a fault: the event carries the reason in parts and its English sentence.
+    void stopTrain(Train& train, TrainState state, AutomationEvent::Kind kind, StopReason reason);
     // The signals at the start of a departing train's way show proceed; behind it (or when it stops, or
     // is no longer the automation's) they show stop again.
     void clearSignals(const Train& train);
@@ -166,7 +168,8 @@ private:
     Millis expectNextContact(const Train& train, const Journey& journey, Millis now) const;
     // Output.
     void command(DriveCommand command) { commands_.push_back(command); }
-    void event(AutomationEvent::Kind kind, std::uint32_t locId, int block, std::string text);
+    void event(AutomationEvent::Kind kind, std::uint32_t locId, int block, std::string text,
+               StopReason reason = {});
     std::string blockName(int block) const;
 
     const trackgraph::TrackGraph& graph_;

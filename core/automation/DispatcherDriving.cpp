@@ -50,9 +50,9 @@ void Dispatcher::driveTick(Train& train, Journey& journey, Millis now) {
         else if (due(journey.lostAt, now))
             stopTrain(
                 train, TrainState::Lost, AutomationEvent::Kind::Lost,
-                train.name + " did not arrive in \"" +
-                    blockName(journey.path.blocks[std::min(journey.next, journey.path.blocks.size() - 1)]) +
-                    "\" in time: stopped, place it again");
+                StopReason::didNotArrive(
+                    train.name,
+                    blockName(journey.path.blocks[std::min(journey.next, journey.path.blocks.size() - 1)])));
         return;
     default:
         return;
@@ -177,9 +177,7 @@ void Dispatcher::turnoutsTimedOut(Train& train, Journey& journey, Millis now) {
     journey = Journey{};
     journey.dwellUntil = now + options_.dwell;
     stopTrain(train, TrainState::Fault, AutomationEvent::Kind::Fault,
-              "turnout " + std::to_string(article) + " was not confirmed in position " +
-                  std::to_string(position) + " after " + std::to_string(options_.switchAttempts) +
-                  " attempts: " + train.name + " does not depart, its way is given back");
+              StopReason::turnoutNotConfirmed(train.name, article, position, options_.switchAttempts));
 }
 
 void Dispatcher::turnoutReported(std::int64_t article, int position, Millis /*now*/) {
@@ -195,8 +193,7 @@ void Dispatcher::turnoutReported(std::int64_t article, int position, Millis /*no
         train.state == TrainState::Lost)
         return;
     stopTrain(train, TrainState::Fault, AutomationEvent::Kind::Fault,
-              "turnout " + std::to_string(article) + " was switched to position " + std::to_string(position) +
-                  " on the way reserved for " + train.name + ": stopped");
+              StopReason::turnoutSwitchedUnder(train.name, article, position));
 }
 
 void Dispatcher::depart(Train& train, Journey& journey, Millis now) {
@@ -337,6 +334,12 @@ void Dispatcher::stopAtNextStop(Millis /*now*/) {
         train.destination.reset();
         holdAtStop(train, tracking_.body(locId)->frontBlock);
     }
+}
+
+void Dispatcher::stopTrain(Train& train, TrainState state, AutomationEvent::Kind kind, StopReason reason) {
+    const std::string why = describe(reason);
+    stopTrain(train, state, kind, why);
+    events_.back().reason = std::move(reason);
 }
 
 void Dispatcher::stopTrain(Train& train, TrainState state, AutomationEvent::Kind kind,

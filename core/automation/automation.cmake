@@ -18,6 +18,8 @@ target_sources(stellwerk-automation PRIVATE
     automation/Schedule.cpp
     automation/Schedule.h
     automation/SpeedProfile.h
+    automation/StopReason.cpp
+    automation/StopReason.h
     automation/Tracking.cpp
     automation/Tracking.h
     automation/Train.h

@@ -38,8 +38,12 @@ std::string Operation::notPlaced(std::uint32_t locId) const {
 }
 
 std::string Operation::lastFault(std::uint32_t locId) const {
+    return automation::describe(lastStopReason(locId));
+}
+
+automation::StopReason Operation::lastStopReason(std::uint32_t locId) const {
     const auto found = faults_.find(locId);
-    return found == faults_.end() ? std::string() : found->second;
+    return found == faults_.end() ? automation::StopReason{} : found->second;
 }
 
 bool Operation::halted() const {
@@ -259,7 +263,7 @@ bool Operation::powerOff() const {
 void Operation::eventHappened(const automation::AutomationEvent& event) {
     using Kind = automation::AutomationEvent::Kind;
     if (event.kind == Kind::Fault || event.kind == Kind::Lost || event.kind == Kind::Overrun)
-        faults_[event.locId] = event.text;
+        faults_[event.locId] = event.reason;
     else if (event.kind == Kind::Manual && !stopping_)
         byHand_.insert(event.locId);
     else if (event.kind == Kind::Automatic)

@@ -61,6 +61,8 @@ public:
     bool takenByHand(std::uint32_t locId) const { return byHand_.contains(locId); }
     // The sentence of the train's last fault (a fault, lost, an overrun), until it is started again.
     std::string lastFault(std::uint32_t locId) const;
+    // The same fault in parts (Why::None: none), for the window to say in the user's language.
+    automation::StopReason lastStopReason(std::uint32_t locId) const;
     // Automation stopped by STOP, the track power, the station's silence or an overrun, or trains waiting
     // for Resume: nothing moves until resume().
     bool halted() const;
@@ -114,7 +116,7 @@ private:
     std::string written_; // the book as last written
     std::string bookProblem_;
     std::map<std::uint32_t, std::string> notPlaced_;
-    std::map<std::uint32_t, std::string> faults_;
+    std::map<std::uint32_t, automation::StopReason> faults_;
     std::set<std::uint32_t> waiting_;
     std::set<std::uint32_t> byHand_;
     bool stopping_ = false; // the Manual event now is the user's Stop, not a throttle

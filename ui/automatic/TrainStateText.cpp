@@ -1,5 +1,6 @@
 #include "automatic/TrainStateText.h"
 
+#include "automatic/StopReasonText.h"
 #include "operation/Operation.h"
 
 namespace stellwerk::ui {
@@ -10,7 +11,7 @@ using automation::TrainState;
 namespace {
 
 QString automaticState(const operation::Operation& operation, const automation::Train& train) {
-    const QString fault = QString::fromStdString(operation.lastFault(train.locId));
+    const QString fault = StopReasonText::of(operation.lastStopReason(train.locId));
     switch (train.state) {
     case TrainState::Waiting:
         return TrainStateText::tr("automatic, waiting");

@@ -3,5 +3,6 @@
 target_sources(stellwerk-ui PRIVATE
     automatic/AutomaticPanel.cpp automatic/AutomaticPanel.h
     automatic/ScheduleDialog.cpp automatic/ScheduleDialog.h
+    automatic/StopReasonText.cpp automatic/StopReasonText.h
     automatic/TrainStateText.cpp automatic/TrainStateText.h
 )

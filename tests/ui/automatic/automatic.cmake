@@ -2,4 +2,5 @@
 # the schedule editor writing the book, unsaved edits asked about, English and German.
 target_sources(stellwerk-ui-tests PRIVATE
     automatic/AutomaticPanelTest.cpp
+    automatic/StopReasonTextTest.cpp
 )
