@@ -11,6 +11,7 @@
 #include "sim/SimulatedStation.h"
 #include "sim/StationLayout.h"
 #include "sim/StationServer.h"
+#include "station/StateQueries.h"
 #include "station/StationSession.h"
 #include "transport/Transport.h"
 #include "transport/TransportFactory.h"
@@ -70,6 +71,18 @@ inline std::string wireName(Wire wire) {
         return "VirtualCan";
     }
     return "?";
+}
+
+// The speed the station itself says a locomotive has (its answer to a speed query on `session`), -1 without
+// one: what the tests assert the station ends with.
+inline int stationSpeedOf(station::StationSession& session, std::uint32_t loco) {
+    auto answer = std::make_shared<std::optional<CommandResult>>();
+    session.request(station::speedQuery(cs2::LocId(loco)),
+                    [answer](const CommandResult& result) { *answer = result; });
+    if (!waitFor([&] { return answer->has_value(); }) || !answer->value().succeeded())
+        return -1;
+    const auto* speed = std::get_if<cs2::LocoSpeed>(&answer->value().answer->body);
+    return speed && speed->speed ? int(*speed->speed) : -1;
 }
 
 inline std::uint16_t freeTcpPort() {

@@ -67,15 +67,7 @@ public:
     }
 
     // The speed the station itself says the locomotive has (its answer to a speed query), -1 without one.
-    int stationSpeed() {
-        auto answer = std::make_shared<std::optional<CommandResult>>();
-        connection.session()->request(station::speedQuery(cs2::LocId(PhoneLoco)),
-                                      [answer](const CommandResult& result) { *answer = result; });
-        if (!waitFor([&] { return answer->has_value(); }) || !answer->value().succeeded())
-            return -1;
-        const auto* speed = std::get_if<cs2::LocoSpeed>(&answer->value().answer->body);
-        return speed && speed->speed ? int(*speed->speed) : -1;
-    }
+    int stationSpeed() { return stationSpeedOf(*connection.session(), PhoneLoco); }
 
     std::unique_ptr<support::SimProgram> sim;
     stellwerk::connection::StationConnection connection;

@@ -76,15 +76,7 @@ public:
     }
 
     // The speed the station itself says the locomotive has (its answer to a speed query), -1 without one.
-    int stationSpeed(std::uint32_t loco) {
-        auto answer = std::make_shared<std::optional<CommandResult>>();
-        connection.session()->request(station::speedQuery(cs2::LocId(loco)),
-                                      [answer](const CommandResult& result) { *answer = result; });
-        if (!waitFor([&] { return answer->has_value(); }) || !answer->value().succeeded())
-            return -1;
-        const auto* speed = std::get_if<cs2::LocoSpeed>(&answer->value().answer->body);
-        return speed && speed->speed ? int(*speed->speed) : -1;
-    }
+    int stationSpeed(std::uint32_t loco) { return stationSpeedOf(*connection.session(), loco); }
 
     std::unique_ptr<support::SimProgram> sim;
     StationConnection connection;
